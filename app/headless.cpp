@@ -1,0 +1,138 @@
+#include "app/headless.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "labs/lab.h"
+#include "renderer/context.h"
+#include "renderer/gltf_loader.h"
+#include "renderer/image_io.h"
+#include "renderer/renderer.h"
+
+namespace shadowlab {
+
+namespace fs = std::filesystem;
+
+Scene load_scene_or_default(const std::string& path) {
+  if (path.empty()) return make_default_scene();
+  return load_gltf(path);
+}
+
+namespace {
+
+nlohmann::json matrix_json(const glm::mat4& m) {
+  // Column-major, as GL and GLM store it: 16 numbers.
+  const float* p = glm::value_ptr(m);
+  return std::vector<float>(p, p + 16);
+}
+
+void make_output_dir(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
+  // Probe that we can write before rendering anything.
+  const fs::path probe = fs::path(dir) / ".shadowlab-write-test";
+  std::ofstream(probe) << "";
+  if (!fs::exists(probe)) throw std::runtime_error(dir + ": the output folder is not writable");
+  fs::remove(probe, ec);
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& options) {
+  try {
+    const Lab* lab = find_lab(options.lab);
+    if (!lab) throw std::runtime_error("no lab " + std::to_string(options.lab) + " (see `shadowlab labs`)");
+    ParamSet params = lab_params(*lab);
+    for (const auto& a : options.assignments) params.apply_assignment(a);
+    const Scene scene = load_scene_or_default(options.scene_file);
+    make_output_dir(options.out_dir);
+
+    std::string error;
+    auto context = HeadlessContext::create(&error);
+    if (!context) throw std::runtime_error(error);
+    // The renderer lives in this scope so its GL objects go before the context does.
+    {
+      Renderer renderer;
+      const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
+      if (!renderer.set_lab(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
+      renderer.set_scene(scene);
+      FrameRequest request;
+      request.camera = OrbitCamera::framing(scene.bounds());
+      request.width = options.width;
+      request.height = options.height;
+      request.gbuffer = options.buffers;
+      const FrameStats& stats = renderer.render(params, request);
+
+      const fs::path out(options.out_dir);
+      write_png(out / "final.png", options.width, options.height, renderer.read_color());
+      int map_size = 0;
+      const auto map_image = renderer.shadow_map_image(&map_size);
+      write_png(out / "shadow_map.png", map_size, map_size, map_image);
+      if (options.buffers) {
+        const GBuffer g = renderer.read_gbuffer();
+        std::vector<float> flat(g.position.size() * 3);
+        for (std::size_t i = 0; i < g.position.size(); ++i)
+          for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.position[i][c];
+        write_npy(out / "position.npy", g.width, g.height, 3, flat);
+        for (std::size_t i = 0; i < g.normal.size(); ++i)
+          for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.normal[i][c];
+        write_npy(out / "normal.npy", g.width, g.height, 3, flat);
+        write_npy(out / "visibility.npy", g.width, g.height, 1, renderer.read_visibility());
+      }
+      const GlInfo gl = query_gl_info();
+      nlohmann::json j = {
+          {"lab", lab->number},
+          {"slug", lab->slug},
+          {"impl", options.impl},
+          {"scene", scene.name},
+          {"triangles", scene.triangle_count()},
+          {"width", options.width},
+          {"height", options.height},
+          {"parameters", params.to_json()},
+          {"camera", {{"view", matrix_json(renderer.camera_view())}, {"projection", matrix_json(renderer.camera_projection())}}},
+          {"light",
+           {{"to_light", {renderer.to_light().x, renderer.to_light().y, renderer.to_light().z}},
+            {"view", matrix_json(renderer.light_view().view)},
+            {"projection", matrix_json(renderer.light_view().projection)}}},
+          {"stats", stats.to_json()},
+          {"gl", {{"renderer", gl.renderer}, {"version", gl.version}, {"context", context->platform()}}},
+          {"matrix_layout", "column-major"},
+      };
+      write_text_atomic(out / "render.json", j.dump(2) + "\n");
+      std::printf("wrote %s/final.png, shadow_map.png, render.json%s (%zu triangles, %.1f ms CPU)\n",
+                  options.out_dir.c_str(), options.buffers ? ", position.npy, normal.npy, visibility.npy" : "",
+                  scene.triangle_count(), stats.cpu_ms);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab render: %s\n", e.what());
+    return 1;
+  }
+}
+
+int run_list_labs(bool show_params) {
+  for (const auto& lab : all_labs()) {
+    std::printf("%2d  %-22s %s\n", lab.number, lab.title.c_str(), lab.summary.c_str());
+    if (!show_params) continue;
+    const ParamSet params = lab_params(lab);
+    for (const auto& s : params.specs()) {
+      std::string range;
+      if (s.kind == ParamKind::Choice) {
+        for (const auto& c : s.choices) range += (range.empty() ? "" : "|") + c;
+      } else if (s.kind == ParamKind::Bool) {
+        range = "true|false";
+      } else {
+        range = std::to_string(s.min) + ".." + std::to_string(s.max);
+      }
+      std::printf("      --set %s=%s  [%s]  %s\n", s.key.c_str(), params.format(s.key).c_str(), range.c_str(), s.label.c_str());
+    }
+  }
+  return 0;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,29 @@
+// Headless commands: render, labs. They share one renderer with the window; only the context differs.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/scene.h"
+
+namespace shadowlab {
+
+struct RenderOptions {
+  int lab = 0;
+  std::string scene_file;  // empty: the built-in default scene
+  std::vector<std::string> assignments;  // --set key=value
+  int width = 1280;
+  int height = 720;
+  std::string out_dir;
+  bool buffers = false;
+  std::string impl = "solution";
+};
+
+// Loads --scene or builds the default scene; throws with a message naming the file on failure.
+Scene load_scene_or_default(const std::string& path);
+
+int run_render(const RenderOptions& options);
+int run_list_labs(bool show_params);
+
+}  // namespace shadowlab

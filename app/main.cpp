@@ -1,0 +1,45 @@
+// shadowlab: the window (no arguments) and the headless commands, one renderer behind both.
+#include <cstdio>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/headless.h"
+#include "app/window.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"shadowlab: a teaching lab for real-time shadows in OpenGL.\n"
+               "Without a command it opens the window; the commands below run headless (no display, no GPU)."};
+  app.require_subcommand(0, 1);
+
+  shadowlab::WindowOptions window_options;
+  app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
+  app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
+
+  shadowlab::RenderOptions render;
+  CLI::App* render_cmd = app.add_subcommand("render", "Render one frame headless: final.png, shadow_map.png, render.json");
+  render_cmd->add_option("--lab", render.lab, "Lab whose features and parameters to use")->check(CLI::Range(0, 99));
+  render_cmd->add_option("--scene", render.scene_file, "glTF 2.0 file (.gltf or .glb); default: the built-in scene");
+  render_cmd->add_option("--set", render.assignments, "Parameter value, key=value (repeatable; see `shadowlab labs --params`)");
+  render_cmd->add_option("--width", render.width, "Image width in pixels")->check(CLI::Range(16, 8192));
+  render_cmd->add_option("--height", render.height, "Image height in pixels")->check(CLI::Range(16, 8192));
+  render_cmd->add_option("--impl", render.impl, "Run the lab's exercise or its solution")
+      ->check(CLI::IsMember({"exercise", "solution"}));
+  render_cmd->add_option("--out", render.out_dir, "Folder for the outputs (created if missing)")->required();
+  render_cmd->add_flag("--buffers", render.buffers,
+                       "Also write world positions, normals and visibility as float32 .npy files");
+
+  bool show_params = false;
+  CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
+  labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  if (*render_cmd) return shadowlab::run_render(render);
+  if (*labs_cmd) return shadowlab::run_list_labs(show_params);
+  return shadowlab::run_window(window_options);
+}

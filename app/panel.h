@@ -1,0 +1,11 @@
+// Panel widgets generated from parameter declarations: one declaration, one widget.
+#pragma once
+
+#include "renderer/params.h"
+
+namespace shadowlab {
+
+// Draws a widget for every parameter; returns the union of the invalidation bits of what changed.
+unsigned param_widgets(ParamSet& params);
+
+}  // namespace shadowlab

@@ -1,0 +1,254 @@
+#include "app/window.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "renderer/gl.h"  // before GLFW, so GLFW does not include a GL header of its own
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "app/headless.h"
+#include "app/panel.h"
+#include "labs/lab.h"
+#include "renderer/context.h"
+#include "renderer/image_io.h"
+#include "renderer/renderer.h"
+
+namespace shadowlab {
+
+namespace {
+
+constexpr const char* kHeadlessHint =
+    "headless commands work without one: shadowlab render --out DIR, shadowlab labs (see --help)";
+
+std::string read_file_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Creates the window with the highest core profile the driver gives, 4.6 down to 3.3.
+GLFWwindow* create_window() {
+  const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
+  for (const auto& v : versions) {
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v[0]);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v[1]);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+#ifndef NDEBUG
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+#endif
+    if (GLFWwindow* w = glfwCreateWindow(1440, 860, "shadowlab", nullptr, nullptr)) return w;
+  }
+  return nullptr;
+}
+
+// The state of one session in the window. Plain members, no statics: the loop below owns it.
+struct App {
+  GLFWwindow* window = nullptr;
+  std::unique_ptr<Renderer> renderer;
+  const Lab* lab = nullptr;
+  Impl impl = Impl::Exercise;
+  ParamSet params;
+  OrbitCamera camera;
+  std::string lab_text;
+  std::string status;  // last screenshot path or error
+  bool screenshot_requested = false;
+  double last_poll = 0.0;
+
+  void open_lab(const Lab& next) {
+    lab = &next;
+    params = lab_params(next);
+    lab_text = read_file_text(next.text_path());
+    apply_hooks();
+  }
+  void apply_hooks() {
+    if (!renderer->set_lab(lab->hooks(impl))) status = "shader error: the previous program keeps running";
+  }
+};
+
+void draw_panel(App& app) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 700), ImGuiCond_FirstUseEver);
+  ImGui::Begin("shadowlab");
+  if (ImGui::BeginCombo("Lab", (std::to_string(app.lab->number) + "  " + app.lab->title).c_str())) {
+    for (const auto& lab : all_labs()) {
+      if (ImGui::Selectable((std::to_string(lab.number) + "  " + lab.title).c_str(), &lab == app.lab)) app.open_lab(lab);
+    }
+    ImGui::EndCombo();
+  }
+  if (!app.lab->exercise_files.empty()) {
+    int impl = app.impl == Impl::Exercise ? 0 : 1;
+    bool changed = ImGui::RadioButton("Exercise", &impl, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("Solution", &impl, 1);
+    if (changed) {
+      app.impl = impl == 0 ? Impl::Exercise : Impl::Solution;
+      app.apply_hooks();
+    }
+  }
+  if (ImGui::CollapsingHeader("Lab text", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(app.lab_text.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    param_widgets(app.params);
+    if (ImGui::Button("Defaults")) app.params.reset_to_defaults();
+    for (const auto& preset : app.lab->presets) {
+      ImGui::SameLine();
+      if (ImGui::Button(preset.name.c_str())) {
+        for (const auto& [key, value] : preset.values) app.params.set_from_string(key, value);
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());
+    }
+  }
+  if (ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const FrameStats& stats = app.renderer->stats();
+    for (const auto& p : stats.passes) ImGui::Text("%-12s %7.2f ms", p.name.c_str(), p.gpu_ms);
+    ImGui::Text("shadow passes run: %ld of %ld frames", stats.shadow_passes, stats.frames);
+    ImGui::Text("%zu triangles", app.renderer->scene().triangle_count());
+  }
+  const std::string error = app.renderer->shader_error();
+  if (!error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", error.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (ImGui::Button("Screenshot (F12)")) app.screenshot_requested = true;
+  if (!app.status.empty()) ImGui::TextWrapped("%s", app.status.c_str());
+  ImGui::End();
+}
+
+void handle_camera_input(App& app) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse) return;
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    app.camera.yaw_deg -= io.MouseDelta.x * 0.3f;
+    app.camera.pitch_deg = std::clamp(app.camera.pitch_deg + io.MouseDelta.y * 0.3f, -85.0f, 85.0f);
+  }
+  if (io.MouseWheel != 0.0f) app.camera.distance *= std::pow(0.9f, io.MouseWheel);
+}
+
+void save_screenshot(App& app, int width, int height) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  flip_rows(rgba, width, height, 4);
+  char name[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+  try {
+    write_png(name, width, height, rgba);
+    app.status = std::string("saved ") + std::filesystem::absolute(name).string();
+  } catch (const std::exception& e) {
+    app.status = e.what();
+  }
+}
+
+}  // namespace
+
+int run_window(const WindowOptions& options) {
+  const Lab* lab = find_lab(options.lab);
+  if (!lab) {
+    std::fprintf(stderr, "shadowlab: no lab %d (see `shadowlab labs`)\n", options.lab);
+    return 2;
+  }
+  Scene scene;
+  try {
+    scene = load_scene_or_default(options.scene_file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    return 1;
+  }
+  if (!glfwInit()) {
+    std::fprintf(stderr, "shadowlab: no display to open a window on (DISPLAY is not set); %s\n", kHeadlessHint);
+    return 1;
+  }
+  GLFWwindow* window = create_window();
+  if (!window) {
+    std::fprintf(stderr, "shadowlab: cannot create an OpenGL 3.3 core window; %s\n", kHeadlessHint);
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+#ifndef NDEBUG
+  enable_gl_debug_output();
+#endif
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // window layout is not worth a file in the user's folder
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exit_code = 0;
+  try {
+    App app;
+    app.window = window;
+    app.renderer = std::make_unique<Renderer>();
+    app.renderer->set_scene(scene);
+    app.camera = OrbitCamera::framing(scene.bounds());
+    app.open_lab(*lab);
+
+    while (!glfwWindowShouldClose(window)) {
+      glfwPollEvents();
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      if (width == 0 || height == 0) {  // minimised: nothing to draw
+        glfwWaitEventsTimeout(0.1);
+        continue;
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      handle_camera_input(app);
+      if (!ImGui::GetIO().WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_F12)) app.screenshot_requested = true;  // 1.86: GLFW key codes
+      // Students' edits to shader files reload live; checking twice a second is plenty.
+      if (glfwGetTime() - app.last_poll > 0.5) {
+        app.renderer->poll_shader_files();
+        app.last_poll = glfwGetTime();
+      }
+      draw_panel(app);
+
+      FrameRequest request;
+      request.camera = app.camera;
+      request.width = width;
+      request.height = height;
+      app.renderer->render(app.params, request);
+      app.renderer->present(0, width, height);
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (app.screenshot_requested) {
+        save_screenshot(app, width, height);
+        app.screenshot_requested = false;
+      }
+      glfwSwapBuffers(window);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    exit_code = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exit_code;
+}
+
+}  // namespace shadowlab

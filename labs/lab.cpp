@@ -1,0 +1,39 @@
+#include "labs/lab.h"
+
+#include <cstdio>
+
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+const char* impl_name(Impl impl) { return impl == Impl::Exercise ? "exercise" : "solution"; }
+
+std::string Lab::folder() const {
+  char prefix[8];
+  std::snprintf(prefix, sizeof prefix, "%02d_", number);
+  return "labs/" + std::string(prefix) + slug;
+}
+
+std::filesystem::path Lab::text_path() const { return data_dir() / folder() / "README.md"; }
+
+ParamSet lab_params(const Lab& lab) {
+  ParamSet set(renderer_param_specs());
+  for (const auto& spec : lab.params) set.declare(spec);
+  return set;
+}
+
+// Each lab's definition lives in its own folder; this is the list, in the course's order.
+Lab make_lab_basic_shadow_map();
+
+const std::vector<Lab>& all_labs() {
+  static const std::vector<Lab> labs = {make_lab_basic_shadow_map()};
+  return labs;
+}
+
+const Lab* find_lab(int number) {
+  for (const auto& lab : all_labs())
+    if (lab.number == number) return &lab;
+  return nullptr;
+}
+
+}  // namespace shadowlab

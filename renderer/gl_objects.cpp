@@ -1,0 +1,62 @@
+#include "renderer/gl_objects.h"
+
+#include <array>
+#include <atomic>
+
+namespace shadowlab {
+namespace {
+std::array<std::atomic<int>, static_cast<int>(GlKind::Count)> live_counts{};
+}
+
+const char* gl_kind_name(GlKind kind) {
+  static constexpr const char* names[] = {"buffer", "vertex array", "texture", "framebuffer",
+                                          "renderbuffer", "shader", "program", "query"};
+  return names[static_cast<int>(kind)];
+}
+
+int live_gl_objects(GlKind kind) { return live_counts[static_cast<int>(kind)].load(); }
+
+int live_gl_objects() {
+  int total = 0;
+  for (const auto& c : live_counts) total += c.load();
+  return total;
+}
+
+namespace detail {
+
+void note_created(GlKind kind) { ++live_counts[static_cast<int>(kind)]; }
+
+GLuint generate(GlKind kind) {
+  GLuint id = 0;
+  switch (kind) {
+    case GlKind::Buffer: glGenBuffers(1, &id); break;
+    case GlKind::VertexArray: glGenVertexArrays(1, &id); break;
+    case GlKind::Texture: glGenTextures(1, &id); break;
+    case GlKind::Framebuffer: glGenFramebuffers(1, &id); break;
+    case GlKind::Renderbuffer: glGenRenderbuffers(1, &id); break;
+    case GlKind::Program: id = glCreateProgram(); break;
+    case GlKind::Query: glGenQueries(1, &id); break;
+    case GlKind::Shader:
+    case GlKind::Count: break;  // shaders need a type: make_shader()
+  }
+  if (id != 0) note_created(kind);
+  return id;
+}
+
+void destroy(GlKind kind, GLuint id) {
+  switch (kind) {
+    case GlKind::Buffer: glDeleteBuffers(1, &id); break;
+    case GlKind::VertexArray: glDeleteVertexArrays(1, &id); break;
+    case GlKind::Texture: glDeleteTextures(1, &id); break;
+    case GlKind::Framebuffer: glDeleteFramebuffers(1, &id); break;
+    case GlKind::Renderbuffer: glDeleteRenderbuffers(1, &id); break;
+    case GlKind::Shader: glDeleteShader(id); break;
+    case GlKind::Program: glDeleteProgram(id); break;
+    case GlKind::Query: glDeleteQueries(1, &id); break;
+    case GlKind::Count: return;
+  }
+  --live_counts[static_cast<int>(kind)];
+}
+
+}  // namespace detail
+}  // namespace shadowlab

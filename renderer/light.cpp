@@ -1,0 +1,95 @@
+#include "renderer/light.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowlab {
+
+glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg) {
+  const float az = glm::radians(azimuth_deg), el = glm::radians(elevation_deg);
+  return glm::normalize(glm::vec3(std::cos(el) * std::cos(az), std::sin(el), -std::cos(el) * std::sin(az)));
+}
+
+glm::mat3 orthonormal_basis(const glm::vec3& z) {
+  // Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017): branch-free but for the sign,
+  // exact for every unit vector, no up-vector to become parallel to z.
+  const float sign = std::copysign(1.0f, z.z);
+  const float a = -1.0f / (sign + z.z);
+  const float b = z.x * z.y * a;
+  const glm::vec3 x(1.0f + sign * z.x * z.x * a, sign * b, -sign * z.x);
+  const glm::vec3 y(b, sign + z.y * z.y * a, -z.y);
+  return glm::mat3(x, y, z);
+}
+
+LightView fit_light_ortho(const Bounds& bounds, const glm::vec3& to_light) {
+  LightView lv;
+  // 1. Centre C of the bounding box: the centre of the light's view.
+  const glm::vec3 c = bounds.center();
+  // 2. Axes: Z along the light (the light looks down -Z, toward the scene), X and Y any orthonormal pair.
+  const glm::mat3 basis = orthonormal_basis(glm::normalize(to_light));
+  // 3. Half-lengths: the largest |(V - C) . axis| over the 8 corners.
+  glm::vec3 half(0.0f);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 d = bounds.corner(i) - c;
+    for (int axis = 0; axis < 3; ++axis) half[axis] = std::max(half[axis], std::abs(glm::dot(d, basis[axis])));
+  }
+  // A flat scene has no extent along some axis; keep the matrix invertible with a tiny relative extent.
+  const float floor_extent = std::max(1e-6f * glm::length(bounds.extent()), 1e-6f * std::max(1.0f, glm::length(c)));
+  half = glm::max(half, glm::vec3(std::max(floor_extent, 1e-30f)));
+  // 4. View: rows are the axes, origin at C. Projection: scale each axis by its half-length, z into [-1, 1]
+  // with the light side (+Z) nearest (OpenGL looks down -Z: near depth -1 at +half.z).
+  lv.view = glm::mat4(glm::transpose(basis));
+  lv.view[3] = glm::vec4(-(glm::transpose(basis) * c), 1.0f);
+  lv.projection = glm::ortho(-half.x, half.x, -half.y, half.y, -half.z, half.z);
+  lv.image_x = basis[0];
+  lv.image_y = basis[1];
+  lv.world_size = 2.0f * glm::vec2(half.x, half.y);
+  return lv;
+}
+
+LightView fixed_tutorial_ortho(const glm::vec3& to_light) {
+  LightView lv;
+  lv.view = glm::lookAt(to_light, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  lv.projection = glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, -10.0f, 20.0f);
+  lv.image_x = glm::vec3(glm::row(lv.view, 0));
+  lv.image_y = glm::vec3(glm::row(lv.view, 1));
+  lv.world_size = glm::vec2(20.0f);
+  return lv;
+}
+
+glm::mat4 clip_to_texture() {
+  glm::mat4 m(0.5f);
+  m[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  return m;
+}
+
+glm::vec3 OrbitCamera::eye() const {
+  const float yaw = glm::radians(yaw_deg), pitch = glm::radians(pitch_deg);
+  return target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+}
+
+glm::mat4 OrbitCamera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 OrbitCamera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+}
+
+OrbitCamera OrbitCamera::framing(const Bounds& bounds, float yaw_deg, float pitch_deg) {
+  OrbitCamera cam;
+  cam.yaw_deg = yaw_deg;
+  cam.pitch_deg = pitch_deg;
+  if (bounds.empty()) return cam;
+  cam.target = bounds.center();
+  const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
+  // Distance at which the bounding sphere fits the vertical field of view, with a little margin.
+  // 0.8: the bounding sphere of a flat scene is far larger than what the view needs to show.
+  cam.distance = 0.8f * radius / std::sin(glm::radians(0.5f * cam.fov_y_deg));
+  cam.near_plane = std::max(cam.distance - radius, 1e-3f * cam.distance);
+  cam.far_plane = cam.distance + radius;
+  return cam;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,55 @@
+// Error metrics of a rendered visibility image against the oracle's truth, and the diff image.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/oracle.h"
+
+namespace shadowlab {
+
+struct Metrics {
+  // Over interior pixels (the edge band excluded); rendered visibility < 0.5 counts as shadowed.
+  double acne_rate = 0.0;  // truly lit but rendered shadowed / truly lit
+  double leak_rate = 0.0;  // truly shadowed but rendered lit / truly shadowed
+  // The same over all valid pixels, edges included.
+  double acne_rate_all = 0.0;
+  double leak_rate_all = 0.0;
+  // For soft techniques: mean |visibility - truth| over interior pixels and over the edge band, and
+  // the bleeding rate: interior truly shadowed pixels rendered with visibility > 0.1.
+  double mae_interior = 0.0;
+  double mae_edge = 0.0;
+  double bleeding_rate = 0.0;
+  std::uint64_t valid_pixels = 0;
+  std::uint64_t interior_lit = 0;
+  std::uint64_t interior_shadowed = 0;
+  std::uint64_t edge_pixels = 0;
+};
+
+// visibility: one value per pixel in [0, 1], same layout as the truth.
+// Only valid pixels count. Values are clamped to [0, 1]; a NaN counts as the wrong answer (0 where the
+// truth is lit, 1 where it is shadowed). Rates with a zero denominator are 0. Throws
+// std::invalid_argument when the sizes do not match. compare() and diff_image() agree pixel by pixel.
+Metrics compare(const Truth& truth, const std::vector<float>& visibility);
+
+nlohmann::json to_json(const Metrics& m);
+
+// RGBA8, row 0 at the top (ready for PNG): agreeing pixels in grey (lit light, shadowed dark), acne in
+// red, leak in cyan-blue, the edge band tinted yellow, invalid pixels black.
+// Edge-band pixels take the same colour blended 50% toward kDiffEdgeTint, rounding halves up
+// ((c + tint + 1) / 2). Alpha is 255 everywhere.
+std::vector<std::uint8_t> diff_image(const Truth& truth, const std::vector<float>& visibility);
+
+// The diff image's colours (RGB).
+using DiffColor = std::array<std::uint8_t, 3>;
+inline constexpr DiffColor kDiffInvalid{0, 0, 0};
+inline constexpr DiffColor kDiffLit{200, 200, 200};
+inline constexpr DiffColor kDiffShadowed{70, 70, 70};
+inline constexpr DiffColor kDiffAcne{255, 0, 0};
+inline constexpr DiffColor kDiffLeak{0, 160, 255};
+inline constexpr DiffColor kDiffEdgeTint{255, 220, 0};
+
+}  // namespace shadowlab

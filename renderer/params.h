@@ -1,0 +1,73 @@
+// Parameters, declared once: key, label, default, range, tooltip and what a change invalidates. The
+// same declaration drives the panel's slider, the CLI's `--set key=value`, presets and the JSON output.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace shadowlab {
+
+enum class ParamKind { Float, Int, Bool, Choice };
+
+// What must be redone when a parameter changes; the renderer skips everything else.
+enum Invalidates : unsigned {
+  kInvalidatesNothing = 0,
+  kInvalidatesShadowMap = 1u << 0,  // shadow, moment and blur passes
+  kInvalidatesTargets = 1u << 1,    // render targets must be reallocated (size, format)
+  kInvalidatesPrograms = 1u << 2,   // shader variants must be rebuilt (defines)
+};
+
+struct ParamSpec {
+  std::string key;  // "shadow.bias"; what --set and JSON use
+  std::string label;
+  ParamKind kind = ParamKind::Float;
+  double default_value = 0.0;
+  double min = 0.0;
+  double max = 1.0;
+  std::string tooltip;
+  std::vector<std::string> choices;  // Choice: value is an index into this list
+  unsigned invalidates = kInvalidatesNothing;
+  bool logarithmic = false;  // slider hint for ranges spanning decades
+};
+
+class ParamSet {
+ public:
+  ParamSet() = default;
+  explicit ParamSet(std::vector<ParamSpec> specs);
+
+  // Adds a spec (or replaces the one with the same key, e.g. a lab changing a default).
+  void declare(ParamSpec spec);
+
+  const std::vector<ParamSpec>& specs() const { return specs_; }
+  const ParamSpec* find(const std::string& key) const;
+
+  double get(const std::string& key) const;  // throws std::out_of_range for an unknown key
+  float get_float(const std::string& key) const { return static_cast<float>(get(key)); }
+  int get_int(const std::string& key) const { return static_cast<int>(get(key)); }
+  bool get_bool(const std::string& key) const { return get(key) != 0.0; }
+  const std::string& get_choice(const std::string& key) const;
+
+  // Sets a value, clamped to nothing: out of range is an error. Returns the invalidation bits of the
+  // change (0 when the value did not change). Throws std::invalid_argument with a one-line message.
+  unsigned set(const std::string& key, double value);
+  // Parses "value" for the key's kind (numbers, true/false/on/off/1/0, a choice's name).
+  unsigned set_from_string(const std::string& key, const std::string& text);
+  // Parses "key=value"; the message lists the valid keys when the key is unknown.
+  unsigned apply_assignment(const std::string& assignment);
+  void reset_to_defaults();
+
+  std::string format(const std::string& key) const;  // the value as --set would take it
+  nlohmann::json to_json() const;                      // {"key": value, ...} with choices by name
+  // Applies what it can from JSON written by to_json(); returns one message per rejected entry.
+  std::vector<std::string> apply_json(const nlohmann::json& values);
+
+ private:
+  std::vector<ParamSpec> specs_;
+  std::vector<double> values_;
+  std::size_t index_of(const std::string& key) const;
+};
+
+}  // namespace shadowlab

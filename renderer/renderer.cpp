@@ -1,0 +1,462 @@
+#include "renderer/renderer.h"
+
+#include <chrono>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+#include "renderer/image_io.h"
+
+namespace shadowlab {
+
+std::vector<ParamSpec> renderer_param_specs() {
+  const unsigned shadow = kInvalidatesShadowMap;
+  return {
+      {"light.azimuth", "Light azimuth (deg)", ParamKind::Float, 35.0, 0.0, 360.0,
+       "Direction of the light around the vertical axis.", {}, shadow},
+      {"light.elevation", "Light elevation (deg)", ParamKind::Float, 50.0, 1.0, 90.0,
+       "Height of the light above the ground plane: low values give long shadows and grazing angles (acne).", {}, shadow},
+      {"shadow.map_size", "Shadow map size", ParamKind::Choice, 2.0, 0.0, 4.0,
+       "Texels per side of the shadow map: more texels, finer shadow edges, more memory and time.",
+       {"256", "512", "1024", "2048", "4096"}, shadow | kInvalidatesTargets},
+      {"shadow.depth_format", "Depth format", ParamKind::Choice, 1.0, 0.0, 2.0,
+       "Precision of the stored depth: 16-bit fixed point shows acne sooner than 24-bit or 32-bit float.",
+       {"16", "24", "32F"}, shadow | kInvalidatesTargets},
+      {"shadow.bias", "Constant bias", ParamKind::Float, 0.005, 0.0, 0.1,
+       "Subtracted from the fragment's light-space depth before the comparison: too small gives acne, too "
+       "large peter-panning. In depth units of the light's projection ([0, 1]).", {}, kInvalidatesNothing, true},
+      {"shadow.slope_bias", "Slope bias", ParamKind::Float, 0.0, 0.0, 20.0,
+       "Extra bias that grows with the surface's tilt away from the light, in shadow-map texels per unit of "
+       "tan(angle of incidence).", {}},
+      {"shadow.cull", "Shadow pass culling", ParamKind::Choice, 0.0, 0.0, 2.0,
+       "Which faces the shadow pass skips. Culling front faces stores back faces, moving acne to faces that "
+       "are unlit anyway (needs closed meshes).", {"none", "front", "back"}, shadow},
+      {"view.ambient", "Ambient", ParamKind::Float, 0.25, 0.0, 1.0, "Light that reaches shadowed surfaces too.", {}},
+      {"view.debug_quad", "Show shadow map", ParamKind::Bool, 1.0, 0.0, 1.0,
+       "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
+  };
+}
+
+nlohmann::json FrameStats::to_json() const {
+  nlohmann::json passes_json = nlohmann::json::object();
+  for (const auto& p : passes) passes_json[p.name] = p.gpu_ms;
+  return {{"gpu_ms", passes_json}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes}, {"draws", draws}};
+}
+
+std::map<std::string, std::string> Renderer::default_includes() {
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"}, {"lab/visibility.glsl", "shaders/shadow/hard.glsl"}};
+}
+
+struct Renderer::Targets {
+  int shadow_size = 0;
+  std::string depth_format;
+  GlTexture shadow_depth;
+  GlFramebuffer shadow_fbo;
+
+  int width = 0, height = 0;
+  bool gbuffer = false;
+  GlTexture color, visibility, position, normal;
+  GlRenderbuffer depth;
+  GlFramebuffer view_fbo;
+};
+
+struct Renderer::Programs {
+  ReloadableProgram shadow_depth, lit, lit_gbuffer, debug_quad;
+  // Uniform locations, resolved once per program generation.
+  struct Shadow {
+    int generation = -1;
+    Uniform light_view_proj;
+  } shadow;
+  struct Lit {
+    int generation = -1;
+    Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
+  } lit_u, lit_gbuffer_u;
+  struct Quad {
+    int generation = -1;
+    Uniform depth_map, rect;
+  } quad;
+
+  void all(const std::function<void(ReloadableProgram&)>& f) {
+    f(shadow_depth);
+    f(lit);
+    f(lit_gbuffer);
+    f(debug_quad);
+  }
+};
+
+namespace {
+
+ProgramDesc lit_desc(const std::map<std::string, std::string>& includes, bool gbuffer) {
+  ProgramDesc d{"shaders/lit.vert", {}, "shaders/lit.frag", {}, {}};
+  if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
+  for (const auto& [k, v] : includes) d.includes[k] = v;
+  return d;
+}
+
+GLenum depth_internal_format(const std::string& name) {
+  if (name == "16") return GL_DEPTH_COMPONENT16;
+  if (name == "32F") return GL_DEPTH_COMPONENT32F;
+  return GL_DEPTH_COMPONENT24;
+}
+
+GlTexture make_texture(GLenum internal_format, int w, int h, GLenum format, GLenum type, GLenum filter) {
+  GlTexture t = GlTexture::create();
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), w, h, 0, format, type, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void check_framebuffer(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    std::ostringstream s;
+    s << what << " framebuffer is incomplete (status 0x" << std::hex << status << ")";
+    throw std::runtime_error(s.str());
+  }
+}
+
+// Times one pass with a GL_TIME_ELAPSED query. The result is read at once: on llvmpipe the pass has
+// finished by then anyway, and it keeps per-pass figures exact for the benchmark.
+template <typename F>
+void timed(GLuint query, const char* name, FrameStats& stats, F&& pass) {
+  glBeginQuery(GL_TIME_ELAPSED, query);
+  pass();
+  glEndQuery(GL_TIME_ELAPSED);
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+  stats.passes.push_back({name, static_cast<double>(ns) * 1e-6});
+}
+
+}  // namespace
+
+Renderer::Renderer()
+    : targets_(std::make_unique<Targets>()),
+      programs_(std::make_unique<Programs>()),
+      empty_vao_(GlVertexArray::create()),
+      timer_(GlQuery::create()) {
+  programs_->shadow_depth = ReloadableProgram({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}});
+  programs_->debug_quad = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}});
+  if (!set_lab({})) throw std::runtime_error("cannot build the renderer's shaders:\n" + shader_error());
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::set_scene(const Scene& scene) {
+  scene_ = scene;
+  gpu_scene_ = std::make_unique<GpuScene>(scene_);
+  shadow_state_.clear();
+}
+
+bool Renderer::set_lab(const LabHooks& hooks) {
+  auto includes = default_includes();
+  for (const auto& [k, v] : hooks.includes) includes[k] = v;
+  Programs& p = *programs_;
+  p.lit.set_desc(lit_desc(includes, false));
+  p.lit_gbuffer.set_desc(lit_desc(includes, true));
+  bool ok = true;
+  p.all([&](ReloadableProgram& program) { ok = program.rebuild() && ok; });
+  if (ok) hooks_ = hooks;
+  shadow_state_.clear();
+  return ok;
+}
+
+bool Renderer::poll_shader_files() {
+  bool swapped = false;
+  programs_->all([&](ReloadableProgram& program) { swapped = program.poll_files() || swapped; });
+  if (swapped) shadow_state_.clear();
+  return swapped;
+}
+
+std::string Renderer::shader_error() const {
+  std::string out;
+  programs_->all([&](ReloadableProgram& program) {
+    if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
+  });
+  return out;
+}
+
+void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& request) {
+  Targets& t = *targets_;
+  const int size = std::stoi(params.get_choice("shadow.map_size"));
+  const std::string& format = params.get_choice("shadow.depth_format");
+  if (size != t.shadow_size || format != t.depth_format) {
+    t.shadow_depth = make_texture(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
+    t.shadow_fbo = GlFramebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.shadow_depth.id(), 0);
+    glDrawBuffer(GL_NONE);  // depth only: the course's first pass needs no colour buffer
+    glReadBuffer(GL_NONE);
+    check_framebuffer("shadow map");
+    t.shadow_size = size;
+    t.depth_format = format;
+    shadow_state_.clear();
+  }
+  if (request.width != t.width || request.height != t.height || request.gbuffer != t.gbuffer) {
+    const int w = request.width, h = request.height;
+    t.color = make_texture(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
+    t.depth = GlRenderbuffer::create();
+    glBindRenderbuffer(GL_RENDERBUFFER, t.depth.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+    t.view_fbo = GlFramebuffer::create();
+    glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.color.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth.id());
+    // The G-buffer attachments exist only when a check asks for them.
+    t.visibility = {};
+    t.position = {};
+    t.normal = {};
+    if (request.gbuffer) {
+      t.visibility = make_texture(GL_R32F, w, h, GL_RED, GL_FLOAT, GL_NEAREST);
+      t.position = make_texture(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
+      t.normal = make_texture(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, t.visibility.id(), 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, t.position.id(), 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, t.normal.id(), 0);
+    }
+    check_framebuffer("view");
+    t.width = w;
+    t.height = h;
+    t.gbuffer = request.gbuffer;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& request) {
+  if (!gpu_scene_) throw std::logic_error("Renderer::render called before set_scene");
+  const auto cpu_start = std::chrono::steady_clock::now();
+  stats_.passes.clear();
+  ++stats_.frames;
+  ensure_targets(params, request);
+  width_ = request.width;
+  height_ = request.height;
+
+  // 1. The light: its direction from the sliders, its view and projection from the lab's fit.
+  to_light_ = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
+  const Bounds bounds = scene_.bounds();
+  light_view_ = hooks_.light_fit ? hooks_.light_fit(bounds, to_light_) : fit_light_ortho(bounds, to_light_);
+  camera_view_ = request.camera.view();
+  camera_projection_ = request.camera.projection(static_cast<float>(request.width) / static_cast<float>(request.height));
+
+  // 2. Shadow pass, only when what it depends on changed (light, casters, map settings, shaders).
+  std::string state(reinterpret_cast<const char*>(&light_view_.view), sizeof(glm::mat4) * 1);
+  state.append(reinterpret_cast<const char*>(&light_view_.projection), sizeof(glm::mat4));
+  state += params.get_choice("shadow.cull") + (hooks_.shadow_cull_override ? std::to_string(hooks_.shadow_cull_override()) : "");
+  if (state != shadow_state_) {
+    timed(timer_.id(), "shadow", stats_, [&] { shadow_pass(params); });
+    ++stats_.shadow_passes;
+    shadow_state_ = state;
+  }
+
+  // 3. Lit pass from the camera, reading the shadow map.
+  timed(timer_.id(), "lit", stats_, [&] { lit_pass(params, request); });
+
+  // 4. Debug views.
+  if (params.get_bool("view.debug_quad")) timed(timer_.id(), "debug_quad", stats_, [&] { debug_quad_pass(params); });
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  stats_.cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+  return stats_;
+}
+
+void Renderer::shadow_pass(const ParamSet& params) {
+  Targets& t = *targets_;
+  Programs& p = *programs_;
+  if (p.shadow.generation != p.shadow_depth.generation()) {
+    p.shadow.light_view_proj = Uniform(p.shadow_depth.id(), "u_light_view_proj");
+    p.shadow.generation = p.shadow_depth.generation();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo.id());
+  glViewport(0, 0, t.shadow_size, t.shadow_size);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  const int cull = hooks_.shadow_cull_override ? hooks_.shadow_cull_override()
+                                               : static_cast<int>(params.get("shadow.cull"));
+  if (cull == 0) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glCullFace(cull == 1 ? GL_FRONT : GL_BACK);
+  }
+  glUseProgram(p.shadow_depth.id());
+  p.shadow.light_view_proj.set(light_view_.view_projection());
+  gpu_scene_->bind();
+  for (const auto& range : gpu_scene_->ranges()) {
+    if (!range.casts_shadow) continue;
+    gpu_scene_->draw(range);
+    ++stats_.draws;
+  }
+  glDisable(GL_CULL_FACE);
+}
+
+void Renderer::lit_pass(const ParamSet& params, const FrameRequest& request) {
+  Targets& t = *targets_;
+  Programs& p = *programs_;
+  ReloadableProgram& program = request.gbuffer ? p.lit_gbuffer : p.lit;
+  Programs::Lit& u = request.gbuffer ? p.lit_gbuffer_u : p.lit_u;
+  if (u.generation != program.generation()) {
+    const GLuint id = program.id();
+    u = {program.generation(),
+         Uniform(id, "u_view_proj"),
+         Uniform(id, "u_light_tex_matrix"),
+         Uniform(id, "u_to_light"),
+         Uniform(id, "u_bias_constant"),
+         Uniform(id, "u_bias_slope"),
+         Uniform(id, "u_texel_depth"),
+         Uniform(id, "u_ambient"),
+         Uniform(id, "u_shadow_map")};
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glDrawBuffers(request.gbuffer ? 4 : 1, buffers);
+  glViewport(0, 0, t.width, t.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  const float background[] = {0.16f, 0.18f, 0.22f, 1.0f};
+  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, background);
+  if (request.gbuffer)
+    for (int i = 1; i < 4; ++i) glClearBufferfv(GL_COLOR, i, zero);  // position.w = 0 marks background
+  glClear(GL_DEPTH_BUFFER_BIT);
+
+  glUseProgram(program.id());
+  u.view_proj.set(camera_projection_ * camera_view_);
+  u.light_tex_matrix.set(clip_to_texture() * light_view_.view_projection());
+  u.to_light.set(to_light_);
+  u.bias_constant.set(params.get_float("shadow.bias"));
+  u.bias_slope.set(params.get_float("shadow.slope_bias"));
+  // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
+  // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
+  const float depth_range = 2.0f / std::abs(light_view_.projection[2][2]);
+  u.texel_depth.set(light_view_.world_size.x / static_cast<float>(t.shadow_size) / depth_range);
+  u.ambient.set(params.get_float("view.ambient"));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());
+  u.shadow_map.set(0);
+  gpu_scene_->bind();
+  for (const auto& range : gpu_scene_->ranges()) {
+    gpu_scene_->draw(range);
+    ++stats_.draws;
+  }
+}
+
+void Renderer::debug_quad_pass(const ParamSet&) {
+  Targets& t = *targets_;
+  Programs& p = *programs_;
+  if (p.quad.generation != p.debug_quad.generation()) {
+    p.quad = {p.debug_quad.generation(), Uniform(p.debug_quad.id(), "u_depth_map"), Uniform(p.debug_quad.id(), "u_rect")};
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // the quad must not overwrite the G-buffer
+  glDrawBuffers(1, &color_only);
+  glDisable(GL_DEPTH_TEST);
+  // A square in the lower-left corner, a quarter of the frame's height.
+  const int side = t.height / 4;
+  glViewport(8, 8, side, side);
+  glUseProgram(p.debug_quad.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());
+  p.quad.depth_map.set(0);
+  p.quad.rect.set(glm::vec4(0, 0, 1, 1));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+  glViewport(0, 0, t.width, t.height);
+}
+
+void Renderer::present(GLuint framebuffer, int width, int height) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->view_fbo.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glBlitFramebuffer(0, 0, targets_->width, targets_->height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+namespace {
+std::vector<float> read_float_attachment(GLuint fbo, GLenum attachment, int w, int h, GLenum format, int channels) {
+  std::vector<float> data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(channels));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glReadBuffer(attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, format, GL_FLOAT, data.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return data;
+}
+}  // namespace
+
+std::vector<std::uint8_t> Renderer::read_color() const {
+  const Targets& t = *targets_;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.view_fbo.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  flip_rows(rgba, t.width, t.height, 4);
+  return rgba;
+}
+
+std::vector<float> Renderer::read_visibility() const {
+  const Targets& t = *targets_;
+  if (!t.gbuffer) throw std::logic_error("read_visibility needs a frame rendered with gbuffer = true");
+  return read_float_attachment(t.view_fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, GL_RED, 1);
+}
+
+GBuffer Renderer::read_gbuffer() const {
+  const Targets& t = *targets_;
+  if (!t.gbuffer) throw std::logic_error("read_gbuffer needs a frame rendered with gbuffer = true");
+  const auto pos = read_float_attachment(t.view_fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, GL_RGBA, 4);
+  const auto nrm = read_float_attachment(t.view_fbo.id(), GL_COLOR_ATTACHMENT3, t.width, t.height, GL_RGBA, 4);
+  GBuffer g;
+  g.width = t.width;
+  g.height = t.height;
+  const std::size_t n = static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height);
+  g.position.resize(n);
+  g.normal.resize(n);
+  g.covered.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    g.position[i] = {pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]};
+    g.normal[i] = {nrm[4 * i], nrm[4 * i + 1], nrm[4 * i + 2]};
+    g.covered[i] = pos[4 * i + 3] > 0.5f ? 1 : 0;
+  }
+  return g;
+}
+
+std::vector<float> Renderer::read_shadow_depth(int* size) const {
+  const Targets& t = *targets_;
+  *size = t.shadow_size;
+  std::vector<float> depth(static_cast<std::size_t>(t.shadow_size) * static_cast<std::size_t>(t.shadow_size));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shadow_fbo.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, t.shadow_size, t.shadow_size, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return depth;
+}
+
+std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const {
+  const std::vector<float> depth = read_shadow_depth(size);
+  const int n = *size;
+  // Stretch the occupied depth range to full contrast (the fitted ortho box already spans [0, 1], the
+  // fixed tutorial box may not); the cleared background (depth 1) stays white.
+  float lo = 1.0f, hi = 0.0f;
+  for (float d : depth)
+    if (d < 1.0f) lo = std::min(lo, d), hi = std::max(hi, d);
+  const float scale = hi > lo ? 0.85f / (hi - lo) : 0.0f;
+  std::vector<std::uint8_t> rgba(depth.size() * 4);
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    const float v = depth[i] >= 1.0f ? 1.0f : (depth[i] - lo) * scale;
+    const auto g = static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+    rgba[4 * i] = rgba[4 * i + 1] = rgba[4 * i + 2] = g;
+    rgba[4 * i + 3] = 255;
+  }
+  flip_rows(rgba, n, n, 4);
+  return rgba;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,126 @@
+// The one renderer, shared by the window and headless runs. A frame is, in order:
+//   scene -> light matrix -> shadow pass -> lit pass -> debug views
+// A lab switches features and parameters on (shader includes, the light fit); it never forks this.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "renderer/gl_objects.h"
+#include "renderer/gpu_mesh.h"
+#include "renderer/light.h"
+#include "renderer/oracle.h"
+#include "renderer/params.h"
+#include "renderer/scene.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+// The renderer's own parameters; labs add theirs and may change these defaults.
+std::vector<ParamSpec> renderer_param_specs();
+
+using LightFit = std::function<LightView(const Bounds& bounds, const glm::vec3& to_light)>;
+
+// What a lab switches on.
+struct LabHooks {
+  // Virtual include name -> file, e.g. "lab/bias.glsl" -> "labs/01_bias/exercise.glsl". Names not given
+  // fall back to the renderer's defaults in shaders/ (see Renderer::default_includes()).
+  std::map<std::string, std::string> includes;
+  LightFit light_fit;  // empty: fit_light_ortho
+  // Front-, back- or no culling in the shadow pass, when a lab's exercise decides it (else the parameter).
+  std::function<int()> shadow_cull_override;
+};
+
+struct PassTiming {
+  std::string name;
+  double gpu_ms = 0.0;
+};
+
+struct FrameStats {
+  std::vector<PassTiming> passes;  // this frame's passes, in order, with GPU time (GL_TIME_ELAPSED)
+  double cpu_ms = 0.0;
+  // Counters over the renderer's lifetime, so tests can see what was skipped.
+  long frames = 0;
+  long shadow_passes = 0;
+  long draws = 0;
+  nlohmann::json to_json() const;
+};
+
+struct FrameRequest {
+  OrbitCamera camera;
+  int width = 1280;
+  int height = 720;
+  bool gbuffer = false;  // also write visibility, world positions and normals (for the oracle)
+};
+
+class Renderer {
+ public:
+  Renderer();  // needs a current GL 3.3+ core context
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  void set_scene(const Scene& scene);
+  const Scene& scene() const { return scene_; }
+  // Rebuilds programs with the lab's includes; returns false and keeps the old programs on error.
+  bool set_lab(const LabHooks& hooks);
+  // Recompiles programs whose files changed on disk (live reload). Returns true when one was swapped.
+  bool poll_shader_files();
+  // The last shader error, "file:line: message" with the line quoted; empty when all programs built.
+  std::string shader_error() const;
+
+  const FrameStats& render(const ParamSet& params, const FrameRequest& request);
+  // Copies the last frame onto another framebuffer (0: the window), scaled to its size.
+  void present(GLuint framebuffer, int width, int height) const;
+
+  // Read-backs of the last frame. Colour is RGBA8 top row first (PNG order); the others are bottom row
+  // first (GL order), the layout GBuffer and Truth use.
+  std::vector<std::uint8_t> read_color() const;
+  std::vector<float> read_visibility() const;
+  GBuffer read_gbuffer() const;
+  // The shadow map's depths, bottom row first, and its side length.
+  std::vector<float> read_shadow_depth(int* size) const;
+  // The shadow map as a picture (what the debug quad shows), RGBA8 top row first.
+  std::vector<std::uint8_t> shadow_map_image(int* size) const;
+
+  const LightView& light_view() const { return light_view_; }
+  glm::vec3 to_light() const { return to_light_; }
+  glm::mat4 camera_view() const { return camera_view_; }
+  glm::mat4 camera_projection() const { return camera_projection_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const FrameStats& stats() const { return stats_; }
+
+  static std::map<std::string, std::string> default_includes();
+
+ private:
+  struct Targets;
+  struct Programs;
+  void ensure_targets(const ParamSet& params, const FrameRequest& request);
+  void shadow_pass(const ParamSet& params);
+  void lit_pass(const ParamSet& params, const FrameRequest& request);
+  void debug_quad_pass(const ParamSet& params);
+
+  Scene scene_;
+  std::unique_ptr<GpuScene> gpu_scene_;
+  std::unique_ptr<Targets> targets_;
+  std::unique_ptr<Programs> programs_;
+  LabHooks hooks_;
+  GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
+  GlQuery timer_;
+
+  LightView light_view_;
+  glm::vec3 to_light_{0, 1, 0};
+  glm::mat4 camera_view_{1.0f}, camera_projection_{1.0f};
+  int width_ = 0, height_ = 0;
+  FrameStats stats_;
+  std::string shadow_state_;  // what the current shadow map was rendered for; skip the pass if unchanged
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,154 @@
+#include "scene.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace shadowlab {
+
+Bounds Mesh::bounds() const {
+  Bounds b;
+  for (const auto& p : positions) b.extend(p);
+  return b;
+}
+
+Bounds Scene::bounds() const {
+  Bounds b;
+  for (const auto& m : meshes) b.extend(m.bounds());
+  return b;
+}
+
+std::size_t Scene::triangle_count() const {
+  std::size_t n = 0;
+  for (const auto& m : meshes) n += m.triangle_count();
+  return n;
+}
+
+void compute_normals(Mesh& mesh) {
+  mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    // The cross product's length is twice the area, so larger faces weigh more.
+    const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+    mesh.normals[a] += n;
+    mesh.normals[b] += n;
+    mesh.normals[c] += n;
+  }
+  for (auto& n : mesh.normals) {
+    const float len = glm::length(n);
+    n = len > 0.0f && std::isfinite(len) ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+}
+
+void transform_mesh(Mesh& mesh, const glm::mat4& transform) {
+  const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(transform));
+  for (auto& p : mesh.positions) p = glm::vec3(transform * glm::vec4(p, 1.0f));
+  for (auto& n : mesh.normals) {
+    const glm::vec3 t = normal_matrix * n;
+    const float len = glm::length(t);
+    n = len > 0.0f && std::isfinite(len) ? t / len : glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+  // A mirroring transform flips the winding; swap two indices so front faces stay front faces.
+  if (glm::determinant(glm::mat3(transform)) < 0.0f) {
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+  }
+}
+
+Mesh make_box(const glm::vec3& center, const glm::vec3& half_size, const glm::vec3& color) {
+  Mesh m;
+  m.name = "box";
+  m.color = color;
+  // Six faces with their own vertices, so normals stay flat. Each face: normal n, in-plane axes u, v
+  // with u x v = n, so the quad (-u-v, +u-v, +u+v, -u+v) winds counter-clockwise seen from outside.
+  const glm::vec3 axes[6][3] = {
+      {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},
+      {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+  };
+  for (const auto& face : axes) {
+    const glm::vec3 n = face[0], u = face[1], v = face[2];
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    const float su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
+    for (int k = 0; k < 4; ++k) {
+      m.positions.push_back(center + half_size * (n + su[k] * u + sv[k] * v));
+      m.normals.push_back(n);
+    }
+    for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+  }
+  return m;
+}
+
+Mesh make_plane(const glm::vec3& center, float half_size_x, float half_size_z, const glm::vec3& color) {
+  Mesh m;
+  m.name = "plane";
+  m.color = color;
+  m.positions = {center + glm::vec3(-half_size_x, 0, half_size_z), center + glm::vec3(half_size_x, 0, half_size_z),
+                 center + glm::vec3(half_size_x, 0, -half_size_z), center + glm::vec3(-half_size_x, 0, -half_size_z)};
+  m.normals.assign(4, glm::vec3(0, 1, 0));
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+Mesh make_sphere(const glm::vec3& center, float radius, int slices, int stacks, const glm::vec3& color) {
+  Mesh m;
+  m.name = "sphere";
+  m.color = color;
+  const float pi = std::numbers::pi_v<float>;
+  for (int i = 0; i <= stacks; ++i) {
+    const float theta = pi * static_cast<float>(i) / static_cast<float>(stacks);
+    for (int j = 0; j <= slices; ++j) {
+      const float phi = 2.0f * pi * static_cast<float>(j) / static_cast<float>(slices);
+      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      m.positions.push_back(center + radius * n);
+      m.normals.push_back(n);
+    }
+  }
+  const auto row = static_cast<std::uint32_t>(slices + 1);
+  for (int i = 0; i < stacks; ++i) {
+    for (int j = 0; j < slices; ++j) {
+      const std::uint32_t a = static_cast<std::uint32_t>(i) * row + static_cast<std::uint32_t>(j);
+      const std::uint32_t b = a + row;
+      if (i != 0) m.indices.insert(m.indices.end(), {a, b, a + 1});
+      if (i != stacks - 1) m.indices.insert(m.indices.end(), {a + 1, b, b + 1});
+    }
+  }
+  return m;
+}
+
+Scene make_default_scene() {
+  Scene s;
+  s.name = "default";
+  s.meshes.push_back(make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}));
+  s.meshes.back().name = "ground";
+  s.meshes.push_back(make_box({-2.5f, 1.0f, -1.5f}, {1.0f, 1.0f, 1.0f}, {0.80f, 0.35f, 0.30f}));
+  s.meshes.back().name = "box";
+  s.meshes.push_back(make_box({2.0f, 0.6f, 2.2f}, {0.6f, 0.6f, 0.6f}, {0.30f, 0.55f, 0.80f}));
+  s.meshes.back().name = "small box";
+  s.meshes.push_back(make_sphere({1.8f, 1.2f, -1.8f}, 1.2f, 48, 24, {0.35f, 0.75f, 0.40f}));
+  s.meshes.back().name = "sphere";
+  // Thin slab 0.8 above the ground: with too large a bias its shadow lifts off ("peter-panning").
+  s.meshes.push_back(make_box({-1.8f, 0.9f, 2.4f}, {1.3f, 0.06f, 0.9f}, {0.85f, 0.70f, 0.30f}));
+  s.meshes.back().name = "floating slab";
+  // Thin vertical plate standing on the ground: grazing light gives acne on it and leaks under it.
+  s.meshes.push_back(make_box({0.2f, 1.1f, 0.3f}, {0.04f, 1.1f, 1.2f}, {0.70f, 0.50f, 0.80f}));
+  s.meshes.back().name = "thin plate";
+  return s;
+}
+
+Scene make_stacked_occluders_scene() {
+  Scene s;
+  s.name = "stacked";
+  s.meshes.push_back(make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}));
+  s.meshes.back().name = "receiver";
+  // Each occluder overlaps the one below it only in part, so the receiver sees regions shadowed by one,
+  // two or three layers: where a higher occluder covers a lower one, VSM's bound leaks light.
+  s.meshes.push_back(make_box({-0.8f, 0.6f, 0.0f}, {1.2f, 0.05f, 1.2f}, {0.8f, 0.3f, 0.3f}));
+  s.meshes.back().name = "low occluder";
+  s.meshes.push_back(make_box({0.4f, 1.8f, 0.3f}, {1.2f, 0.05f, 1.2f}, {0.3f, 0.7f, 0.3f}));
+  s.meshes.back().name = "middle occluder";
+  s.meshes.push_back(make_box({0.0f, 3.4f, -0.6f}, {1.0f, 0.05f, 1.0f}, {0.3f, 0.4f, 0.8f}));
+  s.meshes.back().name = "high occluder";
+  return s;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,18 @@
+#version 330 core
+// Lit pass: the scene from the camera. Positions arrive in world space (the scene is baked).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+
+uniform mat4 u_view_proj;
+
+out vec3 v_world_position;
+out vec3 v_normal;
+out vec3 v_color;
+
+void main() {
+  v_world_position = a_position;
+  v_normal = a_normal;
+  v_color = a_color;
+  gl_Position = u_view_proj * vec4(a_position, 1.0);
+}
