@@ -15,6 +15,9 @@ int main(int argc, char** argv) {
   shadowlab::WindowOptions window_options;
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
   app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
+  app.add_option("--frames", window_options.frames, "Close the window after this many frames (for tests)")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--screenshot", window_options.screenshot, "Save the last frame, panel included, to this PNG");
 
   shadowlab::RenderOptions render;
   CLI::App* render_cmd = app.add_subcommand("render", "Render one frame headless: final.png, shadow_map.png, render.json");

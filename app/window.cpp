@@ -140,19 +140,22 @@ void handle_camera_input(App& app) {
   if (io.MouseWheel != 0.0f) app.camera.distance *= std::pow(0.9f, io.MouseWheel);
 }
 
-void save_screenshot(App& app, int width, int height) {
+void save_screenshot(App& app, int width, int height, std::string path) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   flip_rows(rgba, width, height, 4);
-  char name[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+  if (path.empty()) {
+    char name[64];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    path = name;
+  }
   try {
-    write_png(name, width, height, rgba);
-    app.status = std::string("saved ") + std::filesystem::absolute(name).string();
+    write_png(path, width, height, rgba);
+    app.status = "saved " + std::filesystem::absolute(path).string();
   } catch (const std::exception& e) {
     app.status = e.what();
   }
@@ -205,6 +208,7 @@ int run_window(const WindowOptions& options) {
     app.camera = OrbitCamera::framing(scene.bounds());
     app.open_lab(*lab);
 
+    int frame = 0;
     while (!glfwWindowShouldClose(window)) {
       glfwPollEvents();
       int width = 0, height = 0;
@@ -233,11 +237,14 @@ int run_window(const WindowOptions& options) {
       app.renderer->present(0, width, height);
       ImGui::Render();
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      if (app.screenshot_requested) {
-        save_screenshot(app, width, height);
+      ++frame;
+      const bool last_frame = options.frames > 0 && frame >= options.frames;
+      if (app.screenshot_requested || (last_frame && !options.screenshot.empty())) {
+        save_screenshot(app, width, height, last_frame ? options.screenshot : std::string());
         app.screenshot_requested = false;
       }
       glfwSwapBuffers(window);
+      if (last_frame) glfwSetWindowShouldClose(window, GLFW_TRUE);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", e.what());

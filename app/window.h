@@ -8,6 +8,10 @@ namespace shadowlab {
 struct WindowOptions {
   int lab = 0;
   std::string scene_file;
+  // For tests and documentation: quit after this many frames (0: run until closed), saving the last
+  // frame, panel included, to `screenshot` if given.
+  int frames = 0;
+  std::string screenshot;
 };
 
 // Returns the process exit code. Without a display it prints one line naming the headless commands.

@@ -356,9 +356,9 @@ void Renderer::debug_quad_pass(const ParamSet&) {
   const GLenum color_only = GL_COLOR_ATTACHMENT0;  // the quad must not overwrite the G-buffer
   glDrawBuffers(1, &color_only);
   glDisable(GL_DEPTH_TEST);
-  // A square in the lower-left corner, a quarter of the frame's height.
+  // A square in the lower-right corner (the panel sits on the left), a quarter of the frame height.
   const int side = t.height / 4;
-  glViewport(8, 8, side, side);
+  glViewport(t.width - side - 8, 8, side, side);
   glUseProgram(p.debug_quad.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());

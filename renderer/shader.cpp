@@ -64,6 +64,7 @@ struct Expander {
     static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
     const auto lines = split_lines(text);
+    if (!top) out << "#line 1 " << index << '\n';
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string& line = lines[i];
       const int line_no = static_cast<int>(i) + 1;

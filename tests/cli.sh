@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN SHARED CASE
+set -uo pipefail
+bin="$1"; shared="$2"; case_name="$3"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+expect_error() {  # expect_error "message part" command...: non-zero exit, one clear line on stderr
+  local want="$1"; shift
+  "$@" >"$tmp/out" 2>"$tmp/err" && fail "exit 0 from: $*"
+  grep -qF -- "$want" "$tmp/err" || fail "stderr lacks '$want': $(cat "$tmp/err")"
+  grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: $(cat "$tmp/err")"
+  return 0
+}
+
+case "$case_name" in
+  render_default)
+    start=$(date +%s.%N)
+    "$bin" render --out "$tmp/out" || fail "render failed"
+    end=$(date +%s.%N)
+    for f in final.png shadow_map.png render.json; do [ -s "$tmp/out/$f" ] || fail "missing $f"; done
+    python3 - "$tmp/out/render.json" <<'PY' || fail "render.json incomplete"
+import json, sys
+j = json.load(open(sys.argv[1]))
+for k in ("parameters", "camera", "light", "stats", "triangles"):
+    assert k in j, k
+assert len(j["camera"]["view"]) == 16 and len(j["light"]["projection"]) == 16
+assert j["stats"]["gpu_ms"]["shadow"] > 0 and j["stats"]["gpu_ms"]["lit"] > 0
+assert j["parameters"]["shadow.bias"] == 0.005
+PY
+    awk -v s="$start" -v e="$end" 'BEGIN { printf "render took %.2f s\n", e - s; if (e - s > 10) exit 1 }' || fail "slower than 10 s"
+    ;;
+  render_buffers)
+    "$bin" render --out "$tmp/out" --buffers --width 320 --height 200 --set light.elevation=60 || fail "render failed"
+    python3 - "$tmp/out" <<'PY' || fail "npy files wrong"
+import struct, sys, os
+d = sys.argv[1]
+def shape(name):
+    b = open(os.path.join(d, name), "rb").read()
+    assert b[:6] == b"\x93NUMPY", name
+    n = struct.unpack("<H", b[8:10])[0]
+    header = b[10:10 + n].decode()
+    assert (10 + n) % 64 == 0, "header padded to 64"
+    assert "'<f4'" in header
+    return header, len(b) - 10 - n
+h, size = shape("position.npy"); assert "(200, 320, 3)" in h and size == 200 * 320 * 3 * 4, h
+h, size = shape("visibility.npy"); assert "(200, 320)" in h and size == 200 * 320 * 4, h
+PY
+    ;;
+  set_applies)
+    "$bin" render --out "$tmp/out" --width 64 --height 64 --set shadow.bias=0.02 --set shadow.map_size=512 || fail "render failed"
+    grep -q '"shadow.bias": 0.02' "$tmp/out/render.json" || fail "bias not applied"
+    grep -q '"shadow.map_size": "512"' "$tmp/out/render.json" || fail "map size not applied"
+    ;;
+  bad_set_key) expect_error "valid keys:" "$bin" render --out "$tmp/out" --set shadow.bais=1 ;;
+  bad_set_range) expect_error "out of range" "$bin" render --out "$tmp/out" --set shadow.bias=9 ;;
+  missing_scene) expect_error "nope.gltf" "$bin" render --out "$tmp/out" --scene "$tmp/nope.gltf" ;;
+  invalid_scene)
+    for f in glTF-SDK/gltf/MissingMeshRef.gltf glTF-Validator/node/node_loop.gltf; do
+      expect_error "$(basename "$f")" "$bin" render --out "$tmp/out" --scene "$shared/assets/invalid/$f"
+    done
+    ;;
+  unwritable_out)
+    touch "$tmp/file"
+    expect_error "cannot create the output folder" "$bin" render --out "$tmp/file/sub"
+    ;;
+  unknown_option) expect_error "--frobnicate" "$bin" render --out "$tmp/out" --frobnicate ;;
+  labs) "$bin" labs --params | grep -q "Basic shadow map" || fail "lab 0 not listed" ;;
+  no_display)
+    env -u DISPLAY -u WAYLAND_DISPLAY "$bin" --frames 1 >"$tmp/out" 2>"$tmp/err" && fail "window opened without a display"
+    [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line: $(cat "$tmp/err")"
+    grep -q "shadowlab render" "$tmp/err" || fail "does not name the headless commands"
+    ;;
+  window_xvfb)
+    command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
+    xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --frames 5 --screenshot "$tmp/window.png" || fail "window run failed"
+    [ -s "$tmp/window.png" ] || fail "no screenshot"
+    python3 - "$tmp/window.png" <<'PY' || fail "panel not visible in the screenshot"
+import sys, zlib, struct
+# Decode the PNG (8-bit RGBA, as stb writes it) and look for the panel: ImGui's dark title bar and
+# text near the top-left corner differ from the scene's background colour.
+data = open(sys.argv[1], "rb").read()
+pos, idat, w, h = 8, b"", 0, 0
+while pos < len(data):
+    n, t = struct.unpack(">I4s", data[pos:pos + 8])
+    if t == b"IHDR": w, h = struct.unpack(">II", data[pos + 8:pos + 16])
+    if t == b"IDAT": idat += data[pos + 8:pos + 8 + n]
+    pos += 12 + n
+raw = zlib.decompress(idat)
+stride = w * 4
+rows, prev = [], bytearray(stride)
+for y in range(h):
+    f = raw[y * (stride + 1)]
+    line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a = line[i - 4] if i >= 4 else 0
+        b = prev[i]
+        c = prev[i - 4] if i >= 4 else 0
+        if f == 1: line[i] = (line[i] + a) & 255
+        elif f == 2: line[i] = (line[i] + b) & 255
+        elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+        elif f == 4:
+            p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    rows.append(line); prev = line
+bg = (41, 46, 56)  # the renderer's clear colour, sRGB-encoded
+panel = sum(1 for y in range(20, 300) for x in range(20, 400)
+            if abs(rows[y][4 * x] - bg[0]) + abs(rows[y][4 * x + 1] - bg[1]) + abs(rows[y][4 * x + 2] - bg[2]) > 30)
+print("panel pixels differing from background:", panel)
+assert panel > 5000
+PY
+    ;;
+  *) fail "unknown case $case_name" ;;
+esac
+echo "ok: $case_name"

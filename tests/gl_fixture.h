@@ -1,0 +1,27 @@
+// One headless EGL context for all GL tests of a binary. Without one the tests fail (not skip): CI has
+// Mesa's llvmpipe, so a missing context is a real fault to report.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "renderer/context.h"
+
+namespace shadowlab {
+
+class GlTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (context_) return;
+    std::string error;
+    context_ = HeadlessContext::create(&error);
+    if (!context_) error_ = error;
+  }
+  void SetUp() override { ASSERT_TRUE(context_) << error_; }
+  static inline std::unique_ptr<HeadlessContext> context_;
+  static inline std::string error_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,70 @@
+// Parameters declared once: parsing, ranges, JSON, invalidation bits.
+#include <gtest/gtest.h>
+
+#include "renderer/params.h"
+#include "renderer/renderer.h"
+
+namespace shadowlab {
+namespace {
+
+TEST(Params, RendererDefaultsAndAssignments) {
+  ParamSet p(renderer_param_specs());
+  EXPECT_FLOAT_EQ(p.get_float("shadow.bias"), 0.005f);
+  EXPECT_EQ(p.get_choice("shadow.map_size"), "1024");
+  EXPECT_EQ(p.apply_assignment("shadow.bias=0.01"), kInvalidatesNothing);
+  EXPECT_FLOAT_EQ(p.get_float("shadow.bias"), 0.01f);
+  EXPECT_NE(p.apply_assignment("shadow.map_size=2048") & kInvalidatesTargets, 0u);
+  EXPECT_EQ(p.get_choice("shadow.map_size"), "2048");
+  EXPECT_EQ(p.apply_assignment("shadow.map_size=2048"), kInvalidatesNothing);  // unchanged: nothing to redo
+  EXPECT_NE(p.apply_assignment("light.elevation=10") & kInvalidatesShadowMap, 0u);
+  p.apply_assignment("view.debug_quad=off");
+  EXPECT_FALSE(p.get_bool("view.debug_quad"));
+}
+
+std::string error_of(ParamSet& p, const std::string& assignment) {
+  try {
+    p.apply_assignment(assignment);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Params, BadInputNamesTheValidChoices) {
+  ParamSet p(renderer_param_specs());
+  const std::string unknown = error_of(p, "shadow.bais=0.1");
+  EXPECT_NE(unknown.find("unknown parameter 'shadow.bais'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("shadow.bias"), std::string::npos) << "lists the valid keys: " << unknown;
+  const std::string range = error_of(p, "shadow.bias=5");
+  EXPECT_NE(range.find("[0, 0.1]"), std::string::npos) << range;
+  const std::string choice = error_of(p, "shadow.map_size=1000");
+  EXPECT_NE(choice.find("256 512 1024 2048 4096"), std::string::npos) << choice;
+  EXPECT_NE(error_of(p, "shadow.bias=abc").find("not a number"), std::string::npos);
+  EXPECT_NE(error_of(p, "shadow.bias=nan").find("out of range"), std::string::npos);
+  EXPECT_NE(error_of(p, "noequals").find("key=value"), std::string::npos);
+  EXPECT_FLOAT_EQ(p.get_float("shadow.bias"), 0.005f) << "a rejected value leaves the old one";
+}
+
+TEST(Params, JsonRoundTrip) {
+  ParamSet a(renderer_param_specs());
+  a.apply_assignment("shadow.cull=front");
+  a.apply_assignment("light.azimuth=120");
+  ParamSet b(renderer_param_specs());
+  EXPECT_TRUE(b.apply_json(a.to_json()).empty());
+  EXPECT_EQ(b.to_json(), a.to_json());
+  EXPECT_EQ(a.to_json()["shadow.cull"], "front");
+  const auto problems = b.apply_json(nlohmann::json{{"nope", 1}, {"shadow.bias", 7.0}});
+  EXPECT_EQ(problems.size(), 2u);
+}
+
+TEST(Params, DeclareReplacesDefault) {
+  ParamSet p(renderer_param_specs());
+  ParamSpec spec = *p.find("light.elevation");
+  spec.default_value = 10.0;
+  p.declare(spec);
+  EXPECT_FLOAT_EQ(p.get_float("light.elevation"), 10.0f);
+  EXPECT_EQ(std::count_if(p.specs().begin(), p.specs().end(), [](const ParamSpec& s) { return s.key == "light.elevation"; }), 1);
+}
+
+}  // namespace
+}  // namespace shadowlab
