@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/check_cmd.h"
 #include "app/headless.h"
 #include "app/window.h"
 
@@ -32,6 +33,16 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--buffers", render.buffers,
                        "Also write world positions, normals and visibility as float32 .npy files");
 
+  shadowlab::CheckOptions check;
+  CLI::App* check_cmd = app.add_subcommand("check", "Grade labs headless against the ray-cast oracle (exit 0 only if all pass)");
+  check_cmd->add_option("--lab", check.labs, "all, one lab number, or a comma-separated list (3,4,5)");
+  check_cmd->add_option("--impl", check.impl, "Grade the exercise (the file you edit) or the solution")
+      ->check(CLI::IsMember({"exercise", "solution"}));
+  check_cmd->add_option("--scene", check.scene_file, "glTF 2.0 file to grade on instead of the lab's scene");
+  check_cmd->add_option("--json", check.json_file, "Write the results as JSON to this file");
+  check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
+  check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
+
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
@@ -43,6 +54,7 @@ int main(int argc, char** argv) {
   }
 
   if (*render_cmd) return shadowlab::run_render(render);
+  if (*check_cmd) return shadowlab::run_check(check);
   if (*labs_cmd) return shadowlab::run_list_labs(show_params);
   return shadowlab::run_window(window_options);
 }

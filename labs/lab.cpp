@@ -24,9 +24,11 @@ ParamSet lab_params(const Lab& lab) {
 
 // Each lab's definition lives in its own folder; this is the list, in the course's order.
 Lab make_lab_basic_shadow_map();
+Lab make_lab_bias_tuning();
+Lab make_lab_ortho_fit();
 
 const std::vector<Lab>& all_labs() {
-  static const std::vector<Lab> labs = {make_lab_basic_shadow_map()};
+  static const std::vector<Lab> labs = {make_lab_basic_shadow_map(), make_lab_bias_tuning(), make_lab_ortho_fit()};
   return labs;
 }
 

@@ -25,6 +25,9 @@ struct Preset {
   std::map<std::string, std::string> values;  // key -> value, as --set takes them
 };
 
+struct CheckResult;
+class CheckContext;
+
 struct Lab {
   int number = 0;
   std::string slug;   // folder name without the number: "basic_shadow_map"
@@ -36,6 +39,8 @@ struct Lab {
   std::vector<std::string> exercise_files;
   std::vector<std::string> solution_files;
   std::function<LabHooks(Impl)> hooks;
+  // Grades the lab headless against the oracle; empty for labs without a check yet.
+  std::function<void(CheckContext&, CheckResult&)> check;
 
   std::string folder() const;  // "labs/00_basic_shadow_map"
   std::filesystem::path text_path() const;  // its README.md: the lab's text

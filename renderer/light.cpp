@@ -9,6 +9,8 @@
 namespace shadowlab {
 
 glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg) {
+  // cos(radians(90)) is -4.4e-8 in float, not 0: make "straight down" exactly straight down.
+  if (elevation_deg >= 90.0f) return {0.0f, 1.0f, 0.0f};
   const float az = glm::radians(azimuth_deg), el = glm::radians(elevation_deg);
   return glm::normalize(glm::vec3(std::cos(el) * std::cos(az), std::sin(el), -std::cos(el) * std::sin(az)));
 }
@@ -25,28 +27,34 @@ glm::mat3 orthonormal_basis(const glm::vec3& z) {
 }
 
 LightView fit_light_ortho(const Bounds& bounds, const glm::vec3& to_light) {
-  LightView lv;
+  // Computed in double: a scene 1e4 or 1e6 units from the origin loses the box's own size in float
+  // rounding of C and (V - C); only the finished matrices are rounded to float.
+  const glm::dvec3 lo(bounds.min), hi(bounds.max);
   // 1. Centre C of the bounding box: the centre of the light's view.
-  const glm::vec3 c = bounds.center();
+  const glm::dvec3 c = 0.5 * (lo + hi);
   // 2. Axes: Z along the light (the light looks down -Z, toward the scene), X and Y any orthonormal pair.
-  const glm::mat3 basis = orthonormal_basis(glm::normalize(to_light));
+  const glm::dmat3 basis(orthonormal_basis(glm::normalize(to_light)));
   // 3. Half-lengths: the largest |(V - C) . axis| over the 8 corners.
-  glm::vec3 half(0.0f);
+  glm::dvec3 half(0.0);
   for (int i = 0; i < 8; ++i) {
-    const glm::vec3 d = bounds.corner(i) - c;
+    const glm::dvec3 d = glm::dvec3(bounds.corner(i)) - c;
     for (int axis = 0; axis < 3; ++axis) half[axis] = std::max(half[axis], std::abs(glm::dot(d, basis[axis])));
   }
-  // A flat scene has no extent along some axis; keep the matrix invertible with a tiny relative extent.
-  const float floor_extent = std::max(1e-6f * glm::length(bounds.extent()), 1e-6f * std::max(1.0f, glm::length(c)));
-  half = glm::max(half, glm::vec3(std::max(floor_extent, 1e-30f)));
-  // 4. View: rows are the axes, origin at C. Projection: scale each axis by its half-length, z into [-1, 1]
-  // with the light side (+Z) nearest (OpenGL looks down -Z: near depth -1 at +half.z).
-  lv.view = glm::mat4(glm::transpose(basis));
-  lv.view[3] = glm::vec4(-(glm::transpose(basis) * c), 1.0f);
-  lv.projection = glm::ortho(-half.x, half.x, -half.y, half.y, -half.z, half.z);
-  lv.image_x = basis[0];
-  lv.image_y = basis[1];
-  lv.world_size = 2.0f * glm::vec2(half.x, half.y);
+  // A flat scene has no extent along some axis: keep the matrix invertible with a tiny relative extent.
+  const double floor_extent = std::max(1e-6 * glm::length(hi - lo), 1e-6 * std::max(1.0, glm::length(c)));
+  half = glm::max(half, glm::dvec3(std::max(floor_extent, 1e-30)));
+  // 4. View: rows are the axes, origin at C. Projection: each axis scaled by its half-length, so the box
+  // maps onto [-1, 1]^3; the light side (+Z) is nearest (depth -1).
+  const glm::dmat3 rows = glm::transpose(basis);
+  glm::dmat4 view(rows);
+  view[3] = glm::dvec4(-(rows * c), 1.0);
+  const glm::dmat4 projection = glm::ortho(-half.x, half.x, -half.y, half.y, -half.z, half.z);
+  LightView lv;
+  lv.view = glm::mat4(view);
+  lv.projection = glm::mat4(projection);
+  lv.image_x = glm::vec3(basis[0]);
+  lv.image_y = glm::vec3(basis[1]);
+  lv.world_size = glm::vec2(2.0 * half.x, 2.0 * half.y);
   return lv;
 }
 

@@ -1,0 +1,20 @@
+// Lab 2 exercise: fit the directional light's orthographic projection to the scene's bounding box.
+// Edit this function, rebuild (scripts/build), and run: shadowlab check --lab 2 --impl exercise
+#include "labs/02_ortho_fit/ortho_fit.h"
+
+namespace shadowlab {
+
+LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light) {
+  (void)bounds;
+  // TODO: the tutorials' fixed box wastes the map on a small scene, clips a large one, and breaks when
+  // the light points straight down (lookAt's up vector is parallel to the light). Replace it:
+  //   1. C = the bounding box's centre: the centre of the light's view.
+  //   2. Z = the light direction; X, Y = any two unit vectors orthogonal to Z and to each other
+  //      (orthonormal_basis(Z) in renderer/light.h gives a pair that never degenerates).
+  //   3. Each half-length = the largest |(V - C) . axis| over the box's 8 corners (bounds.corner(i)).
+  //   4. view = rows X, Y, Z with origin C; projection = glm::ortho(-hx, hx, -hy, hy, -hz, hz).
+  //      Fill image_x, image_y (= X, Y) and world_size (= 2 hx, 2 hy) too: the oracle needs them.
+  return fixed_tutorial_ortho(to_light);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,27 @@
+// Lab 2: the light's ortho projection fitted to the bounding box. The solution is the renderer's own
+// fit_light_ortho (renderer/light.cpp), which every other lab uses.
+#pragma once
+
+#include <functional>
+
+#include "renderer/light.h"
+
+namespace shadowlab {
+
+LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light);
+
+struct FitVerification {
+  int directions = 0;
+  int non_finite = 0;     // directions whose matrix has a NaN or Inf
+  int outside = 0;        // directions with a corner outside [-1, 1]^3 by more than the tolerance
+  int loose = 0;          // directions where the box does not touch both sides of some axis
+  double worst_excess = 0.0;  // largest |coordinate| - 1 over all corners (> 0: outside)
+  double worst_gap = 0.0;     // largest 1 - max|coordinate| over axes (> 0: not tight)
+};
+
+// Fits the box for 10,000 random directions plus the six axis directions and checks that every corner
+// maps into [-1, 1]^3 within `tolerance` and touches the boundary on each axis.
+FitVerification verify_light_fit(const std::function<LightView(const Bounds&, const glm::vec3&)>& fit,
+                                 const Bounds& bounds, int random_directions = 10000, double tolerance = 1e-5);
+
+}  // namespace shadowlab
