@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "renderer/gl.h"  // before GLFW, so GLFW does not include a GL header of its own
@@ -17,6 +18,7 @@
 
 #include "app/headless.h"
 #include "app/panel.h"
+#include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
 #include "renderer/image_io.h"
@@ -64,10 +66,13 @@ struct App {
   std::string lab_text;
   std::string status;  // last screenshot path or error
   bool screenshot_requested = false;
+  bool check_requested = false;
+  std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
   double last_poll = 0.0;
 
   void open_lab(const Lab& next) {
     lab = &next;
+    check_result.reset();
     params = lab_params(next);
     lab_text = read_file_text(next.text_path());
     apply_hooks();
@@ -76,6 +81,36 @@ struct App {
     if (!renderer->set_lab(lab->hooks(impl))) status = "shader error: the previous program keeps running";
   }
 };
+
+void draw_check_result(const CheckResult& r) {
+  const ImVec4 green(0.45f, 0.85f, 0.45f, 1.0f), red(1.0f, 0.45f, 0.4f, 1.0f);
+  ImGui::TextColored(r.passed() ? green : red, "%s (%.1f s)", r.passed() ? "PASS" : "FAIL", r.seconds);
+  if (!r.error.empty()) ImGui::TextColored(red, "%s", r.error.c_str());
+  for (const auto& c : r.criteria) {
+    ImGui::TextColored(c.passed() ? green : red, "%s %s = %.4g %s %.4g", c.passed() ? "ok  " : "FAIL", c.metric.c_str(),
+                       c.value, c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.why.c_str());
+  }
+}
+
+// Runs the lab's check in this window's GL context, with a renderer of its own (offscreen targets),
+// exactly as `shadowlab check` does headless.
+void run_check(App& app) {
+  CheckResult result;
+  result.lab = app.lab->number;
+  result.slug = app.lab->slug;
+  result.impl = app.impl;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    Renderer renderer;
+    CheckContext ctx(renderer, *app.lab, app.impl, app.renderer->scene(), {});
+    app.lab->check(ctx, result);
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  app.check_result = result;
+}
 
 void draw_panel(App& app) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
@@ -94,6 +129,7 @@ void draw_panel(App& app) {
     changed |= ImGui::RadioButton("Solution", &impl, 1);
     if (changed) {
       app.impl = impl == 0 ? Impl::Exercise : Impl::Solution;
+      app.check_result.reset();
       app.apply_hooks();
     }
   }
@@ -124,6 +160,12 @@ void draw_panel(App& app) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", error.c_str());
     ImGui::PopStyleColor();
+  }
+  if (app.lab->check && ImGui::CollapsingHeader("Check", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::Button("Check")) app.check_requested = true;
+    ImGui::SameLine();
+    ImGui::TextDisabled("same as: shadowlab check --lab %d --impl %s", app.lab->number, impl_name(app.impl));
+    if (app.check_result) draw_check_result(*app.check_result);
   }
   if (ImGui::Button("Screenshot (F12)")) app.screenshot_requested = true;
   if (!app.status.empty()) ImGui::TextWrapped("%s", app.status.c_str());
@@ -229,6 +271,10 @@ int run_window(const WindowOptions& options) {
       }
       draw_panel(app);
 
+      if (app.check_requested) {
+        run_check(app);
+        app.check_requested = false;
+      }
       FrameRequest request;
       request.camera = app.camera;
       request.width = width;

@@ -70,4 +70,7 @@ class ParamSet {
   std::size_t index_of(const std::string& key) const;
 };
 
+// The renderer's own parameters (renderer_params.cpp); labs add theirs and may change these defaults.
+std::vector<ParamSpec> renderer_param_specs();
+
 }  // namespace shadowlab

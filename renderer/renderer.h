@@ -22,9 +22,6 @@
 
 namespace shadowlab {
 
-// The renderer's own parameters; labs add theirs and may change these defaults.
-std::vector<ParamSpec> renderer_param_specs();
-
 using LightFit = std::function<LightView(const Bounds& bounds, const glm::vec3& to_light)>;
 
 // What a lab switches on.

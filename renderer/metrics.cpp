@@ -1,0 +1,127 @@
+#include "renderer/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace shadowlab {
+
+namespace {
+
+void check_sizes(const Truth& truth, const std::vector<float>& visibility) {
+  if (truth.width < 0 || truth.height < 0) throw std::invalid_argument("metrics: negative truth size");
+  const std::size_t count = static_cast<std::size_t>(truth.width) * static_cast<std::size_t>(truth.height);
+  if (truth.valid.size() != count || truth.lit.size() != count || truth.interior.size() != count) {
+    throw std::invalid_argument("metrics: truth arrays do not match its " + std::to_string(truth.width) + "x" +
+                                std::to_string(truth.height) + " size");
+  }
+  if (visibility.size() != count) {
+    throw std::invalid_argument("metrics: " + std::to_string(visibility.size()) + " visibility values for " +
+                                std::to_string(count) + " pixels");
+  }
+}
+
+// Rendered visibility in [0, 1]; NaN (a broken shader) counts as the wrong answer.
+float sanitize(float v, bool truly_lit) {
+  if (std::isnan(v)) return truly_lit ? 0.0f : 1.0f;
+  return std::clamp(v, 0.0f, 1.0f);
+}
+
+double ratio(std::uint64_t num, std::uint64_t den) {
+  return den == 0 ? 0.0 : static_cast<double>(num) / static_cast<double>(den);
+}
+
+}  // namespace
+
+Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
+  check_sizes(truth, visibility);
+  std::uint64_t all_lit = 0, all_shadowed = 0, all_acne = 0, all_leak = 0;
+  std::uint64_t interior_acne = 0, interior_leak = 0, interior_bleed = 0;
+  double abs_interior = 0.0, abs_edge = 0.0;
+  Metrics m;
+  for (std::size_t i = 0; i < visibility.size(); ++i) {
+    if (!truth.valid[i]) continue;
+    ++m.valid_pixels;
+    const bool truly_lit = truth.lit[i] != 0;
+    const float v = sanitize(visibility[i], truly_lit);
+    const bool rendered_lit = v >= 0.5f;
+    const double error = std::abs(static_cast<double>(v) - (truly_lit ? 1.0 : 0.0));
+    if (truly_lit) {
+      ++all_lit;
+      all_acne += !rendered_lit;
+    } else {
+      ++all_shadowed;
+      all_leak += rendered_lit;
+    }
+    if (truth.interior[i]) {
+      abs_interior += error;
+      if (truly_lit) {
+        ++m.interior_lit;
+        interior_acne += !rendered_lit;
+      } else {
+        ++m.interior_shadowed;
+        interior_leak += rendered_lit;
+        interior_bleed += v > 0.1f;
+      }
+    } else {
+      ++m.edge_pixels;
+      abs_edge += error;
+    }
+  }
+  m.acne_rate = ratio(interior_acne, m.interior_lit);
+  m.leak_rate = ratio(interior_leak, m.interior_shadowed);
+  m.acne_rate_all = ratio(all_acne, all_lit);
+  m.leak_rate_all = ratio(all_leak, all_shadowed);
+  const std::uint64_t interior = m.interior_lit + m.interior_shadowed;
+  m.mae_interior = interior == 0 ? 0.0 : abs_interior / static_cast<double>(interior);
+  m.mae_edge = m.edge_pixels == 0 ? 0.0 : abs_edge / static_cast<double>(m.edge_pixels);
+  m.bleeding_rate = ratio(interior_bleed, m.interior_shadowed);
+  return m;
+}
+
+nlohmann::json to_json(const Metrics& m) {
+  return nlohmann::json{
+      {"acne_rate", m.acne_rate},
+      {"leak_rate", m.leak_rate},
+      {"acne_rate_all", m.acne_rate_all},
+      {"leak_rate_all", m.leak_rate_all},
+      {"mae_interior", m.mae_interior},
+      {"mae_edge", m.mae_edge},
+      {"bleeding_rate", m.bleeding_rate},
+      {"valid_pixels", m.valid_pixels},
+      {"interior_lit", m.interior_lit},
+      {"interior_shadowed", m.interior_shadowed},
+      {"edge_pixels", m.edge_pixels},
+  };
+}
+
+std::vector<std::uint8_t> diff_image(const Truth& truth, const std::vector<float>& visibility) {
+  check_sizes(truth, visibility);
+  const std::size_t width = static_cast<std::size_t>(truth.width);
+  const std::size_t height = static_cast<std::size_t>(truth.height);
+  std::vector<std::uint8_t> image(width * height * 4, 0);
+  for (std::size_t y = 0; y < height; ++y) {
+    // The truth's row 0 is the bottom; the image's row 0 is the top.
+    std::uint8_t* out_row = image.data() + (height - 1 - y) * width * 4;
+    for (std::size_t x = 0; x < width; ++x) {
+      const std::size_t i = y * width + x;
+      std::uint8_t* px = out_row + x * 4;
+      px[3] = 255;
+      if (!truth.valid[i]) continue;  // black
+      const bool truly_lit = truth.lit[i] != 0;
+      const bool rendered_lit = sanitize(visibility[i], truly_lit) >= 0.5f;
+      DiffColor c = truly_lit ? (rendered_lit ? kDiffLit : kDiffAcne) : (rendered_lit ? kDiffLeak : kDiffShadowed);
+      if (!truth.interior[i]) {
+        for (int k = 0; k < 3; ++k) c[k] = static_cast<std::uint8_t>((c[k] + kDiffEdgeTint[k] + 1) / 2);
+      }
+      px[0] = c[0];
+      px[1] = c[1];
+      px[2] = c[2];
+    }
+  }
+  return image;
+}
+
+}  // namespace shadowlab
