@@ -1,5 +1,6 @@
 #include "app/window.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -38,6 +39,29 @@ std::string read_file_text(const std::filesystem::path& path) {
   return s.str();
 }
 
+// Lab texts are Markdown hard-wrapped at 100 columns; the panel wraps by itself, so join the lines of
+// each paragraph. Headings, list items, indented code and table rows keep their own lines.
+std::string reflow_markdown(const std::string& text) {
+  std::istringstream in(text);
+  std::string out, line;
+  bool joinable = false;  // the previous line was paragraph text
+  while (std::getline(in, line)) {
+    const bool blank = line.find_first_not_of(' ') == std::string::npos;
+    const bool structural = !blank && (line[0] == '#' || line[0] == '|' || line.rfind("    ", 0) == 0 ||
+                                       line.rfind("- ", 0) == 0 || (std::isdigit(static_cast<unsigned char>(line[0])) &&
+                                                                    line.find(". ") < 4));
+    const bool continuation = !blank && !structural && line[0] == ' ';
+    if (joinable && !blank && (!structural || continuation)) {
+      out += ' ' + line.substr(line.find_first_not_of(' '));
+    } else {
+      if (!out.empty()) out += '\n';
+      out += line;
+    }
+    joinable = !blank && line[0] != '#' && line[0] != '|' && line.rfind("    ", 0) != 0;
+  }
+  return out;
+}
+
 // Creates the window with the highest core profile the driver gives, 4.6 down to 3.3.
 GLFWwindow* create_window() {
   const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
@@ -74,7 +98,7 @@ struct App {
     lab = &next;
     check_result.reset();
     params = lab_params(next);
-    lab_text = read_file_text(next.text_path());
+    lab_text = reflow_markdown(read_file_text(next.text_path()));
     apply_hooks();
   }
   void apply_hooks() {
