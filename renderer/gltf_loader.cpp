@@ -1,0 +1,818 @@
+// glTF 2.0 loading. tinygltf parses the JSON/GLB and the buffers; everything it hands back is checked
+// here before use, because tinygltf 2.7.0 accepts out-of-range indices, accessors running past their
+// buffers, node loops and the like without a word.
+//
+// The order of the checks matters:
+//   1. the file itself (size limit before reading, GLB version), then tinygltf, whose file reads go
+//      through a sandbox that only opens files inside the model's folder;
+//   2. every index reference in the document, buffer views against their buffers, accessor layouts;
+//   3. the node hierarchy (one parent per node, no loops, depth limit, finite transforms);
+//   4. the scene walk, which lists the triangle primitives to draw and checks their formats and the
+//      declared vertex/index totals against LoadLimits, before anything is allocated for them;
+//   5. accessor byte ranges against their buffer views (after 4, so that a file declaring billions of
+//      vertices is refused for the limit it breaks, whatever else is wrong with it);
+//   6. reading: positions must be finite, indices in range; normals are used when they are sound.
+#include "renderer/gltf_loader.h"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/transform.hpp>
+#include <tiny_gltf.h>
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// glTF buffers are little-endian; elements are copied out byte for byte.
+static_assert(std::endian::native == std::endian::little, "the glTF reader assumes a little-endian host");
+
+constexpr std::uint64_t kMaxU64 = std::numeric_limits<std::uint64_t>::max();
+
+// a * b + c, or nothing when it does not fit in 64 bits.
+std::optional<std::uint64_t> mul_add(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+  if (b != 0 && a > (kMaxU64 - c) / b) return std::nullopt;
+  return a * b + c;
+}
+
+std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) { return b > kMaxU64 - a ? kMaxU64 : a + b; }
+
+std::string str(std::uint64_t n) { return std::to_string(n); }
+
+// tinygltf's messages are newline-separated; a LoadError is one line.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') {
+      out += "; ";
+    } else if (c != '\r') {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The file sandbox. tinygltf resolves a buffer or image URI by url-decoding it, joining it to the base
+// folder we give it ("<base>/<uri>", even when the URI is absolute) and calling FileExists, then
+// ReadWholeFile on the first candidate that exists. It also tries "./<uri>" (the working directory),
+// which is never allowed. So the callbacks recover the URI from the joined path and judge the URI.
+
+struct FolderSandbox {
+  std::string base_dir;     // the model's folder, absolute, exactly as handed to tinygltf
+  fs::path canonical_base;  // the same folder with symlinks and dots resolved
+  std::uint64_t max_file_bytes = 0;
+  std::string problem;  // the first refusal; load_gltf reports it once tinygltf returns
+
+  // The URI tinygltf joined to base_dir to make `path`, or nothing for any other path.
+  std::optional<std::string> uri_of(const std::string& path) const {
+    const std::string prefix = base_dir.ends_with('/') ? base_dir : base_dir + '/';
+    if (!path.starts_with(prefix)) return std::nullopt;
+    return path.substr(prefix.size());
+  }
+
+  // Why `uri` may not be read, or an empty string when it may.
+  std::string refusal(const std::string& uri) const {
+    if (uri.find('\0') != std::string::npos) return "it contains a NUL character";
+    // A ':' ahead of the first '/' makes a scheme (RFC 3986: a relative path whose first segment holds
+    // a ':' must be written "./a:b"); this also catches drive letters ("C:/...") and an empty scheme.
+    const std::size_t colon = uri.find(':');
+    if (colon != std::string::npos && colon < uri.find('/'))
+      return "scheme '" + uri.substr(0, colon + 1) +
+             "' is not allowed; only relative paths inside the model's folder and data: URIs are";
+    if (uri.starts_with('/') || uri.starts_with('\\')) return "absolute paths are not allowed";
+    std::error_code ec;
+    const fs::path target = fs::weakly_canonical(canonical_base / uri, ec);
+    if (ec) return "the path cannot be resolved (" + ec.message() + ")";
+    const auto [in_base, in_target] =
+        std::mismatch(canonical_base.begin(), canonical_base.end(), target.begin(), target.end());
+    if (in_base != canonical_base.end() || in_target == target.end())
+      return "it leads outside the model's folder " + canonical_base.string();
+    return {};
+  }
+
+  void refuse(const std::string& uri, const std::string& why) {
+    if (problem.empty()) problem = "URI '" + uri + "' refused: " + why;
+  }
+};
+
+bool sandbox_file_exists(const std::string& path, void* user) {
+  auto& box = *static_cast<FolderSandbox*>(user);
+  const auto uri = box.uri_of(path);
+  // The working-directory retry, a buffer without a URI, or a data: URI tinygltf could not decode
+  // (malformed, or a MIME type it does not know): nothing to look for; tinygltf reports "File not
+  // found" for a buffer and only warns for an image, which we do not use anyway.
+  if (!uri || uri->empty() || uri->starts_with("data:")) return false;
+  if (const std::string why = box.refusal(*uri); !why.empty()) {
+    box.refuse(*uri, why);
+    return false;
+  }
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);  // never a directory, FIFO or device
+}
+
+std::string sandbox_expand_path(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool sandbox_read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  auto& box = *static_cast<FolderSandbox*>(user);
+  // tinygltf only reads what FileExists accepted; judging again keeps the rule in the function that reads.
+  const auto uri = box.uri_of(path);
+  if (!uri || uri->empty()) {
+    *err = "only files inside the model's folder may be read";
+    return false;
+  }
+  if (const std::string why = box.refusal(*uri); !why.empty()) {
+    box.refuse(*uri, why);
+    *err = why;
+    return false;
+  }
+  std::error_code ec;
+  const std::uint64_t size = fs::file_size(path, ec);
+  if (ec) {
+    *err = ec.message();
+    return false;
+  }
+  if (size > box.max_file_bytes) {
+    *err = "'" + *uri + "' is " + str(size) + " bytes, above the limit of " + str(box.max_file_bytes) +
+           " bytes (LoadLimits::max_file_bytes)";
+    if (box.problem.empty()) box.problem = *err;
+    return false;
+  }
+  out->resize(size);
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    *err = "cannot read the file";
+    return false;
+  }
+  return true;
+}
+
+// Textures are not used: images are accepted undecoded, so corrupt image data cannot matter.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------------
+
+std::size_t component_size(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;  // INT, DOUBLE and anything else: not allowed in glTF 2.0 accessors
+  }
+}
+
+const char* component_name(int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    default: return "an invalid component type";
+  }
+}
+
+const char* type_name(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    default: return "MAT4";  // tinygltf rejects any other type while parsing
+  }
+}
+
+// Bytes of one element; for the formats we read (VEC3 FLOAT, SCALAR integers) there is no padding.
+std::size_t element_size(const tinygltf::Accessor& a) {
+  return component_size(a.componentType) *
+         static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)));
+}
+
+bool all_finite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+// One triangle primitive of one node instance, found by the scene walk and drawn as one Mesh.
+struct Draw {
+  int node = 0, mesh = 0, primitive = 0;
+  glm::dmat4 world{1.0};
+};
+
+class Loader {
+ public:
+  Loader(const fs::path& path, const LoadLimits& limits) : path_(path), limits_(limits) {}
+
+  Scene load() {
+    parse();
+    check_asset();
+    check_references();
+    name_accessor_roles();
+    check_buffer_views();
+    check_accessor_layouts();
+    check_nodes();
+    const std::vector<Draw> draws = walk_scene();
+    check_accessor_ranges();
+
+    Scene scene;
+    scene.name = path_.string();
+    scene.meshes.reserve(draws.size());
+    for (const Draw& d : draws) scene.meshes.push_back(build_mesh(d));
+    if (scene.meshes.empty()) fail("no triangle meshes to draw");
+    return scene;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const { throw LoadError(path_.string() + ": " + problem); }
+
+  // ---- 1. The file and tinygltf.
+
+  void parse() {
+    std::error_code ec;
+    if (!fs::exists(path_, ec)) fail("file not found");
+    if (!fs::is_regular_file(path_, ec)) fail("not a regular file");
+    const std::uint64_t size = fs::file_size(path_, ec);
+    if (ec) fail("cannot get the file size (" + ec.message() + ")");
+    if (size > limits_.max_file_bytes)
+      fail("the file is " + str(size) + " bytes, above the limit of " + str(limits_.max_file_bytes) +
+           " bytes (LoadLimits::max_file_bytes)");
+    if (size > std::numeric_limits<unsigned int>::max()) fail("files of 4 GiB or more are not supported");
+    if (size == 0) fail("the file is empty");
+
+    std::vector<unsigned char> bytes(size);
+    std::ifstream in(path_, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
+      fail("cannot read the file");
+
+    std::string extension = path_.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const bool magic = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool glb = magic || extension == ".glb";
+    if (magic && size >= 8) {
+      // tinygltf ignores the GLB version; glTF 1.0 binaries (version 1) are laid out differently.
+      std::uint32_t version = 0;
+      std::memcpy(&version, bytes.data() + 4, 4);
+      if (version != 2) fail("GLB container version " + str(version) + " is not supported (glTF 2.0 uses version 2)");
+    }
+
+    FolderSandbox box;
+    const fs::path folder = fs::absolute(path_, ec).parent_path();
+    if (ec) fail("cannot resolve the file's folder (" + ec.message() + ")");
+    box.base_dir = folder.string();
+    box.canonical_base = fs::weakly_canonical(folder, ec);
+    if (ec) fail("cannot resolve the file's folder (" + ec.message() + ")");
+    box.max_file_bytes = limits_.max_file_bytes;
+
+    tinygltf::TinyGLTF gltf;
+    // WriteWholeFile stays null: loading never writes.
+    gltf.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand_path, &sandbox_read_file, nullptr, &box});
+    gltf.SetImageLoader(&skip_image, nullptr);
+    std::string err, warn;
+    bool ok = false;
+    try {
+      const auto length = static_cast<unsigned int>(size);
+      ok = glb ? gltf.LoadBinaryFromMemory(&model_, &err, &warn, bytes.data(), length, box.base_dir)
+               : gltf.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(bytes.data()), length,
+                                          box.base_dir);
+    } catch (const std::exception& e) {
+      fail(std::string("glTF parser error: ") + e.what());
+    }
+    if (!box.problem.empty()) fail(box.problem);
+    // tinygltf sometimes records an error and carries on (e.g. a buffer without a URI): still an error.
+    if (!ok || !err.empty()) {
+      std::string message = "glTF parser error: " + (err.empty() ? std::string("(no message)") : one_line(err));
+      if (!warn.empty()) message += " (warnings: " + one_line(warn) + ")";
+      fail(message);
+    }
+  }
+
+  void check_asset() const {
+    if (!model_.asset.version.starts_with("2.")) fail("asset version '" + model_.asset.version + "' is not glTF 2.x");
+    // Extensions that change how geometry is stored; any other required extension (materials,
+    // texture transforms, lights...) does not change the triangles we draw.
+    for (const std::string& ext : model_.extensionsRequired) {
+      if (ext == "KHR_draco_mesh_compression" || ext == "KHR_mesh_quantization" || ext == "EXT_meshopt_compression")
+        fail("required extension " + ext + " is not supported");
+    }
+  }
+
+  // ---- 2. References, buffer views, accessor layouts.
+
+  struct Kind {
+    const char* one;
+    const char* many;
+  };
+
+  // `index` names an element of an array of `count` `kind`s; -1 means "none" where that is allowed.
+  void check_index(int index, std::size_t count, Kind kind, bool optional, const std::string& referrer) const {
+    if (optional && index == -1) return;
+    if (index < 0 || static_cast<std::size_t>(index) >= count)
+      fail(referrer + " refers to " + kind.one + " " + std::to_string(index) + ", which does not exist (the file has " +
+           str(count) + " " + (count == 1 ? kind.one : kind.many) + ")");
+  }
+
+  // Every index reference tinygltf keeps, whether or not we use the object: a dangling reference means
+  // a broken file.
+  void check_references() const {
+    const auto& m = model_;
+    const Kind accessor{"accessor", "accessors"}, buffer_view{"bufferView", "bufferViews"}, buffer{"buffer", "buffers"},
+        image{"image", "images"}, sampler{"sampler", "samplers"}, texture{"texture", "textures"},
+        material{"material", "materials"}, mesh{"mesh", "meshes"}, node{"node", "nodes"}, camera{"camera", "cameras"},
+        skin{"skin", "skins"}, scene{"scene", "scenes"};
+    const auto n = [](const auto& v) { return v.size(); };
+
+    for (std::size_t i = 0; i < m.bufferViews.size(); ++i)
+      check_index(m.bufferViews[i].buffer, n(m.buffers), buffer, false, "bufferView " + str(i));
+    for (std::size_t i = 0; i < m.accessors.size(); ++i) {
+      const auto& a = m.accessors[i];
+      const std::string who = "accessor " + str(i);
+      check_index(a.bufferView, n(m.bufferViews), buffer_view, true, who);
+      if (a.sparse.isSparse) {
+        check_index(a.sparse.indices.bufferView, n(m.bufferViews), buffer_view, false, who + " (sparse indices)");
+        check_index(a.sparse.values.bufferView, n(m.bufferViews), buffer_view, false, who + " (sparse values)");
+      }
+    }
+    for (std::size_t i = 0; i < m.images.size(); ++i)
+      check_index(m.images[i].bufferView, n(m.bufferViews), buffer_view, true, "image " + str(i));
+    for (std::size_t i = 0; i < m.textures.size(); ++i) {
+      check_index(m.textures[i].source, n(m.images), image, true, "texture " + str(i));
+      check_index(m.textures[i].sampler, n(m.samplers), sampler, true, "texture " + str(i));
+    }
+    for (std::size_t i = 0; i < m.materials.size(); ++i) {
+      const auto& mat = m.materials[i];
+      const std::string who = "material " + str(i);
+      for (int t :
+           {mat.pbrMetallicRoughness.baseColorTexture.index, mat.pbrMetallicRoughness.metallicRoughnessTexture.index,
+            mat.normalTexture.index, mat.occlusionTexture.index, mat.emissiveTexture.index})
+        check_index(t, n(m.textures), texture, true, who);
+    }
+    for (std::size_t i = 0; i < m.meshes.size(); ++i) {
+      for (std::size_t p = 0; p < m.meshes[i].primitives.size(); ++p) {
+        const auto& prim = m.meshes[i].primitives[p];
+        const std::string who = "mesh " + str(i) + " primitive " + str(p);
+        for (const auto& [name, a] : prim.attributes) check_index(a, n(m.accessors), accessor, false, who + " " + name);
+        check_index(prim.indices, n(m.accessors), accessor, true, who + " indices");
+        check_index(prim.material, n(m.materials), material, true, who);
+        for (const auto& target : prim.targets)
+          for (const auto& [name, a] : target)
+            check_index(a, n(m.accessors), accessor, false, who + " morph target " + name);
+      }
+    }
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+      const auto& nd = m.nodes[i];
+      const std::string who = "node " + str(i);
+      check_index(nd.mesh, n(m.meshes), mesh, true, who);
+      check_index(nd.camera, n(m.cameras), camera, true, who);
+      check_index(nd.skin, n(m.skins), skin, true, who);
+      for (int c : nd.children) check_index(c, n(m.nodes), node, false, who + " (children)");
+    }
+    for (std::size_t i = 0; i < m.skins.size(); ++i) {
+      const std::string who = "skin " + str(i);
+      check_index(m.skins[i].inverseBindMatrices, n(m.accessors), accessor, true, who);
+      check_index(m.skins[i].skeleton, n(m.nodes), node, true, who);
+      for (int j : m.skins[i].joints) check_index(j, n(m.nodes), node, false, who + " (joints)");
+    }
+    for (std::size_t i = 0; i < m.animations.size(); ++i) {
+      const auto& anim = m.animations[i];
+      const std::string who = "animation " + str(i);
+      for (const auto& ch : anim.channels) {
+        check_index(ch.sampler, n(anim.samplers), Kind{"animation sampler", "animation samplers"}, false, who);
+        check_index(ch.target_node, n(m.nodes), node, true, who);
+      }
+      for (const auto& s : anim.samplers) {
+        check_index(s.input, n(m.accessors), accessor, false, who + " sampler input");
+        check_index(s.output, n(m.accessors), accessor, false, who + " sampler output");
+      }
+    }
+    for (std::size_t i = 0; i < m.scenes.size(); ++i)
+      for (int nd : m.scenes[i].nodes) check_index(nd, n(m.nodes), node, false, "scene " + str(i));
+    check_index(m.defaultScene, n(m.scenes), scene, true, "the default scene");
+  }
+
+  // Remembers what each accessor is used for, so that messages can say "accessor 3 (POSITION of mesh 0
+  // primitive 0)". Runs after check_references: every index is valid.
+  void name_accessor_roles() {
+    roles_.assign(model_.accessors.size(), {});
+    const auto note = [&](int a, const std::string& role) {
+      if (roles_[static_cast<std::size_t>(a)].empty()) roles_[static_cast<std::size_t>(a)] = role;
+    };
+    for (std::size_t i = 0; i < model_.meshes.size(); ++i) {
+      for (std::size_t p = 0; p < model_.meshes[i].primitives.size(); ++p) {
+        const auto& prim = model_.meshes[i].primitives[p];
+        const std::string where = " of mesh " + str(i) + " primitive " + str(p);
+        for (const auto& [name, a] : prim.attributes) note(a, name + where);
+        if (prim.indices >= 0) note(prim.indices, "indices" + where);
+      }
+    }
+  }
+
+  std::string accessor_name(int a) const {
+    const std::string& role = roles_[static_cast<std::size_t>(a)];
+    return "accessor " + std::to_string(a) + (role.empty() ? "" : " (" + role + ")");
+  }
+
+  void check_buffer_views() const {
+    for (std::size_t i = 0; i < model_.bufferViews.size(); ++i) {
+      const auto& view = model_.bufferViews[i];
+      const std::string who = "bufferView " + str(i);
+      const std::size_t buffer_size = model_.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+      if (view.byteLength == 0) fail(who + " has byteLength 0");
+      const auto end = mul_add(1, view.byteOffset, view.byteLength);
+      if (!end || *end > buffer_size)
+        fail(who + " covers bytes " + str(view.byteOffset) + ".." + (end ? str(*end) : "(overflow)") +
+             ", past the end of buffer " + std::to_string(view.buffer) + " (" + str(buffer_size) + " bytes)");
+      if (view.byteStride > view.byteLength)
+        fail(who + " has byteStride " + str(view.byteStride) + ", more than its byteLength " + str(view.byteLength));
+    }
+  }
+
+  // Component types, counts and strides: what can be checked without looking at byte ranges.
+  void check_accessor_layouts() const {
+    for (std::size_t i = 0; i < model_.accessors.size(); ++i) {
+      const auto& a = model_.accessors[i];
+      const int index = static_cast<int>(i);
+      if (component_size(a.componentType) == 0)
+        fail(accessor_name(index) + " has componentType " + std::to_string(a.componentType) +
+             ", which glTF 2.0 does not allow");
+      if (a.count == 0) fail(accessor_name(index) + " has count 0");
+      if (a.bufferView < 0) continue;
+      const auto& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+      if (view.byteStride != 0 && view.byteStride < element_size(a))
+        fail(accessor_name(index) + " has " + str(element_size(a)) + "-byte elements, but bufferView " +
+             std::to_string(a.bufferView) + " has byteStride " + str(view.byteStride));
+    }
+  }
+
+  // ---- 3. Node hierarchy.
+
+  // The node's own transform, from its matrix or its translation, rotation and scale.
+  glm::dmat4 local_transform(std::size_t i) const {
+    const auto& nd = model_.nodes[i];
+    const std::string who = "node " + str(i);
+    if (!all_finite(nd.matrix) || !all_finite(nd.translation) || !all_finite(nd.rotation) || !all_finite(nd.scale))
+      fail(who + " has a transform with a number that is not finite");
+    if (!nd.matrix.empty()) {
+      if (nd.matrix.size() != 16) fail(who + " matrix has " + str(nd.matrix.size()) + " numbers instead of 16");
+      return glm::make_mat4(nd.matrix.data());  // column-major, like glTF
+    }
+    if (!nd.translation.empty() && nd.translation.size() != 3)
+      fail(who + " translation has " + str(nd.translation.size()) + " numbers instead of 3");
+    if (!nd.rotation.empty() && nd.rotation.size() != 4)
+      fail(who + " rotation has " + str(nd.rotation.size()) + " numbers instead of 4");
+    if (!nd.scale.empty() && nd.scale.size() != 3)
+      fail(who + " scale has " + str(nd.scale.size()) + " numbers instead of 3");
+
+    glm::dmat4 m(1.0);
+    if (!nd.translation.empty()) m = glm::translate(glm::make_vec3(nd.translation.data()));
+    if (!nd.rotation.empty()) {
+      const auto& r = nd.rotation;  // glTF stores x, y, z, w; glm's constructor takes w first
+      const glm::dquat q(r[3], r[0], r[1], r[2]);
+      const double length = glm::length(q);
+      if (!(length > 0.0)) fail(who + " rotation is a zero quaternion");
+      m *= glm::mat4_cast(q / length);  // exporters round; renormalise rather than skew
+    }
+    if (!nd.scale.empty()) m *= glm::scale(glm::make_vec3(nd.scale.data()));
+    return m;
+  }
+
+  // glTF nodes form trees: each node has at most one parent and no node is its own ancestor. Checked
+  // for all nodes, used or not, together with the depth limit and the transforms.
+  void check_nodes() {
+    const std::size_t count = model_.nodes.size();
+    parent_.assign(count, -1);
+    for (std::size_t p = 0; p < count; ++p) {
+      for (int c : model_.nodes[p].children) {
+        const auto child = static_cast<std::size_t>(c);
+        if (parent_[child] == static_cast<int>(p))
+          fail("node " + str(p) + " lists node " + str(child) + " twice as a child");
+        if (parent_[child] != -1)
+          fail("node " + str(child) + " is a child of both node " + std::to_string(parent_[child]) + " and node " +
+               str(p) + " (a node may have only one parent)");
+        parent_[child] = static_cast<int>(p);
+      }
+    }
+
+    local_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) local_[i] = local_transform(i);
+
+    // Walk down from the parentless nodes. With one parent per node this visits each node at most once;
+    // the nodes it never reaches are on a loop or hang below one.
+    std::vector<int> depth(count, 0);
+    std::vector<std::size_t> stack;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (parent_[i] == -1) {
+        depth[i] = 1;
+        stack.push_back(i);
+      }
+    }
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      if (depth[i] > limits_.max_node_depth)
+        fail("node " + str(i) + " is " + std::to_string(depth[i]) + " levels deep, above the limit of " +
+             std::to_string(limits_.max_node_depth) + " (LoadLimits::max_node_depth)");
+      for (int c : model_.nodes[i].children) {
+        depth[static_cast<std::size_t>(c)] = depth[i] + 1;
+        stack.push_back(static_cast<std::size_t>(c));
+      }
+    }
+    const auto unreached = std::find(depth.begin(), depth.end(), 0);
+    if (unreached == depth.end()) return;
+    // Climbing `count` parents from an unreached node surely lands on the loop; then go round it once.
+    auto on_loop = static_cast<std::size_t>(unreached - depth.begin());
+    for (std::size_t step = 0; step < count; ++step) on_loop = static_cast<std::size_t>(parent_[on_loop]);
+    std::vector<std::size_t> ancestors{on_loop};  // on_loop, its parent, its grandparent... round the loop
+    for (auto i = static_cast<std::size_t>(parent_[on_loop]); i != on_loop; i = static_cast<std::size_t>(parent_[i]))
+      ancestors.push_back(i);
+    // Printed from parent to child, at most 8 steps: a crafted loop may hold millions of nodes.
+    std::string loop = str(on_loop);
+    const std::size_t shown = std::min<std::size_t>(ancestors.size() - 1, 8);
+    for (std::size_t k = 0; k < shown; ++k) loop += " -> " + str(ancestors[ancestors.size() - 1 - k]);
+    loop += shown + 1 < ancestors.size() ? " -> ... (" + str(ancestors.size()) + " nodes)" : " -> " + str(on_loop);
+    fail("nodes form a loop: " + loop + " (each node is a child of the one before)");
+  }
+
+  // ---- 4. The scene walk.
+
+  // The root nodes to draw: the default scene's, scene 0's when none is set, or every parentless node
+  // when the file has no scenes.
+  std::vector<int> scene_roots() const {
+    std::vector<int> roots;
+    if (model_.scenes.empty()) {
+      for (std::size_t i = 0; i < parent_.size(); ++i)
+        if (parent_[i] == -1) roots.push_back(static_cast<int>(i));
+      return roots;
+    }
+    const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+    roots = model_.scenes[static_cast<std::size_t>(s)].nodes;
+    std::vector<bool> listed(model_.nodes.size(), false);
+    for (int r : roots) {
+      const auto i = static_cast<std::size_t>(r);
+      if (listed[i]) fail("scene " + std::to_string(s) + " lists node " + str(i) + " twice");
+      if (parent_[i] != -1)
+        fail("scene " + std::to_string(s) + " lists node " + str(i) + ", a child of node " +
+             std::to_string(parent_[i]) + " (scene nodes must be roots)");
+      listed[i] = true;
+    }
+    return roots;
+  }
+
+  // A POSITION or NORMAL accessor must hold plain floats.
+  void check_vec3_float(int index) const {
+    const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+    check_readable(index);
+    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+      fail(accessor_name(index) + " is " + type_name(a.type) + " " + component_name(a.componentType) +
+           (a.normalized ? " normalized" : "") + "; it must be VEC3 FLOAT (quantized data is not supported)");
+  }
+
+  // Data we read must come from a buffer view: sparse accessors and all-zero accessors (no bufferView)
+  // are legal glTF but never useful geometry, so they are not supported.
+  void check_readable(int index) const {
+    const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+    if (a.sparse.isSparse) fail(accessor_name(index) + " is sparse; sparse accessors are not supported");
+    if (a.bufferView < 0) fail(accessor_name(index) + " has no bufferView (all zeros); that is not supported");
+  }
+
+  // Checks a triangle primitive's formats and returns how many vertices and triangles it makes.
+  std::pair<std::uint64_t, std::uint64_t> check_primitive(std::size_t m, std::size_t p) const {
+    const auto& prim = model_.meshes[m].primitives[p];
+    const std::string where = "mesh " + str(m) + " primitive " + str(p);
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) fail(where + " has no POSITION attribute");
+    check_vec3_float(position->second);
+    const std::uint64_t vertices = model_.accessors[static_cast<std::size_t>(position->second)].count;
+    // Indices are 32-bit: a primitive may address at most 2^32 vertices.
+    if (vertices > std::uint64_t{1} << 32) fail(where + " has " + str(vertices) + " vertices, more than 2^32");
+    for (const auto& [name, a] : prim.attributes) {
+      const std::uint64_t n = model_.accessors[static_cast<std::size_t>(a)].count;
+      if (n != vertices)
+        fail(accessor_name(a) + " has count " + str(n) + " but POSITION has " + str(vertices) +
+             "; all attributes of a primitive must have the same count");
+    }
+    if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end())
+      check_vec3_float(normal->second);
+
+    std::uint64_t corners = vertices;
+    if (prim.indices >= 0) {
+      const auto& a = model_.accessors[static_cast<std::size_t>(prim.indices)];
+      check_readable(prim.indices);
+      if (a.type != TINYGLTF_TYPE_SCALAR || (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                             a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                             a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+        fail(accessor_name(prim.indices) + " is " + type_name(a.type) + " " + component_name(a.componentType) +
+             "; indices must be SCALAR UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+      corners = a.count;
+    }
+    const std::string what = prim.indices >= 0 ? " indices" : " vertices";
+    if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      if (corners < 3) fail(where + " is a triangle strip or fan with only " + str(corners) + what);
+      return {vertices, corners - 2};
+    }
+    if (corners % 3 != 0) fail(where + " has " + str(corners) + what + ", not a multiple of 3");
+    return {vertices, corners / 3};
+  }
+
+  // Lists the triangle primitives of the chosen scene with their world transforms. Totals are checked
+  // against the limits as the walk goes, from the declared counts, before any geometry is allocated.
+  std::vector<Draw> walk_scene() const {
+    std::vector<Draw> draws;
+    std::uint64_t total_vertices = 0, total_indices = 0;
+    // Node hierarchy checked: a tree walk, finite, each node once.
+    std::vector<std::pair<int, glm::dmat4>> stack;
+    for (int r : scene_roots()) stack.emplace_back(r, local_[static_cast<std::size_t>(r)]);
+    while (!stack.empty()) {
+      const auto [n, world] = stack.back();
+      stack.pop_back();
+      const auto& nd = model_.nodes[static_cast<std::size_t>(n)];
+      for (int c : nd.children) stack.emplace_back(c, world * local_[static_cast<std::size_t>(c)]);
+      if (nd.mesh < 0) continue;
+      const auto m = static_cast<std::size_t>(nd.mesh);
+      if (model_.meshes[m].primitives.empty()) fail("mesh " + str(m) + " has no primitives");
+      for (std::size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+        const int mode = model_.meshes[m].primitives[p].mode;
+        // Points and lines cast no shadows: skipped. Strips and fans are turned into triangle lists.
+        if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) continue;
+        if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            mode != TINYGLTF_MODE_TRIANGLE_FAN)
+          fail("mesh " + str(m) + " primitive " + str(p) + " has mode " + std::to_string(mode) +
+               ", which is not a glTF primitive mode");
+        const auto [vertices, triangles] = check_primitive(m, p);
+        total_vertices = saturating_add(total_vertices, vertices);
+        total_indices = saturating_add(total_indices, mul_add(3, triangles, 0).value_or(kMaxU64));
+        if (total_vertices > limits_.max_total_vertices)
+          fail("the scene has at least " + str(total_vertices) + " vertices, above the limit of " +
+               str(limits_.max_total_vertices) + " (LoadLimits::max_total_vertices)");
+        if (total_indices > limits_.max_total_indices)
+          fail("the scene has at least " + str(total_indices) + " triangle indices, above the limit of " +
+               str(limits_.max_total_indices) + " (LoadLimits::max_total_indices)");
+        draws.push_back({n, nd.mesh, static_cast<int>(p), world});
+      }
+    }
+    return draws;
+  }
+
+  // ---- 5. Accessor byte ranges.
+
+  void check_accessor_ranges() const {
+    for (std::size_t i = 0; i < model_.accessors.size(); ++i) {
+      const auto& a = model_.accessors[i];
+      if (a.bufferView < 0) continue;  // nothing stored: zeros (or sparse data, never read)
+      const auto& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+      const std::uint64_t size = element_size(a);
+      const std::uint64_t stride = view.byteStride != 0 ? view.byteStride : size;
+      // The last element starts at byteOffset + (count - 1) * stride and is `size` bytes long.
+      const auto last = mul_add(a.count - 1, stride, a.byteOffset);
+      const auto end = last ? mul_add(1, *last, size) : std::nullopt;
+      if (!end || *end > view.byteLength)
+        fail(accessor_name(static_cast<int>(i)) + " reads bytes " + str(a.byteOffset) + ".." +
+             (end ? str(*end) : "(overflow)") + " past the end of bufferView " + std::to_string(a.bufferView) + " (" +
+             str(view.byteLength) + " bytes)");
+    }
+  }
+
+  // ---- 6. Reading.
+
+  // The bytes of element k of an accessor whose range has been checked.
+  const unsigned char* element(const tinygltf::Accessor& a, std::size_t k) const {
+    const auto& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_size(a);
+    return model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset + a.byteOffset +
+           k * stride;
+  }
+
+  std::vector<glm::vec3> read_vec3(int index) const {
+    const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+    std::vector<glm::vec3> out(a.count);
+    for (std::size_t k = 0; k < a.count; ++k) {
+      float xyz[3];
+      std::memcpy(xyz, element(a, k), sizeof(xyz));
+      out[k] = glm::vec3(xyz[0], xyz[1], xyz[2]);
+    }
+    return out;
+  }
+
+  // Index values, each checked against the vertex count and the primitive-restart value glTF forbids.
+  std::vector<std::uint32_t> read_indices(int index, std::size_t vertices) const {
+    const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+    const std::size_t size = component_size(a.componentType);
+    const std::uint32_t restart = size == 1 ? 0xFFu : size == 2 ? 0xFFFFu : 0xFFFFFFFFu;
+    std::vector<std::uint32_t> out(a.count);
+    for (std::size_t k = 0; k < a.count; ++k) {
+      std::uint32_t v = 0;
+      std::memcpy(&v, element(a, k), size);  // little-endian: the low bytes
+      if (v == restart)
+        fail(accessor_name(index) + " element " + str(k) + " is " + str(v) + ", the primitive-restart value of " +
+             component_name(a.componentType) + ", which glTF forbids in indices");
+      if (v >= vertices)
+        fail(accessor_name(index) + " element " + str(k) + " is " + str(v) + ", but POSITION has only " +
+             str(vertices) + " vertices");
+      out[k] = v;
+    }
+    return out;
+  }
+
+  glm::vec3 material_color(int material) const {
+    if (material < 0) return glm::vec3(0.8f);
+    const auto& factor = model_.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
+    if (factor.size() != 4 || !std::all_of(factor.begin(), factor.end(), [](double x) { return x >= 0.0 && x <= 1.0; }))
+      fail("material " + std::to_string(material) + " baseColorFactor must be 4 numbers between 0 and 1");
+    // tinygltf fills in the default [1, 1, 1, 1] when the factor is absent and does not tell; a material
+    // with the default factor (typically a textured one) gets the lab's grey, like no material.
+    if (factor == std::vector<double>{1.0, 1.0, 1.0, 1.0}) return glm::vec3(0.8f);
+    return glm::vec3(static_cast<float>(factor[0]), static_cast<float>(factor[1]), static_cast<float>(factor[2]));
+  }
+
+  Mesh build_mesh(const Draw& d) const {
+    const auto& gmesh = model_.meshes[static_cast<std::size_t>(d.mesh)];
+    const auto& prim = gmesh.primitives[static_cast<std::size_t>(d.primitive)];
+    const auto& node = model_.nodes[static_cast<std::size_t>(d.node)];
+    const std::string where = "mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(d.primitive);
+
+    Mesh mesh;
+    mesh.name = !gmesh.name.empty() ? gmesh.name : !node.name.empty() ? node.name : "mesh " + std::to_string(d.mesh);
+    mesh.color = material_color(prim.material);
+
+    const int position = prim.attributes.at("POSITION");
+    mesh.positions = read_vec3(position);
+    for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
+      const glm::vec3& p = mesh.positions[k];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail(accessor_name(position) + " element " + str(k) + " is not finite");
+    }
+
+    std::vector<std::uint32_t> corners;
+    if (prim.indices >= 0) {
+      corners = read_indices(prim.indices, mesh.positions.size());
+    } else {
+      corners.resize(mesh.positions.size());
+      for (std::size_t k = 0; k < corners.size(); ++k) corners[k] = static_cast<std::uint32_t>(k);
+    }
+    // Strips and fans as the glTF spec defines them, with the winding of their first triangle.
+    if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (std::size_t i = 0; i + 2 < corners.size(); ++i) {
+        const std::size_t odd = i % 2;
+        mesh.indices.insert(mesh.indices.end(), {corners[i], corners[i + 1 + odd], corners[i + 2 - odd]});
+      }
+    } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      for (std::size_t i = 0; i + 2 < corners.size(); ++i)
+        mesh.indices.insert(mesh.indices.end(), {corners[i + 1], corners[i + 2], corners[0]});
+    } else {
+      mesh.indices = std::move(corners);
+    }
+
+    // Normals from the file when every one is finite and non-zero; otherwise computed from the faces.
+    if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
+      mesh.normals = read_vec3(normal->second);
+      const bool sound = std::all_of(mesh.normals.begin(), mesh.normals.end(), [](const glm::vec3& n) {
+        const float length = glm::length(n);
+        return std::isfinite(length) && length > 0.0f;
+      });
+      if (!sound) mesh.normals.clear();
+    }
+    if (mesh.normals.empty()) compute_normals(mesh);
+
+    // Skins and morph targets are ignored: the lab draws the rest pose under the node's transform.
+    transform_mesh(mesh, glm::mat4(d.world));
+    for (const glm::vec3& p : mesh.positions) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail("node " + std::to_string(d.node) + "'s transform takes " + where + " to non-finite positions");
+    }
+    return mesh;
+  }
+
+  fs::path path_;
+  LoadLimits limits_;
+  tinygltf::Model model_;
+  std::vector<std::string> roles_;  // per accessor: what uses it, for messages
+  std::vector<int> parent_;         // per node: its parent, or -1
+  std::vector<glm::dmat4> local_;   // per node: its own transform
+};
+
+}  // namespace
+
+Scene load_gltf(const std::filesystem::path& path, const LoadLimits& limits) { return Loader(path, limits).load(); }
+
+}  // namespace shadowlab
