@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "renderer/gl_objects.h"
+#include "renderer/gltf_loader.h"
 #include "renderer/renderer.h"
 #include "tests/gl_fixture.h"
 
@@ -209,6 +210,47 @@ TEST_F(ShaderErrorTest, LiveReloadKeepsTheLastGoodProgram) {
   EXPECT_TRUE(p.poll_files());
   EXPECT_TRUE(p.error().empty());
   EXPECT_EQ(p.generation(), 2);
+}
+
+}  // namespace
+}  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// Every real model in shared/assets/models loads and renders headless with shadows on screen.
+TEST_F(RendererTest, EveryAssetModelRenders) {
+  const std::filesystem::path models = std::filesystem::path(SHADOWLAB_SHARED_DIR) / "assets" / "models";
+  ASSERT_TRUE(std::filesystem::is_directory(models)) << models;
+  int rendered = 0;
+  Renderer r;
+  for (const auto& dir : std::filesystem::directory_iterator(models)) {
+    for (const auto& file : std::filesystem::directory_iterator(dir.path())) {
+      const auto ext = file.path().extension();
+      if (ext != ".gltf" && ext != ".glb") continue;
+      SCOPED_TRACE(file.path().string());
+      const Scene model = load_gltf(file.path());
+      r.set_scene(model);
+      FrameRequest req;
+      req.camera = OrbitCamera::framing(model.bounds());
+      req.width = 320;
+      req.height = 180;
+      req.gbuffer = true;
+      r.render(params, req);
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      const GBuffer g = r.read_gbuffer();
+      const auto vis = r.read_visibility();
+      std::size_t covered = 0, finite = 0;
+      for (std::size_t i = 0; i < g.covered.size(); ++i) {
+        covered += g.covered[i];
+        finite += std::isfinite(vis[i]) && vis[i] >= 0.0f && vis[i] <= 1.0f;
+      }
+      EXPECT_GT(covered, g.covered.size() / 20) << "the model fills part of the frame";
+      EXPECT_EQ(finite, vis.size()) << "visibility is finite and in [0, 1]";
+      ++rendered;
+    }
+  }
+  EXPECT_GE(rendered, 7);  // Box, BoxTextured, CornellBox, Duck (.gltf and .glb), PalmTree, Suzanne
 }
 
 }  // namespace
