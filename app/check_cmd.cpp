@@ -59,6 +59,10 @@ int run_check(const CheckOptions& options) {
   try {
     const std::vector<int> numbers = parse_lab_list(options.labs);
     if (numbers.empty()) throw std::runtime_error("no lab has a check yet");
+    for (int number : numbers) {  // a bad --set is a usage error, found before anything renders
+      ParamSet p = lab_params(*find_lab(number));
+      for (const auto& a : options.assignments) p.apply_assignment(a);
+    }
     const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
     const Scene scene = load_scene_or_default(options.scene_file);
     if (!options.out_dir.empty()) {
@@ -85,7 +89,7 @@ int run_check(const CheckOptions& options) {
         try {
           CheckContext ctx(renderer, lab, impl, scene, options.out_dir);
           ctx.assignments = options.assignments;
-          (void)ctx.params();  // a bad --set fails here, before anything is rendered
+          result.parameters = ctx.params().to_json();
           lab.check(ctx, result);
           result.images = ctx.images;
         } catch (const std::exception& e) {

@@ -22,6 +22,7 @@ nlohmann::json CheckResult::to_json() const {
   }
   nlohmann::json j = {{"lab", lab},         {"slug", slug},         {"impl", impl_name(impl)}, {"passed", passed()},
                       {"metrics", graded},  {"thresholds", thresholds}, {"seconds", seconds}};
+  j["parameters"] = parameters;
   if (!images.empty()) j["images"] = images;
   if (!error.empty()) j["error"] = error;
   return j;

@@ -35,6 +35,7 @@ struct CheckResult {
   Impl impl = Impl::Solution;
   std::vector<Criterion> criteria;
   nlohmann::json metrics = nlohmann::json::object();  // everything measured, graded or not
+  nlohmann::json parameters = nlohmann::json::object();  // the lab's parameters as graded (defaults + --set)
   std::vector<std::string> images;                   // files written under --out
   std::string error;                                 // a shader or setup failure fails the check
   double seconds = 0.0;

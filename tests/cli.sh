@@ -125,6 +125,10 @@ PY
       || fail "JSON does not record a plain failure"
     ;;
   check_bad_lab) expect_error "valid: all," "$bin" check --lab 99 ;;
+  check_bad_set)
+    expect_error "valid keys:" "$bin" check --lab 1 --set shadow.nope=1
+    "$bin" check --lab 1 --set shadow.nope=1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "a usage error must exit 2, not 1 (a failed check)"
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"
