@@ -115,39 +115,36 @@ Mesh make_sphere(const glm::vec3& center, float radius, int slices, int stacks, 
   return m;
 }
 
+namespace {
+void add_named(Scene& scene, Mesh mesh, const char* name) {
+  mesh.name = name;
+  scene.meshes.push_back(std::move(mesh));
+}
+}  // namespace
+
 Scene make_default_scene() {
   Scene s;
   s.name = "default";
-  s.meshes.push_back(make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}));
-  s.meshes.back().name = "ground";
-  s.meshes.push_back(make_box({-2.5f, 1.0f, -1.5f}, {1.0f, 1.0f, 1.0f}, {0.80f, 0.35f, 0.30f}));
-  s.meshes.back().name = "box";
-  s.meshes.push_back(make_box({2.0f, 0.6f, 2.2f}, {0.6f, 0.6f, 0.6f}, {0.30f, 0.55f, 0.80f}));
-  s.meshes.back().name = "small box";
-  s.meshes.push_back(make_sphere({1.8f, 1.2f, -1.8f}, 1.2f, 48, 24, {0.35f, 0.75f, 0.40f}));
-  s.meshes.back().name = "sphere";
+  add_named(s, make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}), "ground");
+  add_named(s, make_box({-2.5f, 1.0f, -1.5f}, {1.0f, 1.0f, 1.0f}, {0.80f, 0.35f, 0.30f}), "box");
+  add_named(s, make_box({2.0f, 0.6f, 2.2f}, {0.6f, 0.6f, 0.6f}, {0.30f, 0.55f, 0.80f}), "small box");
+  add_named(s, make_sphere({1.8f, 1.2f, -1.8f}, 1.2f, 48, 24, {0.35f, 0.75f, 0.40f}), "sphere");
   // Thin slab 0.8 above the ground: with too large a bias its shadow lifts off ("peter-panning").
-  s.meshes.push_back(make_box({-1.8f, 0.9f, 2.4f}, {1.3f, 0.06f, 0.9f}, {0.85f, 0.70f, 0.30f}));
-  s.meshes.back().name = "floating slab";
+  add_named(s, make_box({-1.8f, 0.9f, 2.4f}, {1.3f, 0.06f, 0.9f}, {0.85f, 0.70f, 0.30f}), "floating slab");
   // Thin vertical plate standing on the ground: grazing light gives acne on it and leaks under it.
-  s.meshes.push_back(make_box({0.2f, 1.1f, 0.3f}, {0.04f, 1.1f, 1.2f}, {0.70f, 0.50f, 0.80f}));
-  s.meshes.back().name = "thin plate";
+  add_named(s, make_box({0.2f, 1.1f, 0.3f}, {0.04f, 1.1f, 1.2f}, {0.70f, 0.50f, 0.80f}), "thin plate");
   return s;
 }
 
 Scene make_stacked_occluders_scene() {
   Scene s;
   s.name = "stacked";
-  s.meshes.push_back(make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}));
-  s.meshes.back().name = "receiver";
+  add_named(s, make_plane({0, 0, 0}, 6.0f, 6.0f, {0.75f, 0.75f, 0.72f}), "receiver");
   // Each occluder overlaps the one below it only in part, so the receiver sees regions shadowed by one,
   // two or three layers: where a higher occluder covers a lower one, VSM's bound leaks light.
-  s.meshes.push_back(make_box({-0.8f, 0.6f, 0.0f}, {1.2f, 0.05f, 1.2f}, {0.8f, 0.3f, 0.3f}));
-  s.meshes.back().name = "low occluder";
-  s.meshes.push_back(make_box({0.4f, 1.8f, 0.3f}, {1.2f, 0.05f, 1.2f}, {0.3f, 0.7f, 0.3f}));
-  s.meshes.back().name = "middle occluder";
-  s.meshes.push_back(make_box({0.0f, 3.4f, -0.6f}, {1.0f, 0.05f, 1.0f}, {0.3f, 0.4f, 0.8f}));
-  s.meshes.back().name = "high occluder";
+  add_named(s, make_box({-0.8f, 0.6f, 0.0f}, {1.2f, 0.05f, 1.2f}, {0.8f, 0.3f, 0.3f}), "low occluder");
+  add_named(s, make_box({0.4f, 1.8f, 0.3f}, {1.2f, 0.05f, 1.2f}, {0.3f, 0.7f, 0.3f}), "middle occluder");
+  add_named(s, make_box({0.0f, 3.4f, -0.6f}, {1.0f, 0.05f, 1.0f}, {0.3f, 0.4f, 0.8f}), "high occluder");
   return s;
 }
 

@@ -132,6 +132,23 @@ std::string explain_log(const std::string& log, const std::vector<fs::path>& fil
   return out.str();
 }
 
+// Shaders and programs report status and logs through parallel entry points; these take either pair.
+template <typename GetIv>
+bool succeeded(GLuint id, GLenum status, GetIv get_iv) {
+  GLint ok = GL_FALSE;
+  get_iv(id, status, &ok);
+  return ok == GL_TRUE;
+}
+
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint id, GetIv get_iv, GetLog get_log) {
+  GLint length = 0;
+  get_iv(id, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  get_log(id, length, nullptr, log.data());
+  return log.c_str();  // up to the terminating NUL
+}
+
 GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& desc, std::vector<fs::path>& all_files,
                        std::string& error) {
   std::vector<fs::path> files;
@@ -142,14 +159,8 @@ GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& des
   const char* text = source.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
   glCompileShader(shader.id());
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-    error = explain_log(log.c_str(), files);
+  if (!succeeded(shader.id(), GL_COMPILE_STATUS, glGetShaderiv)) {
+    error = explain_log(info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog), files);
     if (error.empty()) error = display_path(resolve(path)) + ": compile failed with no log";
     return {};
   }
@@ -186,14 +197,9 @@ ProgramBuild build_program(const ProgramDesc& desc) {
   for (const auto& s : shaders) glAttachShader(program.id(), s.id());
   glLinkProgram(program.id());
   for (const auto& s : shaders) glDetachShader(program.id(), s.id());
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    result.error = display_path(resolve(desc.fragment)) + ": link failed: " + std::string(log.c_str());
+  if (!succeeded(program.id(), GL_LINK_STATUS, glGetProgramiv)) {
+    result.error = display_path(resolve(desc.fragment)) + ": link failed: " +
+                   info_log(program.id(), glGetProgramiv, glGetProgramInfoLog);
     return result;
   }
   result.program = std::move(program);
