@@ -68,6 +68,50 @@ LightView fixed_tutorial_ortho(const glm::vec3& to_light) {
   return lv;
 }
 
+namespace {
+// Nearest and farthest distance from a point to a box, along nothing in particular: the box's distance
+// field. Near is 0 when the point is inside.
+std::pair<float, float> distance_range(const Bounds& bounds, const glm::vec3& p) {
+  const glm::vec3 outside = glm::max(glm::max(bounds.min - p, p - bounds.max), glm::vec3(0.0f));
+  float far_distance = 0.0f;
+  for (int i = 0; i < 8; ++i) far_distance = std::max(far_distance, glm::distance(bounds.corner(i), p));
+  return {glm::length(outside), far_distance};
+}
+}  // namespace
+
+LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const glm::vec3& direction, float cone_deg) {
+  auto [near_distance, far_distance] = distance_range(bounds, position);
+  far_distance = std::max(far_distance, 1e-6f);
+  // Small margins so the box's nearest and farthest points are not clipped by rounding.
+  const float far_plane = far_distance * 1.001f;
+  const float near_plane = std::max(near_distance * 0.999f, far_plane / 1000.0f);
+  const glm::mat3 basis = orthonormal_basis(-glm::normalize(direction));  // the light looks down -Z
+  LightView lv;
+  lv.view = glm::mat4(glm::transpose(basis));
+  lv.view[3] = glm::vec4(-(glm::transpose(basis) * position), 1.0f);
+  lv.projection = glm::perspective(glm::radians(2.0f * cone_deg), 1.0f, near_plane, far_plane);
+  lv.image_x = basis[0];
+  lv.image_y = basis[1];
+  lv.world_size = glm::vec2(0.0f);  // perspective: texels grow with distance
+  return lv;
+}
+
+CubeLightViews point_light_views(const Bounds& bounds, const glm::vec3& position) {
+  auto [near_distance, far_distance] = distance_range(bounds, position);
+  CubeLightViews cube;
+  cube.far_plane = std::max(far_distance, 1e-6f) * 1.001f;
+  // Six faces see every direction, so the nearest geometry may be anywhere: near cannot exceed the
+  // distance to the box, and inside the box only a small fraction of far is safe.
+  cube.near_plane = std::max(near_distance * 0.999f, cube.far_plane / 1000.0f);
+  cube.projection = glm::perspective(glm::radians(90.0f), 1.0f, cube.near_plane, cube.far_plane);
+  // GL's cube-map faces: direction and up for +X, -X, +Y, -Y, +Z, -Z (the up vectors point down on the
+  // side faces because cube maps are addressed with t growing downward).
+  const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+  for (int f = 0; f < 6; ++f) cube.view[f] = glm::lookAt(position, position + dirs[f], ups[f]);
+  return cube;
+}
+
 glm::mat4 clip_to_texture() {
   glm::mat4 m(0.5f);
   m[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);

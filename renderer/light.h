@@ -36,6 +36,22 @@ LightView fit_light_ortho(const Bounds& bounds, const glm::vec3& to_light);
 // Degenerate for a light straight down, and wasteful or clipping for scenes of another size.
 LightView fixed_tutorial_ortho(const glm::vec3& to_light);
 
+// A spot light at `position` looking along `direction` (unit) with a cone of `cone_deg` half-angle: a
+// perspective projection whose near and far planes are fitted to the scene's box (as tight as the box
+// allows: depth precision is spread between them). The light's own view of the box decides near; a
+// light inside the box gets near = far / 1000.
+LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const glm::vec3& direction, float cone_deg);
+
+// The six 90-degree views of a point light, in GL's cube-map face order (+X, -X, +Y, -Y, +Z, -Z) with
+// GL's face orientations, near and far fitted to the box as for the spot light.
+struct CubeLightViews {
+  glm::mat4 view[6];
+  glm::mat4 projection{1.0f};
+  float near_plane = 0.0f;
+  float far_plane = 0.0f;
+};
+CubeLightViews point_light_views(const Bounds& bounds, const glm::vec3& position);
+
 // Maps clip space [-1, 1] to texture space [0, 1] (the "bias matrix" of the course).
 glm::mat4 clip_to_texture();
 

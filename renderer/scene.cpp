@@ -96,9 +96,14 @@ Mesh make_sphere(const glm::vec3& center, float radius, int slices, int stacks, 
   const float pi = std::numbers::pi_v<float>;
   for (int i = 0; i <= stacks; ++i) {
     const float theta = pi * static_cast<float>(i) / static_cast<float>(stacks);
+    // sin(pi) is -8.7e-8 in float: make both poles exact points, so the mesh closes (shadow volumes
+    // need every edge shared).
+    const float ring = (i == 0 || i == stacks) ? 0.0f : std::sin(theta);
+    const float height = i == 0 ? 1.0f : i == stacks ? -1.0f : std::cos(theta);
     for (int j = 0; j <= slices; ++j) {
-      const float phi = 2.0f * pi * static_cast<float>(j) / static_cast<float>(slices);
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+      // The last column repeats the first exactly (sin(2 pi) is not 0 in float either): a closed seam.
+      const float phi = j == slices ? 0.0f : 2.0f * pi * static_cast<float>(j) / static_cast<float>(slices);
+      const glm::vec3 n(ring * std::cos(phi), height, -ring * std::sin(phi));
       m.positions.push_back(center + radius * n);
       m.normals.push_back(n);
     }

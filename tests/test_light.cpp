@@ -74,3 +74,64 @@ TEST(OrbitCamera, FramingSeesTheWholeBox) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+Bounds unit_scene() {
+  Bounds b;
+  b.extend(glm::vec3(-5, 0, -5));
+  b.extend(glm::vec3(5, 3, 5));
+  return b;
+}
+
+TEST(SpotLight, SeesItsTargetAndFitsNearFar) {
+  const glm::vec3 pos(0, 10, 0);
+  const LightView lv = fit_spot_light(unit_scene(), pos, glm::vec3(0, -1, 0), 60.0f);
+  const glm::vec4 centre = lv.view_projection() * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(centre.x / centre.w, 0.0f, 1e-5f);
+  EXPECT_NEAR(centre.y / centre.w, 0.0f, 1e-5f);
+  // Every corner of the box lies between near and far (depth inside [-1, 1]).
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = lv.view_projection() * glm::vec4(unit_scene().corner(i), 1.0f);
+    EXPECT_GT(c.w, 0.0f);
+    EXPECT_LE(std::abs(c.z / c.w), 1.0f) << i;
+  }
+  // Near is the light's distance to the box top (7, less a 0.1 % margin), not a tiny default: the top
+  // lands just inside the near plane. (Perspective depth changes by 2f/((f-n)n) ~ 0.62 per unit there.)
+  const glm::vec4 top = lv.view_projection() * glm::vec4(0, 3, 0, 1);
+  EXPECT_GT(top.z / top.w, -1.0f);
+  EXPECT_LT(top.z / top.w, -0.99f);
+}
+
+TEST(SpotLight, StraightDownAndInsideTheBoxStayFinite) {
+  for (const glm::vec3& dir : {glm::vec3(0, -1, 0), glm::vec3(0, 1, 0)}) {
+    const LightView lv = fit_spot_light(unit_scene(), glm::vec3(0, 1, 0), dir, 45.0f);
+    const glm::mat4 m = lv.view_projection();
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(m[c][r]));
+  }
+}
+
+TEST(PointLight, SixFacesCoverEveryDirectionOnce) {
+  const glm::vec3 pos(0, 1, 0);
+  const CubeLightViews cube = point_light_views(unit_scene(), pos);
+  const glm::vec3 probes[] = {{1, 0.2f, 0.1f}, {-1, 0.3f, -0.2f}, {0.1f, 1, 0.2f}, {0.2f, -1, 0.1f}, {0.3f, 0.1f, 1}, {0.1f, -0.2f, -1}};
+  for (int f = 0; f < 6; ++f) {
+    int seen_by = 0;
+    for (int g = 0; g < 6; ++g) {
+      const glm::vec4 c = cube.projection * cube.view[g] * glm::vec4(pos + probes[f], 1.0f);
+      const bool inside = c.w > 0 && std::abs(c.x) <= c.w && std::abs(c.y) <= c.w;
+      seen_by += inside;
+      if (inside) {
+        EXPECT_EQ(g, f) << "probe " << f << " seen by face " << g;
+      }
+    }
+    EXPECT_EQ(seen_by, 1) << "probe " << f;
+  }
+  EXPECT_LT(cube.near_plane, 1.0f);
+  EXPECT_GT(cube.far_plane, glm::length(glm::vec3(5, 2, 5)));
+}
+
+}  // namespace
+}  // namespace shadowlab
