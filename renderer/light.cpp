@@ -26,7 +26,13 @@ glm::mat3 orthonormal_basis(const glm::vec3& z) {
   return glm::mat3(x, y, z);
 }
 
-LightView fit_light_ortho(const Bounds& bounds, const glm::vec3& to_light) {
+LightView fit_light_ortho(const Bounds& scene_bounds, const glm::vec3& to_light) {
+  // An empty scene has no box: fit a unit box at the origin so the matrices stay finite.
+  Bounds bounds = scene_bounds;
+  if (bounds.empty()) {
+    bounds.extend(glm::vec3(-1.0f));
+    bounds.extend(glm::vec3(1.0f));
+  }
   // Computed in double: a scene 1e4 or 1e6 units from the origin loses the box's own size in float
   // rounding of C and (V - C); only the finished matrices are rounded to float.
   const glm::dvec3 lo(bounds.min), hi(bounds.max);
