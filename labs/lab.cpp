@@ -26,9 +26,13 @@ ParamSet lab_params(const Lab& lab) {
 Lab make_lab_basic_shadow_map();
 Lab make_lab_bias_tuning();
 Lab make_lab_ortho_fit();
+Lab make_lab_vsm_setup();
+Lab make_lab_light_bleeding();
+Lab make_lab_moment_blur();
 
 const std::vector<Lab>& all_labs() {
-  static const std::vector<Lab> labs = {make_lab_basic_shadow_map(), make_lab_bias_tuning(), make_lab_ortho_fit()};
+  static const std::vector<Lab> labs = {make_lab_basic_shadow_map(), make_lab_bias_tuning(), make_lab_ortho_fit(),
+                                         make_lab_vsm_setup(), make_lab_light_bleeding(), make_lab_moment_blur()};
   return labs;
 }
 

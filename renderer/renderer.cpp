@@ -6,17 +6,28 @@
 #include <stdexcept>
 
 #include "renderer/image_io.h"
+#include "renderer/moments_pass.h"
+#include "renderer/vsm_params.h"
 
 namespace shadowlab {
 
 nlohmann::json FrameStats::to_json() const {
   nlohmann::json passes_json = nlohmann::json::object();
   for (const auto& p : passes) passes_json[p.name] = p.gpu_ms;
-  return {{"gpu_ms", passes_json}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes}, {"draws", draws}};
+  return {{"gpu_ms", passes_json}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
+          {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"draws", draws}};
 }
 
-std::map<std::string, std::string> Renderer::default_includes() {
-  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"}, {"lab/visibility.glsl", "shaders/shadow/hard.glsl"}};
+std::map<std::string, std::string> Renderer::default_includes(ShadowTechnique technique) {
+  std::map<std::string, std::string> includes = {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+                                                 {"lab/visibility.glsl", "shaders/shadow/hard.glsl"}};
+  if (technique == ShadowTechnique::Moments) {
+    includes["lab/visibility.glsl"] = "shaders/vsm/visibility.glsl";
+    includes["lab/moments.glsl"] = "shaders/vsm/moments.glsl";
+    includes["lab/chebyshev.glsl"] = "shaders/vsm/chebyshev.glsl";
+    includes["lab/blur.glsl"] = "shaders/vsm/gaussian_blur.glsl";
+  }
+  return includes;
 }
 
 struct Renderer::Targets {
@@ -32,17 +43,23 @@ struct Renderer::Targets {
   GlFramebuffer view_fbo;
 };
 
+// Uniform locations of the lit pass (and of the remap view, which draws the same scene), resolved once
+// per program generation. The vsm ones are absent (-1, setting them a no-op) in depth programs.
+struct Renderer::LitUniforms {
+  int generation = -1;
+  Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
+  Uniform min_variance, bleed_delta;
+};
+
 struct Renderer::Programs {
   ReloadableProgram shadow_depth, lit, lit_gbuffer, debug_quad;
+  ReloadableProgram remap_view;  // moments technique only; empty (skipped by all()) otherwise
   // Uniform locations, resolved once per program generation.
   struct Shadow {
     int generation = -1;
     Uniform light_view_proj;
   } shadow;
-  struct Lit {
-    int generation = -1;
-    Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
-  } lit_u, lit_gbuffer_u;
+  LitUniforms lit_u, lit_gbuffer_u, remap_view_u;
   struct Quad {
     int generation = -1;
     Uniform depth_map, rect;
@@ -53,6 +70,7 @@ struct Renderer::Programs {
     f(lit);
     f(lit_gbuffer);
     f(debug_quad);
+    if (!remap_view.desc().fragment.empty()) f(remap_view);
   }
 };
 
@@ -124,38 +142,81 @@ void Renderer::set_scene(const Scene& scene) {
 }
 
 bool Renderer::set_lab(const LabHooks& hooks) {
-  auto includes = default_includes();
+  const bool moments = hooks.technique == ShadowTechnique::Moments;
+  auto includes = default_includes(hooks.technique);
   for (const auto& [k, v] : hooks.includes) includes[k] = v;
   Programs& p = *programs_;
   p.lit.set_desc(lit_desc(includes, false));
   p.lit_gbuffer.set_desc(lit_desc(includes, true));
+  if (moments) {
+    ProgramDesc remap = lit_desc(includes, false);
+    remap.fragment = "shaders/vsm/remap_view.frag";
+    p.remap_view.set_desc(remap);
+  }
   bool ok = true;
   p.all([&](ReloadableProgram& program) { ok = program.rebuild() && ok; });
-  if (ok) hooks_ = hooks;
+  if (moments) {
+    if (!moments_) moments_ = std::make_unique<MomentsPass>();
+    ok = moments_->set_includes({includes.begin(), includes.end()}) && ok;
+  }
+  if (ok) {
+    hooks_ = hooks;
+    if (!moments) {
+      moments_.reset();  // a depth lab keeps no moments targets or programs
+      p.remap_view = {};
+      p.remap_view_u = {};
+    }
+  }
   shadow_state_.clear();
   return ok;
 }
 
+void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f) const {
+  programs_->all(f);
+  if (moments_) moments_->for_each_program(f);
+}
+
 bool Renderer::poll_shader_files() {
   bool swapped = false;
-  programs_->all([&](ReloadableProgram& program) { swapped = program.poll_files() || swapped; });
+  for_each_program([&](ReloadableProgram& program) { swapped = program.poll_files() || swapped; });
   if (swapped) shadow_state_.clear();
   return swapped;
 }
 
 std::string Renderer::shader_error() const {
   std::string out;
-  programs_->all([&](ReloadableProgram& program) {
+  for_each_program([&](ReloadableProgram& program) {
     if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
   });
   return out;
+}
+
+namespace {
+// A vsm.* choice: the lab's value when it declares the key, else the declared default.
+std::string vsm_choice(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get_choice(key);
+  const ParamSpec spec = vsm_param_specs({key}).at(0);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+}
+}  // namespace
+
+int Renderer::shadow_map_size() const {
+  return moments_ && hooks_.technique == ShadowTechnique::Moments ? moments_->size() : targets_->shadow_size;
 }
 
 void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& request) {
   Targets& t = *targets_;
   const int size = std::stoi(params.get_choice("shadow.map_size"));
   const std::string& format = params.get_choice("shadow.depth_format");
-  if (size != t.shadow_size || format != t.depth_format) {
+  if (hooks_.technique == ShadowTechnique::Moments) {
+    // The moments pass brings its own colour texture and depth renderbuffer: no depth texture.
+    t.shadow_depth = {};
+    t.shadow_fbo = {};
+    t.shadow_size = 0;
+    t.depth_format.clear();
+    const bool blur = static_cast<int>(vsm_param(params, "vsm.blur_radius")) > 0;
+    if (moments_->ensure_targets(size, vsm_choice(params, "vsm.format"), blur)) shadow_state_.clear();
+  } else if (size != t.shadow_size || format != t.depth_format) {
     t.shadow_depth = make_texture(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
     t.shadow_fbo = GlFramebuffer::create();
     glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo.id());
@@ -217,16 +278,30 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   std::string state(reinterpret_cast<const char*>(&light_view_.view), sizeof(glm::mat4) * 1);
   state.append(reinterpret_cast<const char*>(&light_view_.projection), sizeof(glm::mat4));
   state += params.get_choice("shadow.cull") + (hooks_.shadow_cull_override ? std::to_string(hooks_.shadow_cull_override()) : "");
+  const bool moments = hooks_.technique == ShadowTechnique::Moments;
+  if (moments) {
+    // The blur overwrites the moments it read (ping-pong back into A), so its settings are inputs of
+    // the moments pass too.
+    state += "moments " + vsm_choice(params, "vsm.format");
+    state += " r" + std::to_string(vsm_param(params, "vsm.blur_radius"));
+    state += " s" + std::to_string(vsm_param(params, "vsm.blur_sigma"));
+  }
   if (state != shadow_state_) {
-    timed(timer_.id(), "shadow", stats_, [&] { shadow_pass(params); });
+    if (moments) {
+      moments_passes(params);
+    } else {
+      timed(timer_.id(), "shadow", stats_, [&] { shadow_pass(params); });
+    }
     ++stats_.shadow_passes;
     shadow_state_ = state;
   }
 
-  // 3. Lit pass from the camera, reading the shadow map.
+  // 3. Lit pass from the camera, reading the shadow map (or the moments).
   timed(timer_.id(), "lit", stats_, [&] { lit_pass(params, request); });
 
   // 4. Debug views.
+  if (moments && vsm_param(params, "vsm.show_remap") != 0.0)
+    timed(timer_.id(), "remap_view", stats_, [&] { remap_view_pass(params); });
   if (params.get_bool("view.debug_quad")) timed(timer_.id(), "debug_quad", stats_, [&] { debug_quad_pass(params); });
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -267,23 +342,52 @@ void Renderer::shadow_pass(const ParamSet& params) {
   glDisable(GL_CULL_FACE);
 }
 
+void Renderer::moments_passes(const ParamSet& params) {
+  MomentsPass& m = *moments_;
+  const int cull =
+      hooks_.shadow_cull_override ? hooks_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
+  // 2a. The moments (z, z^2 + slope term) of the nearest surface per texel.
+  timed(timer_.id(), "moments", stats_,
+        [&] { m.draw_moments(*gpu_scene_, light_view_.view_projection(), cull, stats_.draws); });
+  ++stats_.moments_passes;
+  // 2b. The separable Gaussian over the moments: X then Y. Radius 0 runs neither (and ensure_targets
+  // allocated no ping-pong texture).
+  const int radius = static_cast<int>(vsm_param(params, "vsm.blur_radius"));
+  const auto sigma = static_cast<float>(vsm_param(params, "vsm.blur_sigma"));
+  if (radius > 0) {
+    timed(timer_.id(), "blur_x", stats_, [&] { m.blur(0, radius, sigma, empty_vao_.id()); });
+    timed(timer_.id(), "blur_y", stats_, [&] { m.blur(1, radius, sigma, empty_vao_.id()); });
+    stats_.blur_passes += 2;
+  }
+}
+
+void Renderer::set_lit_uniforms(const ParamSet& params, LitUniforms& u) {
+  u.view_proj.set(camera_projection_ * camera_view_);
+  u.light_tex_matrix.set(clip_to_texture() * light_view_.view_projection());
+  u.to_light.set(to_light_);
+  u.bias_constant.set(params.get_float("shadow.bias"));
+  u.bias_slope.set(params.get_float("shadow.slope_bias"));
+  // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
+  // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
+  const float depth_range = 2.0f / std::abs(light_view_.projection[2][2]);
+  u.texel_depth.set(light_view_.world_size.x / static_cast<float>(shadow_map_size()) / depth_range);
+  u.ambient.set(params.get_float("view.ambient"));
+  const bool moments = hooks_.technique == ShadowTechnique::Moments;
+  if (moments) {
+    u.min_variance.set(static_cast<float>(vsm_param(params, "vsm.min_variance")));
+    u.bleed_delta.set(static_cast<float>(vsm_param(params, "vsm.bleed_delta")));
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, moments ? moments_->texture() : targets_->shadow_depth.id());
+  u.shadow_map.set(0);
+}
+
 void Renderer::lit_pass(const ParamSet& params, const FrameRequest& request) {
   Targets& t = *targets_;
   Programs& p = *programs_;
   ReloadableProgram& program = request.gbuffer ? p.lit_gbuffer : p.lit;
-  Programs::Lit& u = request.gbuffer ? p.lit_gbuffer_u : p.lit_u;
-  if (u.generation != program.generation()) {
-    const GLuint id = program.id();
-    u = {program.generation(),
-         Uniform(id, "u_view_proj"),
-         Uniform(id, "u_light_tex_matrix"),
-         Uniform(id, "u_to_light"),
-         Uniform(id, "u_bias_constant"),
-         Uniform(id, "u_bias_slope"),
-         Uniform(id, "u_texel_depth"),
-         Uniform(id, "u_ambient"),
-         Uniform(id, "u_shadow_map")};
-  }
+  LitUniforms& u = request.gbuffer ? p.lit_gbuffer_u : p.lit_u;
+  if (u.generation != program.generation()) resolve_lit_uniforms(program, u);
   glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
   const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glDrawBuffers(request.gbuffer ? 4 : 1, buffers);
@@ -298,19 +402,7 @@ void Renderer::lit_pass(const ParamSet& params, const FrameRequest& request) {
   glClear(GL_DEPTH_BUFFER_BIT);
 
   glUseProgram(program.id());
-  u.view_proj.set(camera_projection_ * camera_view_);
-  u.light_tex_matrix.set(clip_to_texture() * light_view_.view_projection());
-  u.to_light.set(to_light_);
-  u.bias_constant.set(params.get_float("shadow.bias"));
-  u.bias_slope.set(params.get_float("shadow.slope_bias"));
-  // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
-  // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
-  const float depth_range = 2.0f / std::abs(light_view_.projection[2][2]);
-  u.texel_depth.set(light_view_.world_size.x / static_cast<float>(t.shadow_size) / depth_range);
-  u.ambient.set(params.get_float("view.ambient"));
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());
-  u.shadow_map.set(0);
+  set_lit_uniforms(params, u);
   gpu_scene_->bind();
   for (const auto& range : gpu_scene_->ranges()) {
     gpu_scene_->draw(range);
@@ -318,9 +410,66 @@ void Renderer::lit_pass(const ParamSet& params, const FrameRequest& request) {
   }
 }
 
+void Renderer::resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u) {
+  const GLuint id = program.id();
+  u = {program.generation(),
+       Uniform(id, "u_view_proj"),
+       Uniform(id, "u_light_tex_matrix"),
+       Uniform(id, "u_to_light"),
+       Uniform(id, "u_bias_constant"),
+       Uniform(id, "u_bias_slope"),
+       Uniform(id, "u_texel_depth"),
+       Uniform(id, "u_ambient"),
+       Uniform(id, "u_shadow_map"),
+       Uniform(id, "u_min_variance"),
+       Uniform(id, "u_bleed_delta")};
+}
+
+void Renderer::remap_view_pass(const ParamSet& params) {
+  Targets& t = *targets_;
+  Programs& p = *programs_;
+  if (p.remap_view_u.generation != p.remap_view.generation()) resolve_lit_uniforms(p.remap_view, p.remap_view_u);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // a tint over the picture; the G-buffer stays as drawn
+  glDrawBuffers(1, &color_only);
+  glViewport(0, 0, t.width, t.height);
+  // The same vertices through the same vertex shader give the same depths: LEQUAL keeps exactly the
+  // visible surfaces.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glUseProgram(p.remap_view.id());
+  set_lit_uniforms(params, p.remap_view_u);
+  gpu_scene_->bind();
+  for (const auto& range : gpu_scene_->ranges()) {
+    gpu_scene_->draw(range);
+    ++stats_.draws;
+  }
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
+
 void Renderer::debug_quad_pass(const ParamSet&) {
   Targets& t = *targets_;
   Programs& p = *programs_;
+  if (hooks_.technique == ShadowTechnique::Moments) {
+    // Three quads along the bottom right, left to right: E[z], E[z^2] and the variance.
+    glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+    const GLenum color_only = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &color_only);
+    glDisable(GL_DEPTH_TEST);
+    const int side = t.height / 4;
+    for (int channel = 0; channel < 3; ++channel) {
+      glViewport(t.width - (3 - channel) * (side + 8), 8, side, side);
+      moments_->draw_debug_quad(channel, empty_vao_.id());
+    }
+    glEnable(GL_DEPTH_TEST);
+    glViewport(0, 0, t.width, t.height);
+    return;
+  }
   if (p.quad.generation != p.debug_quad.generation()) {
     p.quad = {p.debug_quad.generation(), Uniform(p.debug_quad.id(), "u_depth_map"), Uniform(p.debug_quad.id(), "u_rect")};
   }
@@ -402,6 +551,10 @@ GBuffer Renderer::read_gbuffer() const {
 
 std::vector<float> Renderer::read_shadow_depth(int* size) const {
   const Targets& t = *targets_;
+  if (hooks_.technique == ShadowTechnique::Moments) {
+    *size = moments_->size();
+    return moments_->read_depth();
+  }
   *size = t.shadow_size;
   std::vector<float> depth(static_cast<std::size_t>(t.shadow_size) * static_cast<std::size_t>(t.shadow_size));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shadow_fbo.id());
@@ -409,6 +562,18 @@ std::vector<float> Renderer::read_shadow_depth(int* size) const {
   glReadPixels(0, 0, t.shadow_size, t.shadow_size, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   return depth;
+}
+
+std::vector<float> Renderer::read_moments(int* size) const {
+  if (hooks_.technique != ShadowTechnique::Moments || !moments_)
+    throw std::logic_error("read_moments needs a lab with the moments technique");
+  *size = moments_->size();
+  return moments_->read_moments();
+}
+
+MomentsTargetInfo Renderer::moments_targets() const {
+  if (!moments_) return {};
+  return moments_->query_targets();
 }
 
 std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const {

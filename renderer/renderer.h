@@ -1,6 +1,8 @@
 // The one renderer, shared by the window and headless runs. A frame is, in order:
 //   scene -> light matrix -> shadow pass -> lit pass -> debug views
-// A lab switches features and parameters on (shader includes, the light fit); it never forks this.
+// A lab switches features and parameters on (shader includes, the light fit, the shadow technique); it
+// never forks this. With the moments technique (variance shadow maps) the shadow pass is the moments
+// pass, optionally followed by a separable blur (renderer/moments_pass.h).
 #pragma once
 
 #include <functional>
@@ -24,6 +26,13 @@ namespace shadowlab {
 
 using LightFit = std::function<LightView(const Bounds& bounds, const glm::vec3& to_light)>;
 
+// What the shadow pass stores: one depth per texel (depth texture, compared in the lit pass) or the
+// first two moments of depth (colour texture, filtered, read through Chebyshev's bound).
+enum class ShadowTechnique { Depth, Moments };
+
+class MomentsPass;
+struct MomentsTargetInfo;
+
 // What a lab switches on.
 struct LabHooks {
   // Virtual include name -> file, e.g. "lab/bias.glsl" -> "labs/01_bias/exercise.glsl". Names not given
@@ -32,6 +41,9 @@ struct LabHooks {
   LightFit light_fit;  // empty: fit_light_ortho
   // Front-, back- or no culling in the shadow pass, when a lab's exercise decides it (else the parameter).
   std::function<int()> shadow_cull_override;
+  // Moments: the vsm.* parameters apply (see renderer/vsm_params.h), "lab/visibility.glsl" defaults to
+  // shaders/vsm/visibility.glsl, and "lab/moments.glsl", "lab/chebyshev.glsl", "lab/blur.glsl" apply.
+  ShadowTechnique technique = ShadowTechnique::Depth;
 };
 
 struct PassTiming {
@@ -44,7 +56,9 @@ struct FrameStats {
   double cpu_ms = 0.0;
   // Counters over the renderer's lifetime, so tests can see what was skipped.
   long frames = 0;
-  long shadow_passes = 0;
+  long shadow_passes = 0;   // depth or moments passes
+  long moments_passes = 0;  // of which moments passes
+  long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map)
   long draws = 0;
   nlohmann::json to_json() const;
 };
@@ -81,8 +95,14 @@ class Renderer {
   std::vector<std::uint8_t> read_color() const;
   std::vector<float> read_visibility() const;
   GBuffer read_gbuffer() const;
-  // The shadow map's depths, bottom row first, and its side length.
+  // The shadow map's depths, bottom row first, and its side length (with the moments technique: the
+  // moments pass's depth renderbuffer).
   std::vector<float> read_shadow_depth(int* size) const;
+  // The moments texture as (E[z], E[z^2]) pairs, bottom row first (after the blur, if one ran); throws
+  // unless the lab uses the moments technique.
+  std::vector<float> read_moments(int* size) const;
+  // The moments targets' format, filtering and attachments as GL reports them.
+  MomentsTargetInfo moments_targets() const;
   // The shadow map as a picture (what the debug quad shows), RGBA8 top row first.
   std::vector<std::uint8_t> shadow_map_image(int* size) const;
 
@@ -94,20 +114,29 @@ class Renderer {
   int height() const { return height_; }
   const FrameStats& stats() const { return stats_; }
 
-  static std::map<std::string, std::string> default_includes();
+  static std::map<std::string, std::string> default_includes(ShadowTechnique technique = ShadowTechnique::Depth);
 
  private:
   struct Targets;
   struct Programs;
+  struct LitUniforms;
   void ensure_targets(const ParamSet& params, const FrameRequest& request);
   void shadow_pass(const ParamSet& params);
   void lit_pass(const ParamSet& params, const FrameRequest& request);
   void debug_quad_pass(const ParamSet& params);
+  void set_lit_uniforms(const ParamSet& params, LitUniforms& u);
+  static void resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u);
+  void moments_passes(const ParamSet& params);
+  void remap_view_pass(const ParamSet& params);
+  int shadow_map_size() const;
+  // Every program the current lab uses (the programs live behind pointers, so this is const).
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
 
   Scene scene_;
   std::unique_ptr<GpuScene> gpu_scene_;
   std::unique_ptr<Targets> targets_;
   std::unique_ptr<Programs> programs_;
+  std::unique_ptr<MomentsPass> moments_;  // only while the lab uses the moments technique
   LabHooks hooks_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   GlQuery timer_;

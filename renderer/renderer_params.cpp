@@ -1,6 +1,10 @@
 // The renderer's own parameters, declared once (CPU only, so CPU tests and tools can read them).
 #include "renderer/params.h"
 
+#include <stdexcept>
+
+#include "renderer/vsm_params.h"
+
 namespace shadowlab {
 
 std::vector<ParamSpec> renderer_param_specs() {
@@ -29,6 +33,49 @@ std::vector<ParamSpec> renderer_param_specs() {
       {"view.debug_quad", "Show shadow map", ParamKind::Bool, 1.0, 0.0, 1.0,
        "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
   };
+}
+
+std::vector<ParamSpec> vsm_param_specs() {
+  const unsigned moments = kInvalidatesShadowMap;
+  return {
+      {"vsm.format", "Moments format", ParamKind::Choice, 0.0, 0.0, 1.0,
+       "Internal format of the moments texture. RG16F halves memory and bandwidth, but stores z to only "
+       "about 5e-4 and E[z^2] - E[z]^2 cancels (often negative) in half precision.", {"RG32F", "RG16F"}, moments | kInvalidatesTargets},
+      {"vsm.min_variance", "Minimum variance", ParamKind::Float, 2e-6, 1e-7, 1e-2,
+       "Lower clamp of sigma^2 = E[z^2] - E[z]^2 in Chebyshev's bound. Float cancellation can make the difference "
+       "zero or negative on flat receivers; too large a clamp lets light through thin shadows.", {},
+       kInvalidatesNothing, true},
+      {"vsm.bleed_delta", "Light-bleeding cut (delta)", ParamKind::Float, 0.125, 0.0, 0.9,
+       "Chebyshev bounds below delta become 0 and [delta, 1] is stretched to [0, 1]: removes the light that "
+       "bleeds through stacked occluders, at the price of darker penumbrae.", {}},
+      {"vsm.show_remap", "Show where delta acts", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "Tints the pixels whose visibility the delta remap lowered: magenta, stronger where it removed more light.", {}},
+      {"vsm.blur_radius", "Blur radius (texels)", ParamKind::Int, 0.0, 0.0, 16.0,
+       "Half-width of the separable Gaussian run over the moments (X then Y). 0 runs no blur pass and allocates "
+       "no blur target.", {}, moments | kInvalidatesTargets},
+      {"vsm.blur_sigma", "Blur sigma (texels)", ParamKind::Float, 1.0, 0.25, 8.0,
+       "Standard deviation of the Gaussian weights; keep the radius near 2-3 sigma or the kernel is cut off.", {},
+       moments},
+  };
+}
+
+std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys) {
+  const std::vector<ParamSpec> all = vsm_param_specs();
+  std::vector<ParamSpec> out;
+  for (const auto& key : keys) {
+    bool found = false;
+    for (const auto& spec : all)
+      if (spec.key == key) out.push_back(spec), found = true;
+    if (!found) throw std::out_of_range("no vsm parameter " + key);
+  }
+  return out;
+}
+
+double vsm_param(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get(key);
+  for (const auto& spec : vsm_param_specs())
+    if (spec.key == key) return spec.default_value;
+  throw std::out_of_range("no vsm parameter " + key);
 }
 
 }  // namespace shadowlab

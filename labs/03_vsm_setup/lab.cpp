@@ -1,0 +1,201 @@
+// Lab 3: variance shadow maps, the setup (the course's tasks 3 and 4, and task 5's slope term).
+// Demonstrates: the shadow map as an RG32F colour attachment with linear filtering and a D24 depth
+// renderbuffer, cleared to (1, 1, 0, 0); the moments (z, z^2 + slope term) written by the shadow pass;
+// Chebyshev's bound with a minimum variance in the lit pass; debug quads of E[z], E[z^2] and sigma^2.
+// Check: read-backs of the moments against the plain depth map of the same light view, GL's own
+// report of the texture's format and filtering, and the lit result's error against the oracle.
+#include "labs/lab.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "labs/check.h"
+#include "renderer/moments_pass.h"
+#include "renderer/vsm_params.h"
+
+namespace shadowlab {
+
+namespace {
+
+constexpr const char* kExerciseMoments = "labs/03_vsm_setup/exercise_moments.glsl";
+constexpr const char* kExerciseChebyshev = "labs/03_vsm_setup/exercise_chebyshev.glsl";
+constexpr const char* kVisibility = "labs/03_vsm_setup/visibility.glsl";
+
+// The bound for E[z] against the plain depth map: both are gl_FragCoord.z of the same triangle
+// stored in 32-bit floats, so anything above float rounding means the moments pass stores something else.
+constexpr double kMaxFirstMomentError = 1e-5;
+// E[z^2] against z^2 + (1/4)(dz/dx^2 + dz/dy^2) with the derivatives taken as finite differences of
+// the depth map. Measured worst case 1.1e-7 (README); the limit is 1e-6: z^2 rounds to within 6e-8
+// (half an ulp of 1 in float32), each derivative is a difference of two depths rounded to 6e-8, and
+// the GPU's own interpolation adds a few ulps more. A missing slope term is off by 1e-7..1e-3 on
+// tilted receivers, a missing square by up to 0.25.
+constexpr double kMaxSecondMomentError = 1e-6;
+// Two finite differences on either side of a texel count as one plane (the derivative is defined)
+// when they agree this well; texels at depth edges and creases are left out of the comparison.
+constexpr double kPlanarTolerance = 2e-6;
+
+struct MomentsComparison {
+  double max_first_error = 0.0;
+  double max_second_error = 0.0;
+  std::size_t second_compared = 0;    // planar texels, where finite differences define dz/dx, dz/dy
+  std::size_t second_skipped = 0;     // depth edges and creases
+  std::size_t negative_variance = 0;  // E[z^2] - E[z]^2 < 0, in float as a shader computes it
+  double min_variance = 1e30;
+  std::size_t background = 0;        // texels nothing was drawn into
+  std::size_t background_wrong = 0;  // of which not holding the clear value (1, 1)
+  std::size_t non_finite = 0;
+};
+
+MomentsComparison compare_moments(const std::vector<float>& depth, const std::vector<float>& moments, int n) {
+  MomentsComparison c;
+  auto d = [&](int x, int y) { return static_cast<double>(depth[static_cast<std::size_t>(y) * n + x]); };
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(n) + static_cast<std::size_t>(x);
+      const float m1 = moments[2 * i], m2 = moments[2 * i + 1];
+      if (!std::isfinite(m1) || !std::isfinite(m2)) {
+        ++c.non_finite;
+        continue;
+      }
+      c.max_first_error = std::max(c.max_first_error, std::abs(static_cast<double>(m1) - d(x, y)));
+      const float variance = m2 - m1 * m1;
+      c.min_variance = std::min(c.min_variance, static_cast<double>(variance));
+      if (variance < 0.0f) ++c.negative_variance;
+      if (d(x, y) >= 1.0) {
+        ++c.background;
+        if (m1 != kMomentsClear[0] || m2 != kMomentsClear[1]) ++c.background_wrong;
+        continue;
+      }
+      if (x == 0 || y == 0 || x == n - 1 || y == n - 1) continue;
+      const double fx = d(x + 1, y) - d(x, y), bx = d(x, y) - d(x - 1, y);
+      const double fy = d(x, y + 1) - d(x, y), by = d(x, y) - d(x, y - 1);
+      const bool neighbours_drawn = d(x + 1, y) < 1.0 && d(x - 1, y) < 1.0 && d(x, y + 1) < 1.0 && d(x, y - 1) < 1.0;
+      if (!neighbours_drawn || std::abs(fx - bx) > kPlanarTolerance || std::abs(fy - by) > kPlanarTolerance) {
+        ++c.second_skipped;
+        continue;
+      }
+      const double dx = 0.5 * (fx + bx), dy = 0.5 * (fy + by);
+      const double expected = d(x, y) * d(x, y) + 0.25 * (dx * dx + dy * dy);
+      c.max_second_error = std::max(c.max_second_error, std::abs(static_cast<double>(m2) - expected));
+      ++c.second_compared;
+    }
+  }
+  return c;
+}
+
+// One frame for read-backs: the shadow passes do not depend on the camera, so a tiny view will do.
+void render_for_readback(Renderer& renderer, const Scene& scene, const ParamSet& params) {
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(scene.bounds());
+  request.width = 64;
+  request.height = 64;
+  renderer.render(params, request);
+}
+
+void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
+  ParamSet params = ctx.params();
+  params.set("view.debug_quad", 0.0);
+  // 1. The lit result against the oracle (reported: lab 4 fixes the bias and the bleeding).
+  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const auto m = ctx.measure(params, hooks, std::string("lab03_") + impl_name(ctx.impl));
+  result.metrics["oracle"] = to_json(m.metrics);
+  result.metrics["render_ms"] = m.render_ms;
+  result.metrics["oracle_ms"] = m.oracle_ms;
+
+  // 2. The plain depth map of the same light view (32-bit float depth, the same culling), then the moments.
+  Renderer& r = ctx.renderer;
+  ParamSet depth_params = params;
+  depth_params.set_from_string("shadow.depth_format", "32F");
+  LabHooks depth_hooks;
+  depth_hooks.light_fit = hooks.light_fit;
+  depth_hooks.shadow_cull_override = hooks.shadow_cull_override;
+  if (!r.set_lab(depth_hooks)) throw std::runtime_error(r.shader_error());
+  render_for_readback(r, ctx.scene(), depth_params);
+  int depth_size = 0;
+  const std::vector<float> depth = r.read_shadow_depth(&depth_size);
+  if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());
+  render_for_readback(r, ctx.scene(), params);
+  int size = 0;
+  const std::vector<float> moments = r.read_moments(&size);
+  if (size != depth_size) throw std::runtime_error("moments and depth maps differ in size");
+  const MomentsComparison c = compare_moments(depth, moments, size);
+  const MomentsTargetInfo info = r.moments_targets();
+  result.metrics["moments"] = {
+      {"size", size},
+      {"max_first_moment_error", c.max_first_error},
+      {"max_second_moment_error", c.max_second_error},
+      {"second_moment_texels_compared", c.second_compared},
+      {"second_moment_texels_skipped_at_edges", c.second_skipped},
+      {"negative_variance_texels", c.negative_variance},
+      {"min_variance", c.min_variance},
+      {"background_texels", c.background},
+      {"background_texels_not_clear_value", c.background_wrong},
+      {"non_finite_texels", c.non_finite},
+  };
+  result.metrics["targets"] = {{"internal_format", info.internal_format},
+                               {"min_filter", info.min_filter},
+                               {"mag_filter", info.mag_filter},
+                               {"depth_renderbuffer_format", info.depth_internal_format},
+                               {"color_attachment_type", info.color_attachment_type},
+                               {"depth_attachment_type", info.depth_attachment_type}};
+  auto is = [](GLint value, GLenum want) { return value == static_cast<GLint>(want) ? 1.0 : 0.0; };
+  const bool rg16 = params.get_choice("vsm.format") == "RG16F";
+  result.criteria = {
+      {"moments.non_finite_texels", static_cast<double>(c.non_finite), Criterion::kAtMost, 0, "no NaN or Inf"},
+      {"moments.max_first_moment_error", c.max_first_error, Criterion::kAtMost, rg16 ? 1e-3 : kMaxFirstMomentError,
+       rg16 ? "RG16F: half-float rounding of z in [0, 1]" : "E[z] is the plain depth: issue's 1e-5 (RG32F)"},
+      {"moments.max_second_moment_error", c.max_second_error, Criterion::kAtMost, rg16 ? 1e-3 : kMaxSecondMomentError,
+       "z^2 + slope term from finite differences; float rounding bound, see the README"},
+      {"moments.background_texels_not_clear_value", static_cast<double>(c.background_wrong), Criterion::kAtMost, 0,
+       "empty texels hold the clear value (1, 1)"},
+      {"targets.format_is_" + params.get_choice("vsm.format"), is(info.internal_format, rg16 ? GL_RG16F : GL_RG32F),
+       Criterion::kAtLeast, 1, "queried from GL"},
+      {"targets.linear_filtering", is(info.min_filter, GL_LINEAR) * is(info.mag_filter, GL_LINEAR), Criterion::kAtLeast,
+       1, "min and mag filter queried from GL"},
+      {"targets.depth_renderbuffer_d24",
+       is(info.depth_internal_format, GL_DEPTH_COMPONENT24) * is(info.depth_attachment_type, GL_RENDERBUFFER) *
+           is(info.color_attachment_type, GL_TEXTURE),
+       Criterion::kAtLeast, 1, "moments in COLOR_ATTACHMENT0, D24 renderbuffer for depth"},
+  };
+  // In half floats z^2 and z*z round differently (11-bit mantissa): negative variances are expected and
+  // only reported; the lit pass's minimum variance covers them.
+  if (!rg16)
+    result.criteria.push_back({"moments.negative_variance_texels", static_cast<double>(c.negative_variance),
+                               Criterion::kAtMost, 0, "sigma^2 = E[z^2] - E[z]^2 never negative"});
+}
+
+}  // namespace
+
+Lab make_lab_vsm_setup() {
+  Lab lab;
+  lab.number = 3;
+  lab.slug = "vsm_setup";
+  lab.title = "Variance shadow maps: setup";
+  lab.summary = "Store the moments (z, z^2) in a filterable RG32F map and light with Chebyshev's bound.";
+  lab.exercise_files = {kExerciseMoments, kExerciseChebyshev};
+  lab.solution_files = {"shaders/vsm/moments.glsl", "shaders/vsm/chebyshev.glsl"};
+  lab.params = vsm_param_specs({"vsm.format", "vsm.min_variance"});
+  lab.presets = {
+      {"no minimum variance",
+       "The smallest clamp: with the slope term in the moments, hardly anything changes (README).",
+       {{"vsm.min_variance", "1e-7"}}},
+      {"RG16F",
+       "Half floats: z is rounded to 5e-4 and E[z^2] - E[z]^2 goes negative in places (red in the variance quad).",
+       {{"vsm.format", "RG16F"}}},
+      {"grazing", "A low light: wide variance on the ground.", {{"light.elevation", "15"}}},
+  };
+  lab.hooks = [](Impl impl) {
+    LabHooks hooks;
+    hooks.technique = ShadowTechnique::Moments;
+    hooks.includes["lab/visibility.glsl"] = kVisibility;
+    if (impl == Impl::Exercise) {
+      hooks.includes["lab/moments.glsl"] = kExerciseMoments;
+      hooks.includes["lab/chebyshev.glsl"] = kExerciseChebyshev;
+    }
+    return hooks;
+  };
+  lab.check = check_vsm_setup;
+  return lab;
+}
+
+}  // namespace shadowlab

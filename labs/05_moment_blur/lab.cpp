@@ -1,0 +1,211 @@
+// Lab 5: a separable Gaussian blur of the moments (the course's task 6).
+// Demonstrates: blurring the moments rather than the lighting, two passes (X, then Y) with their own
+// shaders through a ping-pong texture, radius and sigma sliders, and that radius 0 costs nothing.
+// Check: the GPU's blurred moments against a CPU Gaussian (normalised weights, clamp to edge) for radii
+// 1, 2, 4, 8, 16; at radius 0 no blur pass runs and no blur target exists; per-pass GPU time and the
+// oracle's edge error by radius are reported.
+#include "labs/lab.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "labs/check.h"
+#include "renderer/gl_objects.h"
+#include "renderer/moments_pass.h"
+#include "renderer/vsm_params.h"
+
+namespace shadowlab {
+
+namespace {
+
+constexpr const char* kExercise = "labs/05_moment_blur/exercise.glsl";
+constexpr const char* kSolution = "shaders/vsm/gaussian_blur.glsl";  // the renderer's own blur
+
+// The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
+// about 33 * 2^-24 = 2e-6 at worst; a kernel that is not normalised, not clamped at the edge or one
+// texel off is off by 1e-3 and more near every depth edge.
+constexpr double kMaxTexelError = 1e-4;
+constexpr int kRadii[] = {1, 2, 4, 8, 16};
+// Repeats of the blurred frame for its GPU time (the median is reported).
+constexpr int kTimingRepeats = 3;
+
+// Sigma for a radius in the check: the kernel spans +-2 sigma, the usual cut-off (weights at the end
+// are e^-2 = 0.14 of the centre).
+double check_sigma(int radius) { return 0.5 * radius; }
+
+// The reference: the same separable Gaussian in double precision, X then Y, clamped to the edge.
+std::vector<double> cpu_gaussian(const std::vector<float>& rg, int n, int radius, double sigma) {
+  std::vector<double> weights(static_cast<std::size_t>(2 * radius + 1));
+  double sum = 0.0;
+  for (int i = -radius; i <= radius; ++i)
+    sum += weights[static_cast<std::size_t>(i + radius)] = std::exp(-i * i / (2.0 * sigma * sigma));
+  for (auto& w : weights) w /= sum;
+  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * 2;
+  std::vector<double> in(rg.begin(), rg.end()), tmp(count, 0.0), out(count, 0.0);
+  auto pass = [&](const std::vector<double>& src, std::vector<double>& dst, int dx, int dy) {
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        for (int c = 0; c < 2; ++c) {
+          double acc = 0.0;
+          for (int i = -radius; i <= radius; ++i) {
+            const int sx = std::clamp(x + i * dx, 0, n - 1), sy = std::clamp(y + i * dy, 0, n - 1);
+            acc += weights[static_cast<std::size_t>(i + radius)] * src[(static_cast<std::size_t>(sy) * n + sx) * 2 + c];
+          }
+          dst[(static_cast<std::size_t>(y) * n + x) * 2 + c] = acc;
+        }
+  };
+  pass(in, tmp, 1, 0);
+  pass(tmp, out, 0, 1);
+  return out;
+}
+
+double pass_ms(const FrameStats& stats, const std::string& name) {
+  for (const auto& p : stats.passes)
+    if (p.name == name) return p.gpu_ms;
+  return -1.0;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+void check_moment_blur(CheckContext& ctx, CheckResult& result) {
+  ParamSet params = ctx.params();
+  params.set("view.debug_quad", 0.0);
+  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  Renderer& r = ctx.renderer;
+
+  // 1. The lit result at the lab's settings, and the oracle's edge error by radius (reported).
+  nlohmann::json by_radius = nlohmann::json::array();
+  const auto out_dir = ctx.out_dir;
+  for (int radius : {0, 1, 2, 4, 8, 16}) {
+    ParamSet p = params;
+    p.set("vsm.blur_radius", radius);
+    if (radius > 0) p.set("vsm.blur_sigma", check_sigma(radius));
+    ctx.out_dir = radius == 0 || radius == 4 ? out_dir : std::filesystem::path{};
+    const auto m = ctx.measure(p, hooks, "lab05_radius" + std::to_string(radius) + "_" + impl_name(ctx.impl));
+    by_radius.push_back({{"radius", radius},
+                         {"sigma", radius > 0 ? check_sigma(radius) : 0.0},
+                         {"mae_edge", m.metrics.mae_edge},
+                         {"mae_interior", m.metrics.mae_interior},
+                         {"acne_rate_all", m.metrics.acne_rate_all},
+                         {"leak_rate_all", m.metrics.leak_rate_all},
+                         {"bleeding_rate", m.metrics.bleeding_rate}});
+  }
+  ctx.out_dir = out_dir;
+  result.metrics["oracle_by_radius"] = by_radius;
+
+  // 2. Radius 0: no blur pass runs, no blur target is allocated (the renderer's counters and GL's count).
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(ctx.scene().bounds());
+  request.width = 64;
+  request.height = 64;
+  ParamSet p0 = params;
+  p0.set("vsm.blur_radius", 0);
+  if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());
+  const long blur_before = r.stats().blur_passes;
+  r.render(p0, request);
+  const long blur_at_zero = r.stats().blur_passes - blur_before;
+  const int textures_at_zero = live_gl_objects(GlKind::Texture);
+  const bool target_at_zero = r.moments_targets().blur_target;
+  int n = 0;
+  const std::vector<float> raw = r.read_moments(&n);
+
+  // 3. Each radius: the GPU's blurred moments against the CPU reference, and the passes' GPU time.
+  nlohmann::json radii = nlohmann::json::array();
+  double worst = 0.0;
+  long blur_passes_run = 0;
+  int extra_textures = 0;
+  for (int radius : kRadii) {
+    ParamSet p = params;
+    p.set("vsm.blur_radius", radius);
+    p.set("vsm.blur_sigma", check_sigma(radius));
+    std::vector<double> ms_x, ms_y;
+    for (int k = 0; k < kTimingRepeats; ++k) {
+      if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());  // forces the passes to run again
+      const long before = r.stats().blur_passes;
+      r.render(p, request);
+      blur_passes_run += r.stats().blur_passes - before;
+      ms_x.push_back(pass_ms(r.stats(), "blur_x"));
+      ms_y.push_back(pass_ms(r.stats(), "blur_y"));
+    }
+    extra_textures = std::max(extra_textures, live_gl_objects(GlKind::Texture) - textures_at_zero);
+    int size = 0;
+    const std::vector<float> gpu = r.read_moments(&size);
+    const std::vector<double> cpu = cpu_gaussian(raw, n, radius, check_sigma(radius));
+    double max_error = 0.0;
+    std::size_t non_finite = 0;
+    for (std::size_t i = 0; i < gpu.size(); ++i) {
+      if (!std::isfinite(gpu[i])) {
+        ++non_finite;
+        max_error = 1e30;
+        continue;
+      }
+      max_error = std::max(max_error, std::abs(static_cast<double>(gpu[i]) - cpu[i]));
+    }
+    worst = std::max(worst, max_error);
+    radii.push_back({{"radius", radius},
+                     {"sigma", check_sigma(radius)},
+                     {"max_texel_error", max_error},
+                     {"non_finite", non_finite},
+                     {"gpu_ms_blur_x", median(ms_x)},
+                     {"gpu_ms_blur_y", median(ms_y)}});
+    result.criteria.push_back({"radius" + std::to_string(radius) + ".max_texel_error", max_error, Criterion::kAtMost,
+                               kMaxTexelError, "CPU Gaussian, normalised, clamp to edge: issue's 1e-4"});
+  }
+  result.metrics["blur"] = {{"map_size", n}, {"format", params.get_choice("vsm.format")}, {"radii", radii}};
+  result.metrics["radius0"] = {
+      {"blur_passes", blur_at_zero}, {"blur_target", target_at_zero}, {"extra_textures_when_blurring", extra_textures}};
+  result.criteria.push_back({"radius0.blur_passes_run", static_cast<double>(blur_at_zero), Criterion::kAtMost, 0,
+                             "radius 0 runs no blur pass (FrameStats counter)"});
+  result.criteria.push_back({"radius0.blur_target_allocated", target_at_zero ? 1.0 : 0.0, Criterion::kAtMost, 0,
+                             "radius 0 allocates no ping-pong texture"});
+  result.criteria.push_back({"blur.passes_per_blurred_map",
+                             static_cast<double>(blur_passes_run) / (std::size(kRadii) * kTimingRepeats),
+                             Criterion::kAtLeast, 2, "X and Y: two passes per blurred shadow map"});
+}
+
+}  // namespace
+
+Lab make_lab_moment_blur() {
+  Lab lab;
+  lab.number = 5;
+  lab.slug = "moment_blur";
+  lab.title = "VSM: Gaussian blur of the moments";
+  lab.summary = "Blur the moments in two separable passes (X, then Y) for soft, alias-free shadow edges.";
+  lab.exercise_files = {kExercise};
+  lab.solution_files = {kSolution};
+  lab.params =
+      vsm_param_specs({"vsm.format", "vsm.min_variance", "vsm.bleed_delta", "vsm.blur_radius", "vsm.blur_sigma"});
+  for (auto& spec : lab.params) {
+    if (spec.key == "vsm.blur_radius") spec.default_value = 4.0;
+    if (spec.key == "vsm.blur_sigma") spec.default_value = 2.0;
+  }
+  ParamSet base(renderer_param_specs());
+  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  bias.default_value = 0.0005;  // lab 4's
+  slope.default_value = 0.0;
+  lab.params.push_back(bias);
+  lab.params.push_back(slope);
+  lab.presets = {
+      {"no blur", "Radius 0: no blur pass runs; edges show the map's texels.", {{"vsm.blur_radius", "0"}}},
+      {"soft",
+       "Radius 8, sigma 4: wide penumbrae (and more light bleeding).",
+       {{"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}}},
+      {"cut-off kernel",
+       "Radius 2 with sigma 8: a box filter in disguise.",
+       {{"vsm.blur_radius", "2"}, {"vsm.blur_sigma", "8"}}},
+  };
+  lab.hooks = [](Impl impl) {
+    LabHooks hooks;
+    hooks.technique = ShadowTechnique::Moments;
+    if (impl == Impl::Exercise) hooks.includes["lab/blur.glsl"] = kExercise;
+    return hooks;
+  };
+  lab.check = check_moment_blur;
+  return lab;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,100 @@
+// Variance shadow maps on the GPU: the moments pass (the course's task 3) and the separable Gaussian
+// blur of the moments (task 6), with the render targets they own.
+//
+//   moments pass:  scene from the light -> moments texture A (RG32F/RG16F, linear) + D24 renderbuffer
+//   blur X:        A -> ping-pong texture B      (only while the blur radius is > 0)
+//   blur Y:        B -> A                        (the lit pass always reads A)
+//
+// The blur writes back into A, so A holds blurred moments afterwards: a change of the blur settings
+// redraws the moments too (4-14 ms) rather than keeping a third full-size texture for raw moments.
+// The renderer creates this pass only for labs that switch the moments technique on, so the depth
+// labs allocate none of it; the ping-pong texture exists only while a blur runs.
+#pragma once
+
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "renderer/gl_objects.h"
+#include "renderer/gpu_mesh.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+// What GL reports about the targets, queried each time (so checks test GL, not our bookkeeping).
+struct MomentsTargetInfo {
+  int size = 0;
+  GLint internal_format = 0;  // GL_RG32F or GL_RG16F
+  GLint min_filter = 0, mag_filter = 0, wrap_s = 0, wrap_t = 0;
+  GLint color_attachment_type = 0;  // GL_TEXTURE on COLOR_ATTACHMENT0
+  GLint depth_attachment_type = 0;  // GL_RENDERBUFFER on DEPTH_ATTACHMENT
+  GLint depth_internal_format = 0;  // the renderbuffer's: GL_DEPTH_COMPONENT24
+  bool blur_target = false;         // the ping-pong texture is allocated
+};
+
+// The clear value of the moments texture: depth 1 (the far plane) and its square, so texels nothing
+// was drawn into read as "nothing in front of anything" and light every point.
+inline constexpr float kMomentsClear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
+
+class MomentsPass {
+ public:
+  MomentsPass();
+
+  // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
+  // them; false (old programs kept) on a compile error.
+  bool set_includes(const std::map<std::string, std::filesystem::path>& includes);
+  template <typename F>
+  void for_each_program(F&& f) {
+    f(moments_);
+    f(blur_x_);
+    f(blur_y_);
+    f(debug_);
+  }
+
+  // (Re)allocates the targets for this size and format ("RG32F" or "RG16F"); the ping-pong texture
+  // only when `blur` is true, and it is freed again when false. Returns true when anything changed.
+  bool ensure_targets(int size, const std::string& format, bool blur);
+
+  // 1. The moments of the nearest surface per texel, from the light. cull: 0 none, 1 front, 2 back.
+  void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, long& draws);
+  // 2. One blur direction (0: X, A -> B; 1: Y, B -> A). Needs ensure_targets(..., blur = true).
+  void blur(int direction, int radius, float sigma, GLuint empty_vao);
+  // A debug quad of one channel (0 E[z], 1 E[z^2], 2 variance) into the bound framebuffer's viewport.
+  void draw_debug_quad(int channel, GLuint empty_vao);
+
+  GLuint texture() const { return moments_texture_.id(); }
+  GLuint framebuffer() const { return moments_fbo_.id(); }
+  int size() const { return size_; }
+  // Texture A as (E[z], E[z^2]) pairs, bottom row first.
+  std::vector<float> read_moments() const;
+  // The depth renderbuffer, bottom row first.
+  std::vector<float> read_depth() const;
+  MomentsTargetInfo query_targets() const;
+
+ private:
+  ReloadableProgram moments_, blur_x_, blur_y_, debug_;
+  struct MomentsUniforms {
+    int generation = -1;
+    Uniform light_view_proj;
+  } moments_u_;
+  struct BlurUniforms {
+    int generation = -1;
+    Uniform moments, radius, sigma;
+  } blur_x_u_, blur_y_u_;
+  struct DebugUniforms {
+    int generation = -1;
+    Uniform moments, channel;
+  } debug_u_;
+
+  int size_ = 0;
+  std::string format_;
+  GlTexture moments_texture_;  // A
+  GlRenderbuffer depth_;       // the depth test while the moments are drawn
+  GlFramebuffer moments_fbo_;
+  GlTexture blur_texture_;  // B, the ping-pong target
+  GlFramebuffer blur_fbo_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,11 @@
+#version 330 core
+// Moments pass (variance shadow maps): instead of letting the depth test store one depth per texel,
+// write the first two moments of the depth distribution into a colour attachment (RG32F or RG16F).
+// Colour can be filtered linearly and blurred, a depth buffer cannot: that is the point of VSM. The
+// depth test still runs, against the pass's own depth renderbuffer, so each texel keeps the nearest
+// surface. What the moments are is "lab/moments.glsl"'s job (lab 3).
+#include "lab/moments.glsl"
+
+layout(location = 0) out vec2 o_moments;
+
+void main() { o_moments = shadow_moments(gl_FragCoord.z); }

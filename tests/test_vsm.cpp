@@ -1,0 +1,283 @@
+// Headless GL tests of variance shadow maps (labs 3-5): the moments targets exist only for labs that
+// use them, the moments and blur passes run only when their inputs change, radius 0 blurs nothing and
+// allocates nothing, no NaN or Inf reaches the moments or the lit output, the remap view tints only
+// where the remap acts, and each lab's check passes with its solution and fails with its exercise.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "labs/check.h"
+#include "labs/lab.h"
+#include "renderer/gl_objects.h"
+#include "renderer/moments_pass.h"
+#include "renderer/renderer.h"
+#include "renderer/vsm_params.h"
+#include "tests/gl_fixture.h"
+
+namespace shadowlab {
+namespace {
+
+class VsmTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    for (const auto& spec : vsm_param_specs()) params.declare(spec);
+    params.apply_assignment("view.debug_quad=false");
+  }
+  static LabHooks moments_hooks() {
+    LabHooks hooks;
+    hooks.technique = ShadowTechnique::Moments;
+    return hooks;
+  }
+  FrameRequest request(bool gbuffer = false, int width = 320, int height = 180) const {
+    FrameRequest req;
+    req.camera = OrbitCamera::framing(scene.bounds());
+    req.width = width;
+    req.height = height;
+    req.gbuffer = gbuffer;
+    return req;
+  }
+  Scene scene = make_default_scene();
+  ParamSet params{renderer_param_specs()};
+};
+
+std::size_t count_non_finite(const std::vector<float>& values) {
+  std::size_t n = 0;
+  for (float v : values) n += !std::isfinite(v);
+  return n;
+}
+
+TEST_F(VsmTest, MomentsTargetsExistOnlyWhileALabUsesThem) {
+  Renderer r;
+  r.set_scene(scene);
+  r.render(params, request());
+  EXPECT_EQ(r.moments_targets().size, 0) << "a depth lab allocates no moments texture";
+  const int depth_textures = live_gl_objects(GlKind::Texture);
+
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  r.render(params, request());
+  const MomentsTargetInfo info = r.moments_targets();
+  EXPECT_EQ(info.size, 1024);
+  EXPECT_EQ(info.internal_format, GL_RG32F);
+  EXPECT_EQ(info.min_filter, GL_LINEAR);
+  EXPECT_EQ(info.mag_filter, GL_LINEAR);
+  EXPECT_EQ(info.depth_internal_format, GL_DEPTH_COMPONENT24);
+  EXPECT_EQ(info.depth_attachment_type, GL_RENDERBUFFER);
+  EXPECT_FALSE(info.blur_target);
+  // The moments texture replaces the depth texture: the same number of textures.
+  EXPECT_EQ(live_gl_objects(GlKind::Texture), depth_textures);
+  EXPECT_EQ(r.stats().moments_passes, 1);
+
+  params.apply_assignment("vsm.format=RG16F");
+  r.render(params, request());
+  EXPECT_EQ(r.moments_targets().internal_format, GL_RG16F);
+
+  ASSERT_TRUE(r.set_lab({}));
+  r.render(params, request());
+  EXPECT_EQ(r.moments_targets().size, 0) << "back to a depth lab: the moments targets are gone";
+  EXPECT_EQ(live_gl_objects(GlKind::Texture), depth_textures);
+}
+
+TEST_F(VsmTest, RadiusZeroRunsNoBlurPassAndAllocatesNothing) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  FrameRequest req = request();
+  r.render(params, req);
+  const int textures = live_gl_objects(GlKind::Texture);
+  EXPECT_EQ(r.stats().blur_passes, 0);
+  EXPECT_FALSE(r.moments_targets().blur_target);
+
+  params.apply_assignment("vsm.blur_radius=3");
+  r.render(params, req);
+  EXPECT_EQ(r.stats().blur_passes, 2) << "X and Y";
+  EXPECT_TRUE(r.moments_targets().blur_target);
+  EXPECT_EQ(live_gl_objects(GlKind::Texture), textures + 1) << "one ping-pong texture";
+  bool timed_x = false, timed_y = false;
+  for (const auto& p : r.stats().passes) {
+    timed_x = timed_x || (p.name == "blur_x" && p.gpu_ms > 0.0);
+    timed_y = timed_y || (p.name == "blur_y" && p.gpu_ms > 0.0);
+  }
+  EXPECT_TRUE(timed_x && timed_y) << r.stats().to_json().dump();
+
+  params.apply_assignment("vsm.blur_radius=0");
+  r.render(params, req);
+  EXPECT_EQ(r.stats().blur_passes, 2) << "radius 0: no further pass";
+  EXPECT_FALSE(r.moments_targets().blur_target);
+  EXPECT_EQ(live_gl_objects(GlKind::Texture), textures) << "the ping-pong texture is freed again";
+}
+
+TEST_F(VsmTest, MomentsAndBlurRunOnlyWhenTheirInputsChange) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  params.apply_assignment("vsm.blur_radius=2");
+  FrameRequest req = request();
+  for (int i = 0; i < 4; ++i) {
+    req.camera.yaw_deg += 10.0f;  // the camera moves: nothing the shadow passes read changed
+    r.render(params, req);
+  }
+  EXPECT_EQ(r.stats().moments_passes, 1);
+  EXPECT_EQ(r.stats().blur_passes, 2);
+  params.apply_assignment("vsm.min_variance=0.0001");  // read by the lit pass only
+  params.apply_assignment("vsm.bleed_delta=0.3");
+  r.render(params, req);
+  EXPECT_EQ(r.stats().moments_passes, 1);
+  params.apply_assignment("vsm.blur_sigma=1.5");  // the blur's input: moments and blur again
+  r.render(params, req);
+  EXPECT_EQ(r.stats().moments_passes, 2);
+  EXPECT_EQ(r.stats().blur_passes, 4);
+  params.apply_assignment("light.azimuth=120");
+  r.render(params, req);
+  EXPECT_EQ(r.stats().moments_passes, 3);
+  EXPECT_EQ(r.stats().blur_passes, 6);
+  EXPECT_EQ(r.stats().shadow_passes, 3);
+}
+
+TEST_F(VsmTest, NoNanOrInfInMomentsOrLitOutput) {
+  Renderer r;
+  // Every lab's exercise and solution, both formats, with and without blur, under a steep, a grazing
+  // and a straight-down light (flat receivers with zero slope: the variance cancels to 0 there).
+  for (int number : {3, 4, 5}) {
+    const Lab& lab = *find_lab(number);
+    for (Impl impl : {Impl::Exercise, Impl::Solution}) {
+      ASSERT_TRUE(r.set_lab(lab.hooks(impl))) << r.shader_error();
+      r.set_scene(number == 4 ? make_stacked_occluders_scene() : scene);
+      for (const char* format : {"RG32F", "RG16F"}) {
+        for (const char* radius : {"0", "4"}) {
+          for (const char* elevation : {"50", "8", "90"}) {
+            params.apply_assignment(std::string("vsm.format=") + format);
+            params.apply_assignment(std::string("vsm.blur_radius=") + radius);
+            params.apply_assignment(std::string("light.elevation=") + elevation);
+            params.apply_assignment("view.debug_quad=true");
+            r.render(params, request(true, 160, 90));
+            const std::string where = "lab " + std::to_string(number) + " " + impl_name(impl) + " " + format +
+                                      " radius " + radius + " elevation " + elevation;
+            int size = 0;
+            EXPECT_EQ(count_non_finite(r.read_moments(&size)), 0u) << where;
+            const std::vector<float> vis = r.read_visibility();
+            EXPECT_EQ(count_non_finite(vis), 0u) << where;
+            for (float v : vis) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << where << ": visibility " << v;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_F(VsmTest, FirstMomentIsThePlainDepthAndBackgroundTheClearValue) {
+  Renderer r;
+  r.set_scene(scene);
+  params.apply_assignment("shadow.depth_format=32F");
+  params.apply_assignment("shadow.map_size=512");
+  r.render(params, request());
+  int n = 0;
+  const std::vector<float> depth = r.read_shadow_depth(&n);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  r.render(params, request());
+  int m = 0;
+  const std::vector<float> moments = r.read_moments(&m);
+  ASSERT_EQ(n, m);
+  std::size_t background = 0;
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    ASSERT_NEAR(moments[2 * i], depth[i], 1e-5) << "texel " << i;
+    ASSERT_GE(moments[2 * i + 1], moments[2 * i] * moments[2 * i]) << "texel " << i << ": negative variance";
+    if (depth[i] >= 1.0f) {
+      ++background;
+      ASSERT_EQ(moments[2 * i], kMomentsClear[0]);
+      ASSERT_EQ(moments[2 * i + 1], kMomentsClear[1]);
+    }
+  }
+  EXPECT_GT(background, 0u);
+  // The moments pass's own depth renderbuffer holds the same depths, to D24 precision.
+  int d = 0;
+  const std::vector<float> d24 = r.read_shadow_depth(&d);
+  ASSERT_EQ(d, n);
+  for (std::size_t i = 0; i < depth.size(); ++i) ASSERT_NEAR(d24[i], depth[i], 1.0 / (1 << 23)) << "texel " << i;
+}
+
+TEST_F(VsmTest, RemapViewTintsOnlyTheColourAndOnlyWhereTheRemapActs) {
+  scene = make_stacked_occluders_scene();
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(find_lab(4)->hooks(Impl::Solution))) << r.shader_error();
+  params.apply_assignment("vsm.blur_radius=4");
+  params.apply_assignment("vsm.blur_sigma=2");
+  r.render(params, request(true));
+  const auto plain = r.read_color();
+  const auto vis = r.read_visibility();
+  params.apply_assignment("vsm.show_remap=true");
+  r.render(params, request(true));
+  const auto tinted = r.read_color();
+  EXPECT_EQ(r.read_visibility(), vis) << "the view must not change the G-buffer";
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < plain.size(); i += 4) changed += plain[i] != tinted[i] || plain[i + 2] != tinted[i + 2];
+  EXPECT_GT(changed, 20u) << "the remap acts around the stacked occluders' shadows";
+  EXPECT_LT(changed, plain.size() / 4 / 5) << "but not over most of the picture";
+  // With delta = 0 there is nothing to show.
+  params.apply_assignment("vsm.bleed_delta=0");
+  params.apply_assignment("shadow.bias=0");
+  r.render(params, request(true));
+  params.apply_assignment("vsm.show_remap=false");
+  const auto with_view = r.read_color();
+  r.render(params, request(true));
+  EXPECT_EQ(r.read_color(), with_view);
+}
+
+TEST_F(VsmTest, NoGlObjectsAliveAfterShutdown) {
+  const int before = live_gl_objects();
+  {
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_lab(find_lab(5)->hooks(Impl::Solution))) << r.shader_error();
+    params.apply_assignment("vsm.blur_radius=2");
+    params.apply_assignment("vsm.show_remap=true");
+    params.apply_assignment("view.debug_quad=true");
+    r.render(params, request());
+    params.apply_assignment("shadow.map_size=256");
+    r.render(params, request());
+  }
+  EXPECT_EQ(live_gl_objects(), before);
+}
+
+// The checks themselves: the solution passes, the stock exercise fails (as `shadowlab check` grades).
+CheckResult run_check(int number, Impl impl, const std::vector<std::string>& assignments = {}) {
+  const Lab& lab = *find_lab(number);
+  Renderer renderer;
+  const Scene scene = make_default_scene();
+  CheckContext ctx(renderer, lab, impl, scene, {});
+  ctx.assignments = assignments;
+  CheckResult result;
+  lab.check(ctx, result);
+  return result;
+}
+
+std::string failed_criteria(const CheckResult& r) {
+  std::string out = r.error;
+  for (const auto& c : r.criteria)
+    if (!c.passed()) out += c.metric + "=" + std::to_string(c.value) + " ";
+  return out;
+}
+
+TEST_F(VsmTest, Lab3SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(3, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(3, Impl::Exercise).passed());
+}
+
+TEST_F(VsmTest, Lab4SolutionPassesExerciseAndDeltaZeroFail) {
+  const CheckResult solution = run_check(4, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(4, Impl::Exercise).passed());
+  const CheckResult no_remap = run_check(4, Impl::Solution, {"vsm.bleed_delta=0"});
+  EXPECT_FALSE(no_remap.passed()) << "delta = 0 leaves the bleeding in";
+}
+
+TEST_F(VsmTest, Lab5SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(5, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(5, Impl::Exercise).passed());
+}
+
+}  // namespace
+}  // namespace shadowlab
