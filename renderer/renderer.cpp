@@ -13,8 +13,12 @@ namespace shadowlab {
 
 nlohmann::json FrameStats::to_json() const {
   nlohmann::json passes_json = nlohmann::json::object();
-  for (const auto& p : passes) passes_json[p.name] = p.gpu_ms;
-  return {{"gpu_ms", passes_json}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
+  nlohmann::json wall_clock = nlohmann::json::array();
+  for (const auto& p : passes) {
+    passes_json[p.name] = p.gpu_ms;
+    if (p.wall_clock) wall_clock.push_back(p.name);
+  }
+  return {{"gpu_ms", passes_json}, {"gpu_ms_from_wall_clock", wall_clock}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
           {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"draws", draws}};
 }
 
@@ -109,16 +113,26 @@ void check_framebuffer(const char* what) {
   }
 }
 
-// Times one pass with a GL_TIME_ELAPSED query. The result is read at once: on llvmpipe the pass has
-// finished by then anyway, and it keeps per-pass figures exact for the benchmark.
+// Times one pass with a GL_TIME_ELAPSED query, read at once: on llvmpipe the pass has finished by then
+// anyway, and it keeps per-pass figures exact for the benchmark. A GPU time cannot exceed the wall time
+// around it; llvmpipe breaks that for the first timed pass of a new context's first frame (the query's
+// start reads as 0, giving the machine's uptime: 3.3e6 ms measured), so there the glFinish-bracketed
+// wall time is used instead (within ~0.3 ms of the query where both work, shared/NOTES.md) and the pass
+// is marked. Later frames measured clean (test PassTimesArePlausible).
 template <typename F>
 void timed(GLuint query, const char* name, FrameStats& stats, F&& pass) {
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
   glBeginQuery(GL_TIME_ELAPSED, query);
   pass();
   glEndQuery(GL_TIME_ELAPSED);
   GLuint64 ns = 0;
   glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-  stats.passes.push_back({name, static_cast<double>(ns) * 1e-6});
+  glFinish();
+  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double gpu_ms = static_cast<double>(ns) * 1e-6;
+  const bool plausible = gpu_ms <= wall_ms + 1.0;
+  stats.passes.push_back({name, plausible ? gpu_ms : wall_ms, !plausible});
 }
 
 }  // namespace

@@ -49,6 +49,7 @@ struct LabHooks {
 struct PassTiming {
   std::string name;
   double gpu_ms = 0.0;
+  bool wall_clock = false;  // the timer query was implausible; gpu_ms is the glFinish-bracketed wall time
 };
 
 struct FrameStats {

@@ -25,7 +25,9 @@ j = json.load(open(sys.argv[1]))
 for k in ("parameters", "camera", "light", "stats", "triangles"):
     assert k in j, k
 assert len(j["camera"]["view"]) == 16 and len(j["light"]["projection"]) == 16
-assert j["stats"]["gpu_ms"]["shadow"] > 0 and j["stats"]["gpu_ms"]["lit"] > 0
+gpu = j["stats"]["gpu_ms"]
+# Real figures: positive, and far below a second (a first-use timer query once gave 3.2e6 ms).
+assert 0 < gpu["shadow"] < 1000 and 0 < gpu["lit"] < 1000, gpu
 assert j["parameters"]["shadow.bias"] == 0.005
 PY
     awk -v s="$start" -v e="$end" 'BEGIN { printf "render took %.2f s\n", e - s; if (e - s > 10) exit 1 }' || fail "slower than 10 s"

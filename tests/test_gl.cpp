@@ -2,6 +2,7 @@
 // belong, follows the light, leaves no GL objects behind, and reports shader errors as file:line.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -251,6 +252,35 @@ TEST_F(RendererTest, EveryAssetModelRenders) {
     }
   }
   EXPECT_GE(rendered, 7);  // Box, BoxTextured, CornellBox, Duck (.gltf and .glb), PalmTree, Suzanne
+}
+
+}  // namespace
+}  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// Per-pass GPU times are real figures: positive, below the frame's wall time. (llvmpipe's first timer
+// query in a context reads its start as 0; the renderer then falls back to wall time and says so.)
+TEST_F(RendererTest, PassTimesArePlausible) {
+  Renderer r;
+  r.set_scene(scene);
+  FrameRequest req = request(false);
+  for (int frame = 0; frame < 3; ++frame) {
+    params.set("light.azimuth", 30.0 + 20.0 * frame);  // the shadow pass runs every frame
+    const auto start = std::chrono::steady_clock::now();
+    const FrameStats& stats = r.render(params, req);
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    double sum = 0.0;
+    for (const auto& p : stats.passes) {
+      EXPECT_GT(p.gpu_ms, 0.0) << p.name;
+      sum += p.gpu_ms;
+      if (frame > 0) {
+        EXPECT_FALSE(p.wall_clock) << p.name << " in frame " << frame << " needed the fallback";
+      }
+    }
+    EXPECT_LE(sum, wall + 1.0) << "frame " << frame;
+  }
 }
 
 }  // namespace
