@@ -54,9 +54,7 @@ OracleLight oracle_light(const Renderer& renderer) {
   light.to_light = renderer.to_light();
   light.image_x = renderer.light_view().image_x;
   light.image_y = renderer.light_view().image_y;
-  int size = 0;
-  (void)renderer.read_shadow_depth(&size);
-  light.texel_world_size = renderer.light_view().world_size.x / static_cast<float>(size);
+  light.texel_world_size = renderer.light_view().world_size.x / static_cast<float>(renderer.shadow_map_size());
   return light;
 }
 

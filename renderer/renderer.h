@@ -108,6 +108,7 @@ class Renderer {
   std::vector<std::uint8_t> shadow_map_image(int* size) const;
 
   const LightView& light_view() const { return light_view_; }
+  int shadow_map_size() const;  // texels per side of the current shadow (or moments) map
   glm::vec3 to_light() const { return to_light_; }
   glm::mat4 camera_view() const { return camera_view_; }
   glm::mat4 camera_projection() const { return camera_projection_; }
@@ -129,7 +130,6 @@ class Renderer {
   static void resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u);
   void moments_passes(const ParamSet& params);
   void remap_view_pass(const ParamSet& params);
-  int shadow_map_size() const;
   // Every program the current lab uses (the programs live behind pointers, so this is const).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
 
