@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/bench_cmd.h"
 #include "app/check_cmd.h"
 #include "app/headless.h"
 #include "app/window.h"
@@ -43,6 +44,12 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
   check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
 
+  shadowlab::BenchOptions bench;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
+  bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
+  bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
+  bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
+
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
@@ -55,6 +62,7 @@ int main(int argc, char** argv) {
 
   if (*render_cmd) return shadowlab::run_render(render);
   if (*check_cmd) return shadowlab::run_check(check);
+  if (*bench_cmd) return shadowlab::run_bench(bench);
   if (*labs_cmd) return shadowlab::run_list_labs(show_params);
   return shadowlab::run_window(window_options);
 }

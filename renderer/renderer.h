@@ -88,6 +88,9 @@ class Renderer {
   std::string shader_error() const;
 
   const FrameStats& render(const ParamSet& params, const FrameRequest& request);
+  // Makes the next frame re-run the shadow (moments, blur) passes even if nothing they read changed:
+  // for benchmarks that time whole frames.
+  void invalidate_shadow_map() { shadow_state_.clear(); }
   // Copies the last frame onto another framebuffer (0: the window), scaled to its size.
   void present(GLuint framebuffer, int width, int height) const;
 
