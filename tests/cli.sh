@@ -135,6 +135,30 @@ PY
     expect_error "valid keys:" "$bin" check --lab 1 --set shadow.nope=1
     "$bin" check --lab 1 --set shadow.nope=1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "a usage error must exit 2, not 1 (a failed check)"
     ;;
+  bench_quick)  # the issue's bound: under 3 minutes here, with the CSV, the JSON and the plot
+    start=$(date +%s)
+    "$bin" bench --quick --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err" || fail "bench failed: $(tail -3 "$tmp/err")"
+    elapsed=$(( $(date +%s) - start ))
+    [ "$elapsed" -lt 180 ] || fail "bench --quick took ${elapsed} s (limit 180)"
+    for f in bench.csv bench.json pareto.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
+    python3 - "$tmp/bench" <<'PY' || fail "bench output incomplete"
+import csv, json, sys, os
+d = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(d, "bench.csv"))))
+j = json.load(open(os.path.join(d, "bench.json")))
+assert len(rows) == len(j["points"]) >= 48, len(rows)
+assert {r["scene"] for r in rows} >= {"default", "grazing", "stacked", "palmtree"}
+for r in rows:
+    assert float(r["gpu_ms"]) > 0 and 0 <= float(r["error"]) <= 1, r
+for scene in {r["scene"] for r in rows}:  # every scene has a front, and its fastest point is on it
+    pts = [r for r in rows if r["scene"] == scene]
+    assert any(r["pareto"] == "1" for r in pts), scene
+    assert min(pts, key=lambda r: float(r["gpu_ms"]))["pareto"] == "1", scene
+s = j["skipping"]
+assert s["shadow_passes_with_skipping"] == 0 and s["shadow_passes_without_skipping"] == s["frames"], s
+PY
+    echo "bench --quick: ${elapsed} s"
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"

@@ -104,11 +104,13 @@ TEST_F(RendererTest, ShadowPassSkippedWhileTheLightStaysPut) {
   Renderer r;
   r.set_scene(scene);
   FrameRequest req = request(false);
-  for (int i = 0; i < 5; ++i) {
-    req.camera.yaw_deg += 10.0f;  // the camera orbits; the light does not move
+  req.width = 160;
+  req.height = 90;
+  for (int i = 0; i < 100; ++i) {
+    req.camera.yaw_deg += 3.6f;  // the camera orbits once; the light does not move
     r.render(params, req);
   }
-  EXPECT_EQ(r.stats().frames, 5);
+  EXPECT_EQ(r.stats().frames, 100);
   EXPECT_EQ(r.stats().shadow_passes, 1);
   params.apply_assignment("light.azimuth=100");
   r.render(params, req);
