@@ -65,11 +65,17 @@ int run_check(const CheckOptions& options) {
     }
     const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
     const Scene scene = load_scene_or_default(options.scene_file);
-    if (!options.out_dir.empty()) {
-      std::error_code ec;
-      fs::create_directories(options.out_dir, ec);
-      if (ec || !fs::is_directory(options.out_dir))
-        throw std::runtime_error(options.out_dir + ": cannot create the output folder");
+    if (!options.out_dir.empty()) make_output_dir(options.out_dir);
+    // The JSON is written last; find out now, not after every lab has been graded, if it cannot be.
+    if (!options.json_file.empty()) {
+      const fs::path folder = fs::path(options.json_file).parent_path();
+      try {
+        make_output_dir(folder.empty() ? "." : folder.string());
+      } catch (const std::exception& e) {
+        throw std::runtime_error("--json " + options.json_file + ": " + e.what());
+      }
+      if (fs::is_directory(options.json_file))
+        throw std::runtime_error("--json " + options.json_file + ": is a folder; give a file name");
     }
     std::string error;
     auto context = HeadlessContext::create(&error);
@@ -105,7 +111,7 @@ int run_check(const CheckOptions& options) {
     std::printf("%s\n", all_passed ? "all checks passed" : "some checks failed");
     return all_passed ? 0 : 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab check: %s\n", e.what());
+    std::fprintf(stderr, "shadowlab check: %s\n", one_line_error(e.what()).c_str());
     return 2;
   }
 }

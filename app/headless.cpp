@@ -22,12 +22,12 @@ Scene load_scene_or_default(const std::string& path) {
   return load_gltf(path);
 }
 
-namespace {
-
-nlohmann::json matrix_json(const glm::mat4& m) {
-  // Column-major, as GL and GLM store it: 16 numbers.
-  const float* p = glm::value_ptr(m);
-  return std::vector<float>(p, p + 16);
+std::string one_line_error(const std::string& message) {
+  std::string m = message;
+  while (!m.empty() && m.back() == '\n') m.pop_back();
+  const auto nl = m.find('\n');
+  if (nl == std::string::npos || m.find('\n', nl + 1) != std::string::npos) return m;
+  return m.substr(0, nl) + " " + m.substr(nl + 1);
 }
 
 void make_output_dir(const std::string& dir) {
@@ -41,12 +41,24 @@ void make_output_dir(const std::string& dir) {
   fs::remove(probe, ec);
 }
 
+namespace {
+
+nlohmann::json matrix_json(const glm::mat4& m) {
+  // Column-major, as GL and GLM store it: 16 numbers.
+  const float* p = glm::value_ptr(m);
+  return std::vector<float>(p, p + 16);
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& options) {
   try {
     const Lab* lab = find_lab(options.lab);
-    if (!lab) throw std::runtime_error("no lab " + std::to_string(options.lab) + " (see `shadowlab labs`)");
+    if (!lab) {
+      std::string valid;
+      for (const auto& l : all_labs()) valid += (valid.empty() ? "" : ", ") + std::to_string(l.number);
+      throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
+    }
     ParamSet params = lab_params(*lab);
     for (const auto& a : options.assignments) params.apply_assignment(a);
     const Scene scene = load_scene_or_default(options.scene_file);
@@ -110,7 +122,7 @@ int run_render(const RenderOptions& options) {
     }
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab render: %s\n", e.what());
+    std::fprintf(stderr, "shadowlab render: %s\n", one_line_error(e.what()).c_str());
     return 1;
   }
 }

@@ -23,6 +23,12 @@ struct RenderOptions {
 // Loads --scene or builds the default scene; throws with a message naming the file on failure.
 Scene load_scene_or_default(const std::string& path);
 
+// Creates `dir` if missing and proves it writable before anything is rendered; throws one line naming it.
+void make_output_dir(const std::string& dir);
+// Errors as one line for the terminal: "heading:\ndetail" (e.g. a shader file that cannot be read)
+// becomes "heading: detail"; longer messages (compile logs with quoted source) keep their lines.
+std::string one_line_error(const std::string& message);
+
 int run_render(const RenderOptions& options);
 int run_list_labs(bool show_params);
 

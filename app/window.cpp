@@ -19,6 +19,7 @@
 
 #include "app/headless.h"
 #include "app/panel.h"
+#include "app/settings_panel.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
@@ -93,11 +94,14 @@ struct App {
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
   double last_poll = 0.0;
+  SettingsSession settings;  // each lab's values and the user's presets, kept in the settings file
 
   void open_lab(const Lab& next) {
+    if (lab) settings.leave_lab(lab->number, params);
     lab = &next;
     check_result.reset();
     params = lab_params(next);
+    settings.open_lab(next.number, params);
     lab_text = reflow_markdown(read_file_text(next.text_path()));
     apply_hooks();
   }
@@ -172,6 +176,7 @@ void draw_panel(App& app) {
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());
     }
+    app.settings.draw_presets(app.lab->number, app.params);
   }
   if (ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) {
     const FrameStats& stats = app.renderer->stats();
@@ -272,6 +277,7 @@ int run_window(const WindowOptions& options) {
     app.renderer = std::make_unique<Renderer>();
     app.renderer->set_scene(scene);
     app.camera = OrbitCamera::framing(scene.bounds());
+    app.settings.start();  // only now: a run that failed to start never touches the settings file
     app.open_lab(*lab);
 
     int frame = 0;
@@ -292,6 +298,7 @@ int run_window(const WindowOptions& options) {
       if (glfwGetTime() - app.last_poll > 0.5) {
         app.renderer->poll_shader_files();
         app.last_poll = glfwGetTime();
+        app.settings.autosave(app.lab->number, app.params);
       }
       draw_panel(app);
 
@@ -316,8 +323,9 @@ int run_window(const WindowOptions& options) {
       glfwSwapBuffers(window);
       if (last_frame) glfwSetWindowShouldClose(window, GLFW_TRUE);
     }
+    app.settings.leave_lab(app.lab->number, app.params);  // on exit
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     exit_code = 1;
   }
   ImGui_ImplOpenGL3_Shutdown();

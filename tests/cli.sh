@@ -3,6 +3,9 @@
 set -uo pipefail
 bin="$1"; shared="$2"; case_name="$3"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+src="$(cd "$(dirname "$0")/.." && pwd)"  # the source tree: shaders/ and labs/
+# No test ever reads or writes the user's own settings file.
+export SHADOWLAB_SETTINGS="$tmp/settings.json"
 fail() { echo "FAIL: $*"; exit 1; }
 
 expect_error() {  # expect_error "message part" command...: non-zero exit, one clear line on stderr
@@ -12,6 +15,7 @@ expect_error() {  # expect_error "message part" command...: non-zero exit, one c
   grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: $(cat "$tmp/err")"
   return 0
 }
+one_line() { [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line on stderr: $(cat "$tmp/err")"; }
 
 case "$case_name" in
   render_default)
@@ -131,6 +135,56 @@ PY
       || fail "JSON does not record a plain failure"
     ;;
   check_bad_lab) expect_error "valid: all," "$bin" check --lab 99 ;;
+  bad_choices)  # a bad value names the valid ones, in both commands
+    expect_error "valid: 0, 1" "$bin" render --out "$tmp/out" --lab 42
+    expect_error "exercise" "$bin" render --out "$tmp/out" --impl nope
+    expect_error "exercise" "$bin" check --impl nope
+    expect_error "256 512 1024" "$bin" render --out "$tmp/out" --set shadow.map_size=1000
+    expect_error "valid keys:" "$bin" check --lab 1 --set shadow.bais=1
+    expect_error "not in range 16 to 8192" "$bin" render --out "$tmp/out" --width 5
+    ;;
+  check_unwritable_out)
+    touch "$tmp/file"
+    expect_error "cannot create the output folder" "$bin" check --lab 1 --out "$tmp/file/sub"; one_line
+    ;;
+  check_unwritable_json)  # refused before any lab is graded, not after
+    touch "$tmp/file"
+    expect_error "--json $tmp/file/sub/r.json" "$bin" check --lab 1 --json "$tmp/file/sub/r.json"; one_line
+    [ ! -s "$tmp/out" ] || fail "graded before refusing the --json path: $(cat "$tmp/out")"
+    mkdir "$tmp/folder"
+    expect_error "is a folder" "$bin" check --lab 1 --json "$tmp/folder"; one_line
+    ;;
+  missing_shader)  # a shader file that is not there: one line naming it, for render and check alike
+    mkdir "$tmp/data" && cp -r "$src/shaders" "$src/labs" "$tmp/data/" && rm "$tmp/data/shaders/lit.frag"
+    SHADOWLAB_DATA_DIR="$tmp/data" expect_error "shaders/lit.frag: cannot read shader file" "$bin" render --out "$tmp/render"; one_line
+    SHADOWLAB_DATA_DIR="$tmp/data" expect_error "shaders/lit.frag: cannot read shader file" "$bin" check --lab 1; one_line
+    ;;
+  headless_no_settings)  # headless commands never read or write settings, even a bad file
+    echo "not json" >"$SHADOWLAB_SETTINGS"
+    "$bin" render --out "$tmp/out" --width 64 --height 64 >/dev/null || fail "render failed"
+    [ "$(cat "$SHADOWLAB_SETTINGS")" = "not json" ] || fail "render touched the settings file"
+    ls "$tmp" | grep -q "settings.json.bad-" && fail "render moved the settings file aside"
+    ;;
+  window_settings)  # the window keeps values per lab, and a bad file is kept aside with a warning
+    command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
+    echo '{"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.0' >"$SHADOWLAB_SETTINGS"  # cut short
+    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" || fail "window run failed: $(cat "$tmp/err")"
+    grep -q "warning: .*settings.json: is not valid JSON; kept as .*settings.json.bad-" "$tmp/err" || fail "no warning: $(cat "$tmp/err")"
+    [ "$(cat "$tmp"/settings.json.bad-*)" = '{"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.0' ] || fail "backup differs"
+    python3 -c "import json,sys; j=json.load(open(sys.argv[1])); assert j['version'] == 1 and 'shadow.bias' in j['labs']['1']['params'], j" \
+      "$SHADOWLAB_SETTINGS" || fail "defaults not saved on exit"
+    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+j["labs"]["1"]["params"]["shadow.bias"] = 0.02
+j["labs"]["1"]["presets"] = {"mine": {"shadow.bias": 0.03}}
+json.dump(j, open(sys.argv[1], "w"))
+PY
+    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" || fail "second window run failed: $(cat "$tmp/err")"
+    [ ! -s "$tmp/err" ] || fail "unexpected warning: $(cat "$tmp/err")"
+    python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['labs']['1']; assert p['params']['shadow.bias'] == 0.02 and 'mine' in p['presets'], p" \
+      "$SHADOWLAB_SETTINGS" || fail "the lab's value or preset was lost"
+    ;;
   check_bad_set)
     expect_error "valid keys:" "$bin" check --lab 1 --set shadow.nope=1
     "$bin" check --lab 1 --set shadow.nope=1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "a usage error must exit 2, not 1 (a failed check)"

@@ -1,0 +1,79 @@
+// Settings that are never lost: each lab's parameter values and the user's named presets, in one JSON
+// file with a version field.
+//
+//   file      $SHADOWLAB_SETTINGS, else $XDG_CONFIG_HOME/shadowlab/settings.json, else
+//             ~/.config/shadowlab/settings.json
+//   writing   to settings.json.tmp beside it, flushed to disk, then renamed over the old file: a reader
+//             (or the next run after a crash) sees the old file or the new one, never half of one
+//   bad file  one that does not parse, has no version or a version this build does not know is moved
+//             aside to settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
+//
+// CPU only (no GL, no window), so it is tested on its own. Only the window uses it, and only after it
+// started; the headless commands never read or write settings, so their runs are reproducible.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/params.h"
+
+namespace shadowlab {
+
+constexpr int kSettingsVersion = 1;
+
+// Where settings live (see above); empty when neither SHADOWLAB_SETTINGS, XDG_CONFIG_HOME nor HOME is set.
+std::filesystem::path default_settings_path();
+
+class Settings {
+ public:
+  Settings() = default;  // no file: nothing is loaded and save() does nothing
+
+  // Reads `path`. A missing file is not an error (first run). A bad file is moved aside and warning()
+  // says so; the settings are then empty, so every lab starts from its defaults. Never throws.
+  static Settings load(const std::filesystem::path& path);
+
+  const std::filesystem::path& path() const { return path_; }
+  // Empty, or one line for stderr and the panel: what was wrong and where the old file went.
+  const std::string& warning() const { return warning_; }
+
+  // Resets `params` to its defaults (the lab's) and applies the values stored for the lab over them.
+  // Returns one message per stored value that no longer applies (an unknown key, a value out of range).
+  std::vector<std::string> apply_lab(int lab, ParamSet& params) const;
+  // Remembers the lab's current values (in memory; save() writes them).
+  void store_lab(int lab, const ParamSet& params);
+
+  // Named presets, per lab, kept in the same file. Saving under an existing name replaces it.
+  std::vector<std::string> preset_names(int lab) const;
+  void save_preset(int lab, const std::string& name, const ParamSet& params);
+  // Resets `params` to defaults and applies the preset. Throws std::invalid_argument for an unknown name.
+  std::vector<std::string> load_preset(int lab, const std::string& name, ParamSet& params) const;
+  void delete_preset(int lab, const std::string& name);
+
+  // Writes the file atomically (creating its folder). Throws std::runtime_error with one line naming
+  // the file and the reason when it cannot; the previous file is then left as it was.
+  void save() const;
+  // True when the in-memory settings differ from what was last loaded or saved.
+  bool dirty() const { return doc_ != saved_; }
+
+  const nlohmann::json& document() const { return doc_; }
+
+  // For tests: called after the temporary file is written and synced, before the rename.
+  std::function<void()> before_rename_for_tests;
+
+ private:
+  nlohmann::json& lab_entry(int lab);
+  const nlohmann::json* find_lab_entry(int lab) const;
+
+  std::filesystem::path path_;
+  std::string warning_;
+  nlohmann::json doc_ = {{"version", kSettingsVersion}, {"labs", nlohmann::json::object()}};
+  mutable nlohmann::json saved_ = doc_;
+  // False when a bad file could not be moved aside: saving would overwrite the only copy of it.
+  bool may_write_ = true;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,38 @@
+// The window's side of the settings file: per-lab values loaded when a lab opens and saved when it is
+// left, every few seconds while they change and on exit; the "Presets" row of the panel. Kept out of
+// window.cpp so the window only calls it at those points.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <string>
+
+#include "app/settings.h"
+#include "renderer/params.h"
+
+namespace shadowlab {
+
+class SettingsSession {
+ public:
+  // Loads the settings file (default_settings_path()); a warning goes to stderr and to the panel.
+  void start();
+  // Applies the lab's stored values over its defaults (`params` holds the lab's parameters).
+  void open_lab(int lab, ParamSet& params);
+  // Stores the lab's values and writes the file if anything changed. A failure is shown, never thrown.
+  void leave_lab(int lab, const ParamSet& params);
+  // leave_lab, at most every few seconds: a crash loses little, a dragged slider does not hammer the disk.
+  void autosave(int lab, const ParamSet& params);
+  // The "Presets" row: a name field, Save, and a Load list of the lab's saved presets.
+  void draw_presets(int lab, ParamSet& params);
+
+ private:
+  void save_now();
+
+  Settings settings_;
+  bool started_ = false;  // nothing is written before the window started
+  std::string message_;   // the load warning or the last save error, shown in the panel
+  std::array<char, 64> name_{};
+  std::chrono::steady_clock::time_point last_save_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace shadowlab

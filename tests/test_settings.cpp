@@ -1,0 +1,337 @@
+// Settings are never lost: round trip, bad files kept aside, a crash between write and rename, a folder
+// that cannot be written. CPU only.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "app/settings.h"
+#include "renderer/params.h"
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_all(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+std::vector<fs::path> backups_of(const fs::path& file) {
+  std::vector<fs::path> found;
+  for (const auto& e : fs::directory_iterator(file.parent_path()))
+    if (e.path().filename().string().rfind(file.filename().string() + ".bad-", 0) == 0) found.push_back(e.path());
+  return found;
+}
+
+class SettingsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::path(::testing::TempDir()) / ("shadowlab-settings-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    file = dir / "config" / "shadowlab" / "settings.json";
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::permissions(dir, fs::perms::owner_all, ec);
+    if (fs::exists(dir / "config")) fs::permissions(dir / "config" / "shadowlab", fs::perms::owner_all, ec);
+    fs::remove_all(dir, ec);
+  }
+  static ParamSet params() { return ParamSet(renderer_param_specs()); }
+
+  // Saves settings holding shadow.bias = `bias` for lab 1.
+  void save_bias(double bias) {
+    Settings s = Settings::load(file);
+    ParamSet p = params();
+    p.set("shadow.bias", bias);
+    s.store_lab(1, p);
+    s.save();
+  }
+  double loaded_bias() {
+    const Settings s = Settings::load(file);
+    EXPECT_EQ(s.warning(), "");
+    ParamSet p = params();
+    EXPECT_TRUE(s.apply_lab(1, p).empty());
+    return p.get("shadow.bias");
+  }
+
+  fs::path dir, file;
+};
+
+TEST_F(SettingsTest, RoundTripKeepsValuesPresetsAndOtherLabs) {
+  Settings s = Settings::load(file);  // first run: no file, no warning
+  EXPECT_EQ(s.warning(), "");
+  EXPECT_FALSE(s.dirty());
+  ParamSet p = params();
+  p.apply_assignment("shadow.bias=0.02");
+  p.apply_assignment("shadow.cull=front");
+  p.apply_assignment("shadow.map_size=2048");
+  s.store_lab(1, p);
+  p.apply_assignment("light.elevation=12");
+  s.save_preset(1, "grazing light", p);
+  EXPECT_TRUE(s.dirty());
+  s.save();  // creates config/shadowlab/
+  EXPECT_FALSE(s.dirty());
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+
+  const nlohmann::json on_disk = nlohmann::json::parse(read_all(file));
+  EXPECT_EQ(on_disk["version"], kSettingsVersion);
+
+  // A lab this build does not know survives a load and a save untouched.
+  nlohmann::json with_future_lab = on_disk;
+  with_future_lab["labs"]["42"] = {{"params", {{"future.knob", 3}}}};
+  write_all(file, with_future_lab.dump());
+
+  Settings again = Settings::load(file);
+  EXPECT_EQ(again.warning(), "");
+  ParamSet q = params();
+  EXPECT_TRUE(again.apply_lab(1, q).empty());
+  EXPECT_DOUBLE_EQ(q.get("shadow.bias"), 0.02);
+  EXPECT_EQ(q.get_choice("shadow.cull"), "front");
+  EXPECT_EQ(q.get_choice("shadow.map_size"), "2048");
+  EXPECT_DOUBLE_EQ(q.get("light.elevation"), params().get("light.elevation")) << "the preset's change is not the lab's";
+  EXPECT_EQ(again.preset_names(1), std::vector<std::string>{"grazing light"});
+  EXPECT_TRUE(again.load_preset(1, "grazing light", q).empty());
+  EXPECT_DOUBLE_EQ(q.get("light.elevation"), 12.0);
+
+  ParamSet other = params();
+  other.set("shadow.bias", 0.05);
+  EXPECT_TRUE(again.apply_lab(0, other).empty());
+  EXPECT_DOUBLE_EQ(other.get("shadow.bias"), params().get("shadow.bias")) << "a lab without settings starts at its defaults";
+
+  again.store_lab(0, other);
+  again.save();
+  EXPECT_EQ(nlohmann::json::parse(read_all(file))["labs"]["42"]["params"]["future.knob"], 3);
+}
+
+TEST_F(SettingsTest, PresetsAreSavedReplacedAndDeletedByName) {
+  Settings s = Settings::load(file);
+  ParamSet p = params();
+  p.set("shadow.bias", 0.01);
+  s.save_preset(2, "b", p);
+  s.save_preset(2, "a", p);
+  p.set("shadow.bias", 0.03);
+  s.save_preset(2, "b", p);  // same name: replaced
+  EXPECT_EQ(s.preset_names(2), (std::vector<std::string>{"a", "b"}));
+  EXPECT_TRUE(s.preset_names(1).empty()) << "presets are per lab";
+  ParamSet q = params();
+  s.load_preset(2, "b", q);
+  EXPECT_DOUBLE_EQ(q.get("shadow.bias"), 0.03);
+  EXPECT_THROW(s.load_preset(2, "nope", q), std::invalid_argument);
+  EXPECT_THROW(s.save_preset(2, "  ", p), std::invalid_argument);
+  s.delete_preset(2, "a");
+  EXPECT_EQ(s.preset_names(2), std::vector<std::string>{"b"});
+
+  s.save_preset(2, "bad \xff utf-8", p);  // a name that is not UTF-8 cannot block saving
+  EXPECT_NO_THROW(s.save());
+  EXPECT_EQ(Settings::load(file).preset_names(2).size(), 2u);
+}
+
+// Corrupt, empty (what a truncating crash would leave), wrong shape: each is kept aside, byte for byte,
+// with a warning naming both files, and the labs start from their defaults.
+TEST_F(SettingsTest, BadFileIsKeptAsideWithAWarningAndDefaultsAreUsed) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{\"version\": 1, \"labs\": {\"1\": {\"params\": {\"shadow.bias\": 0.0", "not valid JSON"},
+      {"", "not valid JSON"},
+      {"[1, 2]", "not a JSON object"},
+      {"{\"labs\": {}}", "no version"},
+      {"{\"version\": 1, \"labs\": []}", "not an object"},
+      {"{\"version\": 1, \"labs\": {\"1\": {\"presets\": {\"x\": 3}}}}", "preset 'x'"},
+  };
+  for (const auto& [text, reason] : cases) {
+    SCOPED_TRACE(text);
+    fs::remove_all(file.parent_path());
+    fs::create_directories(file.parent_path());
+    write_all(file, text);
+    Settings s = Settings::load(file);
+    EXPECT_NE(s.warning().find(reason), std::string::npos) << s.warning();
+    EXPECT_NE(s.warning().find("defaults are used"), std::string::npos) << s.warning();
+    EXPECT_EQ(s.warning().find('\n'), std::string::npos) << "one line";
+    const auto backups = backups_of(file);
+    ASSERT_EQ(backups.size(), 1u);
+    EXPECT_NE(s.warning().find(backups[0].string()), std::string::npos) << "says where the old file went";
+    EXPECT_EQ(read_all(backups[0]), text);
+    EXPECT_FALSE(fs::exists(file));
+
+    ParamSet p = params();
+    p.set("shadow.bias", 0.05);
+    EXPECT_TRUE(s.apply_lab(1, p).empty());
+    EXPECT_DOUBLE_EQ(p.get("shadow.bias"), params().get("shadow.bias"));
+    s.store_lab(1, p);
+    s.save();  // the next save writes a good file beside the backup
+    EXPECT_EQ(Settings::load(file).warning(), "");
+    EXPECT_EQ(backups_of(file).size(), 1u);
+  }
+}
+
+TEST_F(SettingsTest, UnknownVersionIsKeptAside) {
+  fs::create_directories(file.parent_path());
+  const std::string newer = R"({"version": 2, "labs": {"1": {"params": {"shadow.bias": 0.02}}}})";
+  write_all(file, newer);
+  Settings s = Settings::load(file);
+  EXPECT_NE(s.warning().find("has version 2; this build reads version 1"), std::string::npos) << s.warning();
+  ASSERT_EQ(backups_of(file).size(), 1u);
+  EXPECT_EQ(read_all(backups_of(file)[0]), newer);
+  ParamSet p = params();
+  s.apply_lab(1, p);
+  EXPECT_DOUBLE_EQ(p.get("shadow.bias"), params().get("shadow.bias"));
+
+  // A second bad file the same second gets a name of its own; neither backup is overwritten.
+  write_all(file, "garbage");
+  (void)Settings::load(file);
+  EXPECT_EQ(backups_of(file).size(), 2u);
+}
+
+TEST_F(SettingsTest, ValuesThatNoLongerApplyAreReportedAndTheRestApplied) {
+  fs::create_directories(file.parent_path());
+  write_all(file, R"({"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.02, "shadow.bais": 1, "light.elevation": 500}}}})");
+  const Settings s = Settings::load(file);
+  EXPECT_EQ(s.warning(), "");
+  ParamSet p = params();
+  const auto problems = s.apply_lab(1, p);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_NE(problems[0].find("settings for lab 1"), std::string::npos) << problems[0];
+  EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.02);
+  EXPECT_DOUBLE_EQ(p.get("light.elevation"), params().get("light.elevation"));
+}
+
+// The process dies (SIGKILL) after the temporary file is written and before the rename: the temporary
+// file is there, the real file is the previous one, whole, and loads; the next save goes through.
+TEST_F(SettingsTest, CrashBetweenWriteAndRenameLeavesTheOldFileIntact) {
+  save_bias(0.01);
+  const std::string before = read_all(file);
+  EXPECT_EXIT(
+      {
+        Settings s = Settings::load(file);
+        ParamSet p = params();
+        p.set("shadow.bias", 0.09);
+        s.store_lab(1, p);
+        s.before_rename_for_tests = [] { std::raise(SIGKILL); };
+        s.save();
+      },
+      ::testing::KilledBySignal(SIGKILL), "");
+  const fs::path tmp = file.string() + ".tmp";
+  ASSERT_TRUE(fs::exists(tmp)) << "the child got as far as writing the new file";
+  EXPECT_NE(read_all(tmp).find("0.09"), std::string::npos);
+  EXPECT_EQ(read_all(file), before);
+  EXPECT_DOUBLE_EQ(loaded_bias(), 0.01);
+
+  save_bias(0.03);  // the leftover temporary file does not get in the way
+  EXPECT_DOUBLE_EQ(loaded_bias(), 0.03);
+  EXPECT_FALSE(fs::exists(tmp));
+}
+
+// Runs `body` in a child process (gtest's default "fast" death tests fork, so the child sees this
+// test's files) without root's power to ignore permissions, since CI containers run tests as root; the
+// child exits 0 when every check in it passed.
+template <typename Body>
+void expect_unprivileged(Body body) {
+  EXPECT_EXIT(
+      {
+        if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) std::_Exit(3);
+        std::_Exit(body() ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+TEST_F(SettingsTest, UnwritableFolderGivesAClearErrorAndKeepsTheOldFile) {
+  save_bias(0.01);
+  const std::string before = read_all(file);
+  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  fs::permissions(dir / "config", fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  fs::permissions(file.parent_path(), fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_exec |
+                                          fs::perms::others_exec | fs::perms::group_read | fs::perms::others_read);
+  expect_unprivileged([&] {
+    Settings s = Settings::load(file);
+    ParamSet p = params();
+    p.set("shadow.bias", 0.09);
+    s.store_lab(1, p);
+    try {
+      s.save();
+    } catch (const std::runtime_error& e) {
+      const std::string m = e.what();
+      std::fprintf(stderr, "error: %s\n", m.c_str());
+      return m.find(file.string()) != std::string::npos && m.find("Permission denied") != std::string::npos &&
+             m.find('\n') == std::string::npos;
+    }
+    return false;
+  });
+  EXPECT_EQ(read_all(file), before);
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+
+  // A bad file that cannot be moved aside is left alone, and nothing is written over it.
+  write_all(file, "not json");
+  expect_unprivileged([&] {
+    Settings s = Settings::load(file);
+    std::fprintf(stderr, "warning: %s\n", s.warning().c_str());
+    if (s.warning().find("could not be moved aside") == std::string::npos) return false;
+    ParamSet p = params();
+    s.store_lab(1, p);
+    try {
+      s.save();
+    } catch (const std::runtime_error&) {
+      return true;
+    }
+    return false;
+  });
+  EXPECT_EQ(read_all(file), "not json");
+}
+
+TEST_F(SettingsTest, FolderThatCannotBeCreatedIsNamed) {
+  write_all(dir / "config", "a file where the folder should be");
+  Settings s = Settings::load(file);
+  s.store_lab(1, params());
+  try {
+    s.save();
+    FAIL() << "saved under a regular file";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot create the settings folder"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(SettingsTest, SymlinkedFileStaysASymlink) {
+  fs::create_directories(file.parent_path());
+  const fs::path real = dir / "dotfiles-settings.json";
+  save_bias(0.01);
+  fs::rename(file, real);
+  fs::create_symlink(real, file);
+  save_bias(0.04);
+  EXPECT_TRUE(fs::is_symlink(file));
+  EXPECT_DOUBLE_EQ(loaded_bias(), 0.04);
+}
+
+TEST(SettingsPath, EnvironmentDecidesWhere) {
+  auto keep = [](const char* name) {
+    const char* v = std::getenv(name);
+    return std::pair<std::string, bool>(v ? v : "", v != nullptr);
+  };
+  const auto s = keep("SHADOWLAB_SETTINGS"), x = keep("XDG_CONFIG_HOME"), h = keep("HOME");
+  ::setenv("HOME", "/home/student", 1);
+  ::unsetenv("XDG_CONFIG_HOME");
+  ::unsetenv("SHADOWLAB_SETTINGS");
+  EXPECT_EQ(default_settings_path(), fs::path("/home/student/.config/shadowlab/settings.json"));
+  ::setenv("XDG_CONFIG_HOME", "/xdg", 1);
+  EXPECT_EQ(default_settings_path(), fs::path("/xdg/shadowlab/settings.json"));
+  ::setenv("SHADOWLAB_SETTINGS", "/tmp/s.json", 1);
+  EXPECT_EQ(default_settings_path(), fs::path("/tmp/s.json"));
+  for (const auto& [name, value] : {std::pair{"SHADOWLAB_SETTINGS", s}, {"XDG_CONFIG_HOME", x}, {"HOME", h}}) {
+    if (value.second) ::setenv(name, value.first.c_str(), 1);
+    else ::unsetenv(name);
+  }
+}
+
+}  // namespace
+}  // namespace shadowlab
