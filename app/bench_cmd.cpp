@@ -16,6 +16,7 @@
 #include "app/imgui_offscreen.h"
 #include "app/plot.h"
 #include "labs/check.h"
+#include "renderer/blur_bench.h"
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
@@ -179,6 +180,15 @@ nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int fram
           {"shadow_passes_without_skipping", force_shadow}};
 }
 
+nlohmann::json blur_json(const std::vector<BlurTiming>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& b : rows)
+    out.push_back({{"method", b.method}, {"radius", b.radius}, {"sigma", b.sigma}, {"map_size", b.map_size},
+                   {"format", b.format}, {"ms_x", b.ms_x}, {"ms_y", b.ms_y}, {"ms_total", b.ms_total},
+                   {"max_abs_diff_vs_separable", b.max_abs_diff_vs_separable}, {"non_finite", b.non_finite}});
+  return out;
+}
+
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
 
 }  // namespace
@@ -200,6 +210,7 @@ int run_bench(const BenchOptions& options) {
     const std::size_t total = bench_scenes.size() * techs.size() * sizes.size();
     std::vector<BenchPoint> points;
     nlohmann::json skipping;
+    std::vector<BlurTiming> blur_rows;
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
@@ -218,6 +229,20 @@ int run_bench(const BenchOptions& options) {
       }
       std::fprintf(stderr, "\n");
       skipping = measure_skipping(renderer, bench_scenes.front().scene, options.quick ? 12 : 36);
+      // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
+      std::fprintf(stderr, "blur methods...\n");
+      const Lab& vsm = *find_lab(4);
+      ParamSet blur_params = lab_params(vsm);
+      blur_params.set_from_string("shadow.map_size", "1024");
+      renderer.set_lab(vsm.hooks(Impl::Solution));
+      renderer.set_scene(bench_scenes.front().scene);
+      FrameRequest request;
+      request.camera = OrbitCamera::framing(bench_scenes.front().scene.bounds());
+      request.width = kWidth;
+      request.height = kHeight;
+      renderer.render(blur_params, request);
+      const std::vector<int> radii = options.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16};
+      blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
     }
 
     // The Pareto front of each scene: no other technique of that scene is both faster and more exact.
@@ -256,7 +281,8 @@ int run_bench(const BenchOptions& options) {
                              {"error", "mean |visibility - truth| over all valid (light-facing) pixels"},
                              {"seconds", seconds},
                              {"points", json_points},
-                             {"skipping", skipping}};
+                             {"skipping", skipping},
+                             {"blur_methods", blur_json(blur_rows)}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     // The plot: one panel per scene, drawn with the same function as the app's panel.
@@ -281,6 +307,14 @@ int run_bench(const BenchOptions& options) {
     std::printf("steady frame with skipping: %.2f ms = %.2f x the lit pass alone (%.2f ms); without skipping %.2f ms\n",
                 skipping["with_skipping_ms"].get<double>(), skipping["ratio_to_lit_pass"].get<double>(),
                 skipping["lit_pass_ms"].get<double>(), skipping["without_skipping_ms"].get<double>());
+    for (const auto& b : blur_rows) {
+      if (b.method == "separable") continue;
+      const auto taught = std::find_if(blur_rows.begin(), blur_rows.end(), [&](const BlurTiming& t) {
+        return t.method == "separable" && t.radius == b.radius;
+      });
+      std::printf("blur r%-2d %-8s %7.2f ms = %.2fx the taught separable blur (%.2f ms), max |d| %.1e\n", b.radius,
+                  b.method.c_str(), b.ms_total, taught->ms_total / b.ms_total, taught->ms_total, b.max_abs_diff_vs_separable);
+    }
     for (const auto& [name, plot] : by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;

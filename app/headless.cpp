@@ -3,10 +3,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/imgui_offscreen.h"
+#include "app/panel_lab.h"
+#include "app/split_view.h"
+#include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
@@ -69,8 +74,10 @@ int run_render(const RenderOptions& options) {
     if (!context) throw std::runtime_error(error);
     // The renderer lives in this scope so its GL objects go before the context does.
     {
-      Renderer renderer;
       const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
+      std::optional<CheckResult> check;
+      if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene);
+      Renderer renderer;
       if (!renderer.set_lab(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
       FrameRequest request;
@@ -81,7 +88,29 @@ int run_render(const RenderOptions& options) {
       const FrameStats& stats = renderer.render(params, request);
 
       const fs::path out(options.out_dir);
-      write_png(out / "final.png", options.width, options.height, renderer.read_color());
+      std::vector<std::uint8_t> color = renderer.read_color();
+      if (options.panel) {
+        // The window's panel, drawn by the same function over the same frame.
+        const std::string text = load_lab_text(*lab);
+        PanelModel model;
+        model.lab = lab;
+        model.impl = impl;
+        model.params = &params;
+        model.stats = &stats;
+        model.triangles = scene.triangle_count();
+        model.scene_name = scene.name;
+        model.lab_text = &text;
+        model.check = check ? &*check : nullptr;
+        model.interactive = false;
+        ImGuiOffscreen offscreen(options.width, options.height);
+        color = offscreen.render(
+            [&] {
+              draw_lab_panel(model);
+              draw_pass_overlay(stats, nullptr);
+            },
+            &color);
+      }
+      write_png(out / "final.png", options.width, options.height, color);
       int map_size = 0;
       const auto map_image = renderer.shadow_map_image(&map_size);
       write_png(out / "shadow_map.png", map_size, map_size, map_image);

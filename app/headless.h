@@ -18,6 +18,10 @@ struct RenderOptions {
   std::string out_dir;
   bool buffers = false;
   std::string impl = "solution";
+  // Draw the window's panel (the same code, ImGui offscreen) over final.png, for reproducible
+  // documentation pictures; with panel_check the lab's Check runs first and its result is shown.
+  bool panel = false;
+  bool panel_check = false;
 };
 
 // Loads --scene or builds the default scene; throws with a message naming the file on failure.

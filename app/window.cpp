@@ -1,14 +1,14 @@
+// The window: one loop in ImGui's order (poll, new frame, input, panel, render, ImGui, swap). What the
+// panel shows is app/panel_lab.cpp, the split view and magnifier app/split_view.cpp, the mouse camera
+// app/camera_input.cpp, and scripted input for tests app/input_script.cpp; this file wires them up.
 #include "app/window.h"
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "renderer/gl.h"  // before GLFW, so GLFW does not include a GL header of its own
 #define GLFW_INCLUDE_NONE
@@ -17,12 +17,16 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "app/camera_input.h"
 #include "app/headless.h"
-#include "app/panel.h"
+#include "app/input_script.h"
+#include "app/panel_lab.h"
 #include "app/settings_panel.h"
+#include "app/split_view.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
+#include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/renderer.h"
 
@@ -32,36 +36,6 @@ namespace {
 
 constexpr const char* kHeadlessHint =
     "headless commands work without one: shadowlab render --out DIR, shadowlab labs (see --help)";
-
-std::string read_file_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Lab texts are Markdown hard-wrapped at 100 columns; the panel wraps by itself, so join the lines of
-// each paragraph. Headings, list items, indented code and table rows keep their own lines.
-std::string reflow_markdown(const std::string& text) {
-  std::istringstream in(text);
-  std::string out, line;
-  bool joinable = false;  // the previous line was paragraph text
-  while (std::getline(in, line)) {
-    const bool blank = line.find_first_not_of(' ') == std::string::npos;
-    const bool structural = !blank && (line[0] == '#' || line[0] == '|' || line.rfind("    ", 0) == 0 ||
-                                       line.rfind("- ", 0) == 0 || (std::isdigit(static_cast<unsigned char>(line[0])) &&
-                                                                    line.find(". ") < 4));
-    const bool continuation = !blank && !structural && line[0] == ' ';
-    if (joinable && !blank && (!structural || continuation)) {
-      out += ' ' + line.substr(line.find_first_not_of(' '));
-    } else {
-      if (!out.empty()) out += '\n';
-      out += line;
-    }
-    joinable = !blank && line[0] != '#' && line[0] != '|' && line.rfind("    ", 0) != 0;
-  }
-  return out;
-}
 
 // Creates the window with the highest core profile the driver gives, 4.6 down to 3.3.
 GLFWwindow* create_window() {
@@ -89,12 +63,19 @@ struct App {
   ParamSet params;
   OrbitCamera camera;
   std::string lab_text;
-  std::string status;  // last screenshot path or error
+  std::string status;       // last screenshot path or error
+  std::string scene_error;  // the last dropped file that could not be opened
   bool screenshot_requested = false;
+  std::string screenshot_path;  // empty: a timestamped name
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
   double last_poll = 0.0;
   SettingsSession settings;  // each lab's values and the user's presets, kept in the settings file
+  CompareState compare;
+  SplitView split;
+  Magnifier magnifier;
+  int windowed[4] = {0, 0, 1440, 860};  // position and size to return to from fullscreen
+  std::vector<std::string> dropped;     // files dropped on the window, opened at the next frame
 
   void open_lab(const Lab& next) {
     if (lab) settings.leave_lab(lab->number, params);
@@ -102,122 +83,106 @@ struct App {
     check_result.reset();
     params = lab_params(next);
     settings.open_lab(next.number, params);
-    lab_text = reflow_markdown(read_file_text(next.text_path()));
+    lab_text = load_lab_text(next);
+    if (compare.with == CompareWith::Preset) compare.preset = 0;
+    if (compare.with == CompareWith::OtherImpl && next.exercise_files.empty()) compare.with = CompareWith::Defaults;
     apply_hooks();
   }
   void apply_hooks() {
     if (!renderer->set_lab(lab->hooks(impl))) status = "shader error: the previous program keeps running";
+    rebuild_split();
+  }
+  void rebuild_split() {
+    std::string error;
+    if (!split.rebuild(*lab, impl, compare, renderer->scene(), &error)) status = "right side: shader error: " + error;
+  }
+  void open_scene(const std::string& path) {
+    try {
+      const Scene scene = load_gltf(path);
+      renderer->set_scene(scene);
+      split.set_scene(scene);
+      camera = OrbitCamera::framing(scene.bounds());
+      check_result.reset();
+      scene_error.clear();
+      status = "opened " + path + " (" + std::to_string(scene.triangle_count()) + " triangles)";
+    } catch (const std::exception& e) {
+      scene_error = "Cannot open the dropped file: " + one_line_error(e.what()) + " (the current scene stays)";
+    }
   }
 };
 
-void draw_check_result(const CheckResult& r) {
-  const ImVec4 green(0.45f, 0.85f, 0.45f, 1.0f), red(1.0f, 0.45f, 0.4f, 1.0f);
-  ImGui::TextColored(r.passed() ? green : red, "%s (%.1f s)", r.passed() ? "PASS" : "FAIL", r.seconds);
-  if (!r.error.empty()) ImGui::TextColored(red, "%s", r.error.c_str());
-  for (const auto& c : r.criteria) {
-    ImGui::TextColored(c.passed() ? green : red, "%s %s = %.4g %s %.4g", c.passed() ? "ok  " : "FAIL", c.metric.c_str(),
-                       c.value, c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.why.c_str());
+void toggle_fullscreen(App& app) {
+  if (glfwGetWindowMonitor(app.window)) {
+    glfwSetWindowMonitor(app.window, nullptr, app.windowed[0], app.windowed[1], app.windowed[2], app.windowed[3], 0);
+    return;
   }
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  if (!mode) {
+    app.status = "fullscreen: no monitor found";
+    return;
+  }
+  glfwGetWindowPos(app.window, &app.windowed[0], &app.windowed[1]);
+  glfwGetWindowSize(app.window, &app.windowed[2], &app.windowed[3]);
+  glfwSetWindowMonitor(app.window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-// Runs the lab's check in this window's GL context, with a renderer of its own (offscreen targets),
-// exactly as `shadowlab check` does headless.
-void run_check(App& app) {
-  CheckResult result;
-  result.lab = app.lab->number;
-  result.slug = app.lab->slug;
-  result.impl = app.impl;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    Renderer renderer;
-    CheckContext ctx(renderer, *app.lab, app.impl, app.renderer->scene(), {});
-    app.lab->check(ctx, result);
-  } catch (const std::exception& e) {
-    result.error = e.what();
+// Keys, unless ImGui wants the keyboard (typing in a field). ImGui 1.86 indexes keys by GLFW key codes.
+void handle_keys(App& app) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F12)) app.screenshot_requested = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen(app);
+  for (int n = 0; n <= 9; ++n) {
+    const Lab* lab = find_lab(n);
+    if (lab && lab != app.lab && ImGui::IsKeyPressed(GLFW_KEY_0 + n, false)) app.open_lab(*lab);
   }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  app.check_result = result;
+  if (ImGui::IsKeyPressed(GLFW_KEY_N, false) || ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN, false))
+    app.open_lab(*neighbour_lab(*app.lab, +1));
+  if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP, false))
+    app.open_lab(*neighbour_lab(*app.lab, -1));
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
+    app.compare.split = !app.compare.split;
+    app.rebuild_split();
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) app.compare.magnifier = !app.compare.magnifier;
 }
 
 void draw_panel(App& app) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, 700), ImGuiCond_FirstUseEver);
-  ImGui::Begin("shadowlab");
-  if (ImGui::BeginCombo("Lab", (std::to_string(app.lab->number) + "  " + app.lab->title).c_str())) {
-    for (const auto& lab : all_labs()) {
-      if (ImGui::Selectable((std::to_string(lab.number) + "  " + lab.title).c_str(), &lab == app.lab)) app.open_lab(lab);
-    }
-    ImGui::EndCombo();
+  PanelModel model;
+  model.lab = app.lab;
+  model.impl = app.impl;
+  model.params = &app.params;
+  model.stats = &app.renderer->stats();
+  model.triangles = app.renderer->scene().triangle_count();
+  model.scene_name = app.renderer->scene().name;
+  model.scene_error = app.scene_error;
+  model.lab_text = &app.lab_text;
+  model.check = app.check_result ? &*app.check_result : nullptr;
+  model.shader_error = app.renderer->shader_error();
+  model.status = app.status;
+  model.compare = &app.compare;
+  model.settings = &app.settings;
+  const PanelActions actions = draw_lab_panel(model);
+  if (actions.open_lab && actions.open_lab != app.lab) app.open_lab(*actions.open_lab);
+  if (actions.impl && *actions.impl != app.impl) {
+    app.impl = *actions.impl;
+    app.check_result.reset();
+    app.apply_hooks();
   }
-  if (!app.lab->exercise_files.empty()) {
-    int impl = app.impl == Impl::Exercise ? 0 : 1;
-    bool changed = ImGui::RadioButton("Exercise", &impl, 0);
-    ImGui::SameLine();
-    changed |= ImGui::RadioButton("Solution", &impl, 1);
-    if (changed) {
-      app.impl = impl == 0 ? Impl::Exercise : Impl::Solution;
-      app.check_result.reset();
-      app.apply_hooks();
-    }
-  }
-  if (ImGui::CollapsingHeader("Lab text", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(app.lab_text.c_str());
-    ImGui::PopTextWrapPos();
-  }
-  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-    param_widgets(app.params);
-    if (ImGui::Button("Defaults")) app.params.reset_to_defaults();
-    for (const auto& preset : app.lab->presets) {
-      ImGui::SameLine();
-      if (ImGui::Button(preset.name.c_str())) {
-        for (const auto& [key, value] : preset.values) app.params.set_from_string(key, value);
-      }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());
-    }
-    app.settings.draw_presets(app.lab->number, app.params);
-  }
-  if (ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const FrameStats& stats = app.renderer->stats();
-    for (const auto& p : stats.passes) ImGui::Text("%-12s %7.2f ms", p.name.c_str(), p.gpu_ms);
-    ImGui::Text("shadow passes run: %ld of %ld frames", stats.shadow_passes, stats.frames);
-    ImGui::Text("%zu triangles", app.renderer->scene().triangle_count());
-  }
-  const std::string error = app.renderer->shader_error();
-  if (!error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", error.c_str());
-    ImGui::PopStyleColor();
-  }
-  if (app.lab->check && ImGui::CollapsingHeader("Check", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (ImGui::Button("Check")) app.check_requested = true;
-    ImGui::SameLine();
-    ImGui::TextDisabled("same as: shadowlab check --lab %d --impl %s", app.lab->number, impl_name(app.impl));
-    if (app.check_result) draw_check_result(*app.check_result);
-  }
-  if (ImGui::Button("Screenshot (F12)")) app.screenshot_requested = true;
-  if (!app.status.empty()) ImGui::TextWrapped("%s", app.status.c_str());
-  ImGui::End();
+  if (actions.compare_changed) app.rebuild_split();
+  if (actions.check) app.check_requested = true;
+  if (actions.screenshot) app.screenshot_requested = true;
+  if (actions.fullscreen) toggle_fullscreen(app);
 }
 
-void handle_camera_input(App& app) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureMouse) return;
-  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-    app.camera.yaw_deg -= io.MouseDelta.x * 0.3f;
-    app.camera.pitch_deg = std::clamp(app.camera.pitch_deg + io.MouseDelta.y * 0.3f, -85.0f, 85.0f);
-  }
-  if (io.MouseWheel != 0.0f) app.camera.distance *= std::pow(0.9f, io.MouseWheel);
-}
-
-void save_screenshot(App& app, int width, int height, std::string path) {
+void save_screenshot(App& app, int width, int height) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   flip_rows(rgba, width, height, 4);
+  std::string path = app.screenshot_path;
   if (path.empty()) {
     char name[64];
     const std::time_t now = std::time(nullptr);
@@ -232,6 +197,83 @@ void save_screenshot(App& app, int width, int height, std::string path) {
   }
 }
 
+// One frame of the 3D view: the left (or only) side, the right side of a split, the magnifier's crop,
+// and the GPU-time line. ImGui's draw data is rendered after this.
+void render_view(App& app, int width, int height) {
+  FrameRequest request;
+  request.camera = app.camera;
+  request.width = width;
+  request.height = height;
+  app.renderer->render(app.params, request);
+  app.renderer->present(0, width, height);
+  if (app.compare.split)
+    app.split.compose(app.split.right_params(*app.lab, app.params, app.compare), request, app.compare, *app.lab, app.impl);
+  if (app.compare.magnifier) {
+    app.magnifier.capture(width, height);
+    app.magnifier.draw();
+  }
+  draw_pass_overlay(app.renderer->stats(), app.compare.split ? app.split.stats() : nullptr);
+}
+
+void drop_callback(GLFWwindow* window, int count, const char** paths) {
+  auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+  for (int i = 0; app && i < count; ++i) app->dropped.emplace_back(paths[i]);
+}
+
+void run_loop(App& app, const WindowOptions& options, InputScript& script) {
+  int frame = 0;
+  while (!glfwWindowShouldClose(app.window)) {
+    const std::string scripted_shot = script.advance(app.window, glfwGetTime());
+    if (!scripted_shot.empty()) {
+      app.screenshot_requested = true;
+      app.screenshot_path = scripted_shot;
+    }
+    glfwPollEvents();
+    for (const auto& path : app.dropped) app.open_scene(path);
+    app.dropped.clear();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(app.window, &width, &height);
+    if (width == 0 || height == 0) {  // minimised: nothing to draw
+      glfwWaitEventsTimeout(0.1);
+      continue;
+    }
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (!app.split.handle_divider(app.compare)) orbit_pan_zoom(app.camera, app.renderer->scene().bounds());
+    handle_keys(app);
+    // Students' edits to shader files reload live; checking twice a second is plenty.
+    if (glfwGetTime() - app.last_poll > 0.5) {
+      app.renderer->poll_shader_files();
+      app.split.poll_shader_files();
+      app.last_poll = glfwGetTime();
+      app.settings.autosave(app.lab->number, app.params);
+    }
+    draw_panel(app);
+    if (app.check_requested) {
+      app.check_result = run_lab_check(*app.lab, app.impl, app.renderer->scene());
+      app.check_requested = false;
+    }
+    render_view(app, width, height);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    ++frame;
+    script.frame_drawn();
+    const bool last_frame = (options.frames > 0 && frame >= options.frames) || (!script.empty() && script.finished());
+    if (last_frame && !options.screenshot.empty()) {
+      app.screenshot_requested = true;
+      app.screenshot_path = options.screenshot;
+    }
+    if (app.screenshot_requested) {
+      save_screenshot(app, width, height);
+      app.screenshot_requested = false;
+      app.screenshot_path.clear();
+    }
+    glfwSwapBuffers(app.window);
+    if (last_frame) glfwSetWindowShouldClose(app.window, GLFW_TRUE);
+  }
+}
+
 }  // namespace
 
 int run_window(const WindowOptions& options) {
@@ -240,11 +282,18 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: no lab %d (see `shadowlab labs`)\n", options.lab);
     return 2;
   }
+  std::optional<InputScript> script;
+  try {
+    script.emplace(options.script);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    return 2;
+  }
   Scene scene;
   try {
     scene = load_scene_or_default(options.scene_file);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     return 1;
   }
   if (!glfwInit()) {
@@ -279,50 +328,17 @@ int run_window(const WindowOptions& options) {
     app.camera = OrbitCamera::framing(scene.bounds());
     app.settings.start();  // only now: a run that failed to start never touches the settings file
     app.open_lab(*lab);
-
-    int frame = 0;
-    while (!glfwWindowShouldClose(window)) {
-      glfwPollEvents();
-      int width = 0, height = 0;
-      glfwGetFramebufferSize(window, &width, &height);
-      if (width == 0 || height == 0) {  // minimised: nothing to draw
-        glfwWaitEventsTimeout(0.1);
-        continue;
-      }
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      ImGui::NewFrame();
-      handle_camera_input(app);
-      if (!ImGui::GetIO().WantCaptureKeyboard && ImGui::IsKeyPressed(GLFW_KEY_F12)) app.screenshot_requested = true;  // 1.86: GLFW key codes
-      // Students' edits to shader files reload live; checking twice a second is plenty.
-      if (glfwGetTime() - app.last_poll > 0.5) {
-        app.renderer->poll_shader_files();
-        app.last_poll = glfwGetTime();
-        app.settings.autosave(app.lab->number, app.params);
-      }
-      draw_panel(app);
-
-      if (app.check_requested) {
-        run_check(app);
-        app.check_requested = false;
-      }
-      FrameRequest request;
-      request.camera = app.camera;
-      request.width = width;
-      request.height = height;
-      app.renderer->render(app.params, request);
-      app.renderer->present(0, width, height);
-      ImGui::Render();
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      ++frame;
-      const bool last_frame = options.frames > 0 && frame >= options.frames;
-      if (app.screenshot_requested || (last_frame && !options.screenshot.empty())) {
-        save_screenshot(app, width, height, last_frame ? options.screenshot : std::string());
-        app.screenshot_requested = false;
-      }
-      glfwSwapBuffers(window);
-      if (last_frame) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    glfwSetWindowUserPointer(window, &app);
+    glfwSetDropCallback(window, drop_callback);  // ImGui's backend does not use this one
+    try {
+      run_loop(app, options, *script);
+    } catch (...) {
+      glfwSetDropCallback(window, nullptr);
+      glfwSetWindowUserPointer(window, nullptr);
+      throw;
     }
+    glfwSetDropCallback(window, nullptr);
+    glfwSetWindowUserPointer(window, nullptr);
     app.settings.leave_lab(app.lab->number, app.params);  // on exit
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());

@@ -12,6 +12,9 @@ struct WindowOptions {
   // frame, panel included, to `screenshot` if given.
   int frames = 0;
   std::string screenshot;
+  // Scripted input (app/input_script.h): key presses through ImGui's GLFW callback, frames, screenshots,
+  // resizing and minimising; the window closes when it ends.
+  std::string script;
 };
 
 // Returns the process exit code. Without a display it prints one line naming the headless commands.

@@ -1,6 +1,10 @@
 #include "labs/check.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/image_io.h"
 
@@ -50,6 +54,20 @@ const Oracle& CheckContext::oracle() {
 
 OracleLight oracle_light(const Renderer& renderer) {
   OracleLight light;
+  if (renderer.light_type() != LightType::Directional) {
+    light.positional = true;
+    light.position = renderer.light_position();
+    const int size = std::max(renderer.shadow_map_size(), 1);
+    // The angle one texel spans at the map's centre: a spot's map covers 2 tan(cone) over `size` texels,
+    // each 90-degree cube face 2 tan(45 deg) = 2.
+    const float extent = renderer.light_type() == LightType::Spot
+                             ? 2.0f * std::tan(glm::radians(renderer.spot_cone_deg()))
+                             : 2.0f;
+    light.texel_angle = std::atan(extent / static_cast<float>(size));
+    light.image_x = renderer.light_view().image_x;
+    light.image_y = renderer.light_view().image_y;
+    return light;
+  }
   light.positional = false;
   light.to_light = renderer.to_light();
   light.image_x = renderer.light_view().image_x;
@@ -58,8 +76,27 @@ OracleLight oracle_light(const Renderer& renderer) {
   return light;
 }
 
+double interior_agreement(const Metrics& m) {
+  const double lit = static_cast<double>(m.interior_lit), shadowed = static_cast<double>(m.interior_shadowed);
+  if (lit + shadowed <= 0.0) return 0.0;  // nothing graded agrees with nothing
+  return 1.0 - (m.acne_rate * lit + m.leak_rate * shadowed) / (lit + shadowed);
+}
+
+OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, float near_plane, float far_plane) {
+  OrbitCamera cam;
+  const glm::vec3 d = eye - target;
+  cam.target = target;
+  cam.distance = glm::length(d);
+  cam.pitch_deg = glm::degrees(std::asin(d.y / cam.distance));
+  cam.yaw_deg = glm::degrees(std::atan2(d.x, d.z));
+  cam.near_plane = near_plane;
+  cam.far_plane = far_plane;
+  return cam;
+}
+
 CheckContext::Measurement CheckContext::measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
-                                                const Bounds* view, const BandSpec& band, int width, int height) {
+                                                const Bounds* view, const BandSpec& band, int width, int height,
+                                                const OrbitCamera* camera) {
   using clock = std::chrono::steady_clock;
   Measurement m;
   if (!renderer.set_lab(hooks)) throw std::runtime_error(renderer.shader_error());
@@ -68,14 +105,21 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const La
     uploaded_ = scene_;
   }
   FrameRequest request;
-  request.camera = OrbitCamera::framing(view ? *view : scene_->bounds());
+  request.camera = camera ? *camera : OrbitCamera::framing(view ? *view : scene_->bounds());
   request.width = width;
   request.height = height;
   request.gbuffer = true;
   const auto t0 = clock::now();
   renderer.render(params, request);
   m.visibility = renderer.read_visibility();
-  const GBuffer gbuffer = renderer.read_gbuffer();
+  GBuffer gbuffer = renderer.read_gbuffer();
+  if (renderer.light_type() == LightType::Spot) {
+    const float cos_graded = std::cos(glm::radians(renderer.spot_cone_deg() - kSpotConeMarginDeg));
+    for (std::size_t i = 0; i < gbuffer.position.size(); ++i) {
+      const glm::vec3 d = gbuffer.position[i] - renderer.light_position();
+      if (gbuffer.covered[i] && glm::dot(glm::normalize(d), renderer.spot_direction()) < cos_graded) gbuffer.covered[i] = 0;
+    }
+  }
   const auto t1 = clock::now();
   m.truth = oracle().evaluate(gbuffer, oracle_light(renderer), band);
   m.metrics = compare(m.truth, m.visibility);

@@ -72,8 +72,11 @@ class CheckContext {
   // Renders the current scene with these parameters and hooks, grades it against the oracle and, when
   // out_dir is set, writes `<name>_final.png` and `<name>_diff.png`.
   // The camera frames `view` (default: the whole scene's bounds).
+  // A spot light lights only its cone: pixels outside it (and within kSpotConeMarginDeg of its rim, where
+  // the shader's and this test's rounding may differ) are not graded. `camera` replaces the framing.
   Measurement measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
-                      const Bounds* view = nullptr, const BandSpec& band = {}, int width = 960, int height = 540);
+                      const Bounds* view = nullptr, const BandSpec& band = {}, int width = 960, int height = 540,
+                      const OrbitCamera* camera = nullptr);
 
   std::vector<std::string> images;
 
@@ -84,7 +87,16 @@ class CheckContext {
   std::unique_ptr<Oracle> oracle_;
 };
 
-// The oracle's view of the renderer's light for the last frame.
+// The oracle's view of the renderer's light for the last frame: directional, or positional (spot and
+// point lights) with the angle one shadow-map texel spans for the edge band.
 OracleLight oracle_light(const Renderer& renderer);
+
+inline constexpr float kSpotConeMarginDeg = 1.0f;
+
+// The share of graded interior (non-edge) pixels whose lit/shadowed answer agrees with the oracle.
+double interior_agreement(const Metrics& m);
+
+// An orbit camera at `eye` looking at `target` (for views from a chosen place, e.g. inside a volume).
+OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, float near_plane, float far_plane);
 
 }  // namespace shadowlab

@@ -29,10 +29,16 @@ Lab make_lab_ortho_fit();
 Lab make_lab_vsm_setup();
 Lab make_lab_light_bleeding();
 Lab make_lab_moment_blur();
+Lab make_lab_pcf();
+Lab make_lab_spot_light();
+Lab make_lab_point_light();
+Lab make_lab_shadow_volumes();
 
 const std::vector<Lab>& all_labs() {
   static const std::vector<Lab> labs = {make_lab_basic_shadow_map(), make_lab_bias_tuning(), make_lab_ortho_fit(),
-                                         make_lab_vsm_setup(), make_lab_light_bleeding(), make_lab_moment_blur()};
+                                         make_lab_vsm_setup(), make_lab_light_bleeding(), make_lab_moment_blur(),
+                                         make_lab_pcf(), make_lab_spot_light(), make_lab_point_light(),
+                                         make_lab_shadow_volumes()};
   return labs;
 }
 

@@ -10,7 +10,7 @@ std::array<std::atomic<int>, static_cast<int>(GlKind::Count)> live_counts{};
 
 const char* gl_kind_name(GlKind kind) {
   static constexpr const char* names[] = {"buffer", "vertex array", "texture", "framebuffer",
-                                          "renderbuffer", "shader", "program", "query"};
+                                          "renderbuffer", "shader", "program", "query", "sampler"};
   return names[static_cast<int>(kind)];
 }
 
@@ -36,6 +36,7 @@ GLuint generate(GlKind kind) {
     case GlKind::Renderbuffer: glGenRenderbuffers(1, &id); break;
     case GlKind::Program: id = glCreateProgram(); break;
     case GlKind::Query: glGenQueries(1, &id); break;
+    case GlKind::Sampler: glGenSamplers(1, &id); break;
     case GlKind::Shader:
     case GlKind::Count: break;  // shaders need a type: make_shader()
   }
@@ -53,6 +54,7 @@ void destroy(GlKind kind, GLuint id) {
     case GlKind::Shader: glDeleteShader(id); break;
     case GlKind::Program: glDeleteProgram(id); break;
     case GlKind::Query: glDeleteQueries(1, &id); break;
+    case GlKind::Sampler: glDeleteSamplers(1, &id); break;
     case GlKind::Count: return;
   }
   --live_counts[static_cast<int>(kind)];

@@ -8,7 +8,7 @@
 
 namespace shadowlab {
 
-enum class GlKind { Buffer, VertexArray, Texture, Framebuffer, Renderbuffer, Shader, Program, Query, Count };
+enum class GlKind { Buffer, VertexArray, Texture, Framebuffer, Renderbuffer, Shader, Program, Query, Sampler, Count };
 
 const char* gl_kind_name(GlKind kind);
 int live_gl_objects();
@@ -63,6 +63,7 @@ using GlRenderbuffer = GlObject<GlKind::Renderbuffer>;
 using GlShader = GlObject<GlKind::Shader>;
 using GlProgram = GlObject<GlKind::Program>;
 using GlQuery = GlObject<GlKind::Query>;
+using GlSampler = GlObject<GlKind::Sampler>;
 
 inline GlShader make_shader(GLenum type) { return GlShader::adopt(glCreateShader(type)); }
 

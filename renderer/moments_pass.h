@@ -4,6 +4,12 @@
 //   moments pass:  scene from the light -> moments texture A (RG32F/RG16F, linear) + D24 renderbuffer
 //   blur X:        A -> ping-pong texture B      (only while the blur radius is > 0)
 //   blur Y:        B -> A                        (the lit pass always reads A)
+//   or, brute2d:   A -> B with the (2r + 1)^2 kernel, then B copied back into A (glBlitFramebuffer)
+//
+// Three blur methods give the same moments (vsm.blur_method; see BlurMethod): the taught separable
+// shader (lab 5's "lab/blur.glsl"), the renderer's fast separable blur (a compute shader,
+// shaders/vsm/fast_blur.comp; without compute shaders a fragment shader with bilinear taps,
+// shaders/vsm/fast_blur.frag) and a brute-force 2D pass to compare them with.
 //
 // The blur writes back into A, so A holds blurred moments afterwards: a change of the blur settings
 // redraws the moments too (4-14 ms) rather than keeping a third full-size texture for raw moments.
@@ -38,6 +44,23 @@ struct MomentsTargetInfo {
 // was drawn into read as "nothing in front of anything" and light every point.
 inline constexpr float kMomentsClear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
 
+// How the moments are blurred (the vsm.blur_method choices, in order).
+enum class BlurMethod {
+  Separable,  // the taught shader: "lab/blur.glsl" (lab 5), 2r + 1 texelFetch and exp() per tap, X then Y
+  Fast,       // the same separable Gaussian, optimised (shaders/vsm/fast_blur.comp or fast_blur.frag)
+  Brute2D,    // one pass of (2r + 1)^2 taps (the 1D weights' outer product) and a copy back into A
+};
+// "separable", "fast", "brute2d"; throws std::invalid_argument for anything else.
+BlurMethod blur_method_from_name(const std::string& name);
+const char* blur_method_name(BlurMethod method);
+
+// The 1D Gaussian weights exp(-i^2 / (2 sigma^2)) for i = 0..radius, divided by their sum over
+// i = -radius..radius (so the kernel sums to 1); computed in double.
+std::vector<double> gaussian_weights(int radius, double sigma);
+// The reference blur (lab 5's check): the separable Gaussian in double precision, X then Y, clamped to
+// the edge, over (E[z], E[z^2]) pairs of an n x n map as read_moments() returns them.
+std::vector<double> cpu_gaussian_blur(const std::vector<float>& rg, int n, int radius, double sigma);
+
 class MomentsPass {
  public:
   MomentsPass();
@@ -45,12 +68,18 @@ class MomentsPass {
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
   // them; false (old programs kept) on a compile error.
   bool set_includes(const std::map<std::string, std::filesystem::path>& includes);
+  // Every program built so far (the fast and brute-force blur programs are built on first use).
   template <typename F>
   void for_each_program(F&& f) {
     f(moments_);
     f(blur_x_);
     f(blur_y_);
     f(debug_);
+    for (auto& [radius, fast] : fast_fragment_) {
+      f(fast.x);
+      f(fast.y);
+    }
+    if (brute_.valid()) f(brute_);
   }
 
   // (Re)allocates the targets for this size and format ("RG32F" or "RG16F"); the ping-pong texture
@@ -59,8 +88,18 @@ class MomentsPass {
 
   // 1. The moments of the nearest surface per texel, from the light. cull: 0 none, 1 front, 2 back.
   void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, long& draws);
-  // 2. One blur direction (0: X, A -> B; 1: Y, B -> A). Needs ensure_targets(..., blur = true).
+  // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
+  // Needs ensure_targets(..., blur = true).
   void blur(int direction, int radius, float sigma, GLuint empty_vao);
+  // The same direction with the fast blur: the same output within float rounding.
+  void blur_fast(int direction, int radius, float sigma, GLuint empty_vao);
+  // How blur_fast runs: compute shaders where the context has them (GL 4.3+), else fragment shaders
+  // with bilinear taps. Tests can force the fragment path.
+  enum class FastPath { Compute, Fragment };
+  FastPath fast_path() const { return fast_path_; }
+  void set_fast_path(FastPath path);
+  // The whole blur in one (2r + 1)^2 pass, A -> B, then B copied back into A.
+  void blur_brute2d(int radius, float sigma, GLuint empty_vao);
   // A debug quad of one channel (0 E[z], 1 E[z^2], 2 variance) into the bound framebuffer's viewport.
   void draw_debug_quad(int channel, GLuint empty_vao);
 
@@ -87,6 +126,20 @@ class MomentsPass {
     int generation = -1;
     Uniform moments, channel;
   } debug_u_;
+  // The fast blur's programs, built on first use per radius (compiled in, the code unrolled): compute
+  // shaders per radius and format (the image format is part of the shader), or the fragment fallback.
+  struct ComputeBlur {
+    GlProgram x, y;
+  };
+  std::map<std::pair<int, std::string>, ComputeBlur> fast_compute_;
+  struct FragmentBlur {
+    ReloadableProgram x, y;
+  };
+  std::map<int, FragmentBlur> fast_fragment_;
+  FastPath fast_path_ = FastPath::Fragment;
+  ReloadableProgram brute_;  // built on first use
+  void blur_fast_compute(int direction, int radius, float sigma);
+  void blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao);
 
   int size_ = 0;
   std::string format_;

@@ -1,13 +1,17 @@
 // The one renderer, shared by the window and headless runs. A frame is, in order:
 //   scene -> light matrix -> shadow pass -> lit pass -> debug views
-// A lab switches features and parameters on (shader includes, the light fit, the shadow technique); it
-// never forks this. With the moments technique (variance shadow maps) the shadow pass is the moments
-// pass, optionally followed by a separable blur (renderer/moments_pass.h).
+// A lab switches features and parameters on (shader includes, the light fit, the light type, the shadow
+// technique); it never forks this. With the moments technique (variance shadow maps) the shadow pass is
+// the moments pass, optionally followed by a separable blur (renderer/moments_pass.h). A point light's
+// shadow pass renders a cube map of distances (renderer/cube_shadow_pass.h). With shadow volumes there
+// is no shadow map: the frame is ambient pass -> stencil pass -> additive lit pass
+// (renderer/shadow_volume_pass.h).
 #pragma once
 
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,17 +25,22 @@
 #include "renderer/params.h"
 #include "renderer/scene.h"
 #include "renderer/shader.h"
+#include "renderer/technique_params.h"
 
 namespace shadowlab {
 
 using LightFit = std::function<LightView(const Bounds& bounds, const glm::vec3& to_light)>;
 
-// What the shadow pass stores: one depth per texel (depth texture, compared in the lit pass) or the
-// first two moments of depth (colour texture, filtered, read through Chebyshev's bound).
-enum class ShadowTechnique { Depth, Moments };
+// What the shadow pass stores: one depth per texel (depth texture, compared in the lit pass; a cube map
+// of distances for a point light) or the first two moments of depth (colour texture, filtered, read
+// through Chebyshev's bound). ShadowVolumes has no shadow map: stencil shadow volumes from adjacency.
+enum class ShadowTechnique { Depth, Moments, ShadowVolumes };
 
 class MomentsPass;
+class CubeShadowPass;
+class ShadowVolumePass;
 struct MomentsTargetInfo;
+struct VolumeMeshReport;
 
 // What a lab switches on.
 struct LabHooks {
@@ -44,6 +53,12 @@ struct LabHooks {
   // Moments: the vsm.* parameters apply (see renderer/vsm_params.h), "lab/visibility.glsl" defaults to
   // shaders/vsm/visibility.glsl, and "lab/moments.glsl", "lab/chebyshev.glsl", "lab/blur.glsl" apply.
   ShadowTechnique technique = ShadowTechnique::Depth;
+  // A lab may pin the light type (the spot and point light labs); unset, the light.type parameter
+  // decides (directional where a lab does not declare it). Spot and point lights stand at
+  // light.position_*; a spot aims at the scene's centre with the half-angle light.cone_deg.
+  std::optional<LightType> light;
+  // ShadowVolumes: "lab/volume.glsl" (what a triangle emits) defaults to shaders/volume/volume.glsl, and
+  // the volume.* parameters apply (renderer/technique_params.h).
 };
 
 struct PassTiming {
@@ -59,7 +74,9 @@ struct FrameStats {
   long frames = 0;
   long shadow_passes = 0;   // depth or moments passes
   long moments_passes = 0;  // of which moments passes
-  long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map)
+  long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map; brute2d: one)
+  long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)
+  long stencil_passes = 0;  // shadow-volume stencil passes
   long draws = 0;
   nlohmann::json to_json() const;
 };
@@ -107,7 +124,8 @@ class Renderer {
   std::vector<float> read_moments(int* size) const;
   // The moments targets' format, filtering and attachments as GL reports them.
   MomentsTargetInfo moments_targets() const;
-  // The shadow map as a picture (what the debug quad shows), RGBA8 top row first.
+  // The shadow map as a picture (what the debug quad shows), RGBA8 top row first. A point light's six
+  // distance faces in a 3 x 3 grid; with shadow volumes (no map) a 16 x 16 grey placeholder.
   std::vector<std::uint8_t> shadow_map_image(int* size) const;
 
   const LightView& light_view() const { return light_view_; }
@@ -119,7 +137,21 @@ class Renderer {
   int height() const { return height_; }
   const FrameStats& stats() const { return stats_; }
 
-  static std::map<std::string, std::string> default_includes(ShadowTechnique technique = ShadowTechnique::Depth);
+  // The light of the last frame. For spot and point lights to_light() points from the scene's centre
+  // toward the light (for display); the lit pass uses the position.
+  LightType light_type() const { return light_type_; }
+  glm::vec3 light_position() const { return light_position_; }
+  glm::vec3 spot_direction() const { return spot_direction_; }
+  float spot_cone_deg() const { return spot_cone_deg_; }
+  const CubeLightViews& cube_views() const { return cube_views_; }
+  // The shadow volumes' adjacency report per shadow-casting mesh (empty unless the volume pass exists).
+  std::vector<VolumeMeshReport> volume_report() const;
+  // One face of the point light's distance cube, bottom row first; throws unless a point light's shadow
+  // map was rendered.
+  std::vector<float> read_cube_face(int face, int* size) const;
+
+  static std::map<std::string, std::string> default_includes(ShadowTechnique technique = ShadowTechnique::Depth,
+                                                             LightType light = LightType::Directional);
 
  private:
   struct Targets;
@@ -132,6 +164,14 @@ class Renderer {
   void set_lit_uniforms(const ParamSet& params, LitUniforms& u);
   static void resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u);
   void moments_passes(const ParamSet& params);
+  void update_light(const ParamSet& params);
+  bool build_programs(const LabHooks& hooks, LightType light);
+  void shadow_volume_passes(const ParamSet& params, const FrameRequest& request);
+  void draw_scene_pass(const ParamSet& params, const FrameRequest& request, int variant);
+  void normals_pass(const ParamSet& params);
+  void volumes_wireframe_pass(const ParamSet& params);
+  glm::vec4 light_vector4() const;
+  ShadowVolumePass& volume_pass();
   void remap_view_pass(const ParamSet& params);
   // Every program the current lab uses (the programs live behind pointers, so this is const).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
@@ -141,12 +181,21 @@ class Renderer {
   std::unique_ptr<Targets> targets_;
   std::unique_ptr<Programs> programs_;
   std::unique_ptr<MomentsPass> moments_;  // only while the lab uses the moments technique
+  std::unique_ptr<CubeShadowPass> cube_;  // only while a point light casts shadow-map shadows
+  std::unique_ptr<ShadowVolumePass> volumes_;  // only with shadow volumes or their wireframe view
+  bool volumes_scene_stale_ = true;             // the volume pass's adjacency is for another scene
+  GlSampler compare_sampler_;  // GL_COMPARE_REF_TO_TEXTURE, made when a lit program reads a sampler2DShadow
   LabHooks hooks_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   GlQuery timer_;
 
   LightView light_view_;
   glm::vec3 to_light_{0, 1, 0};
+  LightType light_type_ = LightType::Directional;
+  LightType programs_light_ = LightType::Directional;  // the light type the lit programs were built for
+  glm::vec3 light_position_{0.0f}, spot_direction_{0, -1, 0};
+  float spot_cone_deg_ = 45.0f;
+  CubeLightViews cube_views_;
   glm::mat4 camera_view_{1.0f}, camera_projection_{1.0f};
   int width_ = 0, height_ = 0;
   FrameStats stats_;

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "renderer/technique_params.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {
@@ -32,6 +33,12 @@ std::vector<ParamSpec> renderer_param_specs() {
       {"view.ambient", "Ambient", ParamKind::Float, 0.25, 0.0, 1.0, "Light that reaches shadowed surfaces too.", {}},
       {"view.debug_quad", "Show shadow map", ParamKind::Bool, 1.0, 0.0, 1.0,
        "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
+      // Geometry-shader debug views (lecture 9); they cost nothing while off.
+      {"view.normals", "Show normals (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "A geometry shader turns every triangle into three lines: each vertex and its normal.", {}},
+      {"view.volumes", "Show shadow volumes (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "The shadow volumes' silhouette quads and caps, extruded by the geometry shader from adjacency, as "
+       "wireframe. Builds the adjacency on first use.", {}},
   };
 }
 
@@ -56,7 +63,102 @@ std::vector<ParamSpec> vsm_param_specs() {
       {"vsm.blur_sigma", "Blur sigma (texels)", ParamKind::Float, 1.0, 0.25, 8.0,
        "Standard deviation of the Gaussian weights; keep the radius near 2-3 sigma or the kernel is cut off.", {},
        moments},
+      {"vsm.blur_method", "Blur method", ParamKind::Choice, 0.0, 0.0, 2.0,
+       "How the Gaussian over the moments is computed; all three give the same moments (within 1e-4). "
+       "separable: the taught shader (lab 5's, X then Y, one texel and one exp() per tap). fast: the same "
+       "separable Gaussian, weights computed once on the CPU, each texel read once per 16 outputs (a compute shader; "
+       "1.7-6x faster on llvmpipe for radii 1-16). brute2d: one pass over all (2r+1)^2 texels, for comparison.",
+       {"separable", "fast", "brute2d"}, moments},
   };
+}
+
+std::vector<ParamSpec> light_param_specs() {
+  const unsigned shadow = kInvalidatesShadowMap;
+  return {
+      {"light.type", "Light type", ParamKind::Choice, 0.0, 0.0, 2.0,
+       "Directional: parallel rays, an orthographic map. Spot: a perspective map from the light's position "
+       "within its cone. Point: six 90-degree faces of a cube map storing the distance to the light.",
+       {"directional", "spot", "point"}, shadow | kInvalidatesTargets | kInvalidatesPrograms},
+      {"light.position_x", "Light position x", ParamKind::Float, -0.6, -10.0, 10.0,
+       "Where a spot or point light stands (world units).", {}, shadow},
+      {"light.position_y", "Light position y", ParamKind::Float, 3.0, 0.1, 12.0,
+       "Height of a spot or point light above the ground.", {}, shadow},
+      {"light.position_z", "Light position z", ParamKind::Float, 0.2, -10.0, 10.0,
+       "Where a spot or point light stands (world units).", {}, shadow},
+      {"light.cone_deg", "Spot cone half-angle (deg)", ParamKind::Float, 45.0, 5.0, 75.0,
+       "Half the spot light's opening angle; it aims at the scene's centre. Wider cones spread the same texels "
+       "over more of the scene.", {}, shadow},
+  };
+}
+
+std::vector<ParamSpec> pcf_param_specs() {
+  return {
+      {"pcf.kernel", "PCF kernel", ParamKind::Choice, 1.0, 0.0, 4.0,
+       "Taps per side of the percentage-closer filter: the comparison is averaged over N x N neighbouring "
+       "texels (3 x 3 in the lecture).", {"1", "3", "5", "7", "9"}},
+      {"pcf.hardware", "Hardware comparison", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "Read through a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE, linear): every tap becomes a bilinear "
+       "2 x 2 PCF for free.", {}},
+  };
+}
+
+std::vector<ParamSpec> point_param_specs() {
+  return {
+      {"point.single_pass", "Cube map in one pass (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "Draw the six faces in one pass, a geometry shader sending each triangle to every face (gl_Layer), "
+       "instead of six passes.", {}, kInvalidatesShadowMap},
+  };
+}
+
+std::vector<ParamSpec> volume_param_specs() {
+  return {
+      {"volume.method", "Stencil counting", ParamKind::Choice, 0.0, 0.0, 1.0,
+       "z-fail (Carmack's reverse) counts the volume faces behind the surface and needs capped volumes; "
+       "z-pass counts those in front and breaks when the camera is inside a volume.", {"z-fail", "z-pass"}},
+  };
+}
+
+namespace {
+std::vector<ParamSpec> all_technique_specs() {
+  std::vector<ParamSpec> all;
+  for (auto group : {light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs()})
+    all.insert(all.end(), group.begin(), group.end());
+  return all;
+}
+const ParamSpec& technique_spec(const std::vector<ParamSpec>& all, const std::string& key) {
+  for (const auto& spec : all)
+    if (spec.key == key) return spec;
+  throw std::out_of_range("no technique parameter " + key);
+}
+}  // namespace
+
+std::vector<ParamSpec> technique_param_specs(const std::vector<std::string>& keys) {
+  const std::vector<ParamSpec> all = all_technique_specs();
+  std::vector<ParamSpec> out;
+  for (const auto& key : keys) out.push_back(technique_spec(all, key));
+  return out;
+}
+
+double technique_param(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get(key);
+  static const std::vector<ParamSpec> all = all_technique_specs();
+  return technique_spec(all, key).default_value;
+}
+
+std::string technique_choice(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get_choice(key);
+  static const std::vector<ParamSpec> all = all_technique_specs();
+  const ParamSpec& spec = technique_spec(all, key);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+}
+
+LightType light_type(const ParamSet& params) {
+  const std::string type = technique_choice(params, "light.type");
+  return type == "spot" ? LightType::Spot : type == "point" ? LightType::Point : LightType::Directional;
+}
+
+const char* light_type_name(LightType type) {
+  return type == LightType::Spot ? "spot" : type == LightType::Point ? "point" : "directional";
 }
 
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys) {

@@ -1,6 +1,11 @@
 #version 330 core
 // Lit pass: ambient + Lambert, with the light's term scaled by the shadow test's visibility.
 // The shadow test itself comes from "lab/visibility.glsl", which a lab may point at its own file.
+//
+// Variants (injected defines): LIGHT_SPOT / LIGHT_POINT light from u_light_position (a spot only within
+// its cone), else a directional light along u_to_light. With stencil shadow volumes the scene is drawn
+// twice: SHADOW_VOLUME_AMBIENT (ambient only, and the G-buffer) and SHADOW_VOLUME_ADDITIVE (the light's
+// share, added where the stencil test found no volume).
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
 
@@ -10,6 +15,10 @@ in vec3 v_color;
 
 uniform vec3 u_to_light;
 uniform float u_ambient;
+#ifdef LIGHT_SPOT
+uniform vec3 u_spot_direction;  // unit, from the light toward the scene
+uniform float u_spot_cos_cone;  // cosine of the cone's half-angle: outside it the spot gives no light
+#endif
 
 layout(location = 0) out vec4 o_color;
 #ifdef WRITE_GBUFFER
@@ -19,13 +28,41 @@ layout(location = 2) out vec4 o_position;
 layout(location = 3) out vec4 o_normal;
 #endif
 
+vec3 light_vector(vec3 p) {
+#if defined(LIGHT_SPOT) || defined(LIGHT_POINT)
+  return normalize(u_light_position - p);
+#else
+  return u_to_light;
+#endif
+}
+
+bool reached_by_light(vec3 p) {
+#ifdef LIGHT_SPOT
+  return dot(normalize(p - u_light_position), u_spot_direction) >= u_spot_cos_cone;
+#else
+  return true;
+#endif
+}
+
+vec3 encode(vec3 linear) { return pow(linear, vec3(1.0 / 2.2)); }
+
 void main() {
   // Shade both sides of thin or open geometry: the side facing the camera is the one we see.
   vec3 n = normalize(v_normal) * (gl_FrontFacing ? 1.0 : -1.0);
-  float n_dot_l = dot(n, u_to_light);
+  float n_dot_l = reached_by_light(v_world_position) ? dot(n, light_vector(v_world_position)) : 0.0;
   float visibility = n_dot_l > 0.0 ? shadow_visibility(v_world_position, n, n_dot_l) : 0.0;
-  vec3 linear = v_color * (u_ambient + (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility);
-  o_color = vec4(pow(linear, vec3(1.0 / 2.2)), 1.0);
+  vec3 ambient = v_color * u_ambient;
+  vec3 linear = ambient + v_color * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
+#if defined(SHADOW_VOLUME_AMBIENT)
+  visibility = 0.0;  // the additive pass adds 1 where the light reaches
+  o_color = vec4(encode(ambient), 1.0);
+#elif defined(SHADOW_VOLUME_ADDITIVE)
+  // Blended with ONE, ONE onto the ambient pass. The framebuffer holds gamma-encoded colour, so the
+  // light's share is the difference of the encoded sums: ambient + this = encode(ambient + diffuse).
+  o_color = vec4(encode(linear) - encode(ambient), 0.0);
+#else
+  o_color = vec4(encode(linear), 1.0);
+#endif
 #ifdef WRITE_GBUFFER
   o_visibility = visibility;
   o_position = vec4(v_world_position, 1.0);

@@ -16,6 +16,52 @@ expect_error() {  # expect_error "message part" command...: non-zero exit, one c
   return 0
 }
 one_line() { [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line on stderr: $(cat "$tmp/err")"; }
+# A PNG reader for the window cases (8-bit RGBA as stb writes it): `from png_read import load` in python3.
+png_reader() {
+  cat >"$tmp/png_read.py" <<'PY'
+import struct, zlib
+def load(path):
+    """Returns (width, height, rows) with rows[y] a bytearray of RGBA, top row first."""
+    data = open(path, "rb").read()
+    pos, idat, w, h = 8, b"", 0, 0
+    while pos < len(data):
+        n, t = struct.unpack(">I4s", data[pos:pos + 8])
+        if t == b"IHDR": w, h = struct.unpack(">II", data[pos + 8:pos + 16])
+        if t == b"IDAT": idat += data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+    raw, stride = zlib.decompress(idat), w * 4
+    rows, prev = [], bytearray(stride)
+    for y in range(h):
+        f = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 4] if i >= 4 else 0
+            b = prev[i]
+            c = prev[i - 4] if i >= 4 else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line); prev = line
+    return w, h, rows
+def differing(a, b, x0, y0, x1, y1, step=2, tol=24):
+    """Share of sampled pixels in the rectangle whose colours differ by more than tol (sum of RGB)."""
+    n = d = 0
+    for y in range(y0, y1, step):
+        for x in range(x0, x1, step):
+            n += 1
+            d += sum(abs(a[y][4 * x + c] - b[y][4 * x + c]) for c in range(3)) > tol
+    return d / max(n, 1)
+PY
+}
+window() {  # window ARGS...: the window under Xvfb on a 1440x900 screen; stderr kept in $tmp/err
+  command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
+  xvfb-run -a -s "-screen 0 1440x900x24" "$bin" "$@" >"$tmp/out" 2>"$tmp/err" || fail "window run failed: $(tail -3 "$tmp/err")"
+  grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: $(cat "$tmp/err")"
+  return 0
+}
 
 case "$case_name" in
   render_default)
@@ -212,6 +258,98 @@ s = j["skipping"]
 assert s["shadow_passes_with_skipping"] == 0 and s["shadow_passes_without_skipping"] == s["frames"], s
 PY
     echo "bench --quick: ${elapsed} s"
+    ;;
+  window_keys_split)  # keys switch labs, S toggles the split view: the screenshots differ where they should
+    png_reader
+    window --script "frames:3,screenshot:$tmp/lab0.png,key:1,frames:3,screenshot:$tmp/lab1.png,key:s,frames:3,screenshot:$tmp/split.png,key:s,frames:3,screenshot:$tmp/unsplit.png,key:n,frames:3,screenshot:$tmp/lab2.png"
+    for f in lab0 lab1 split unsplit lab2; do [ -s "$tmp/$f.png" ] || fail "no $f.png"; done
+    python3 - "$tmp" <<'PY' || fail "screenshots do not differ as expected"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+img = {n: load(f"{sys.argv[1]}/{n}.png") for n in ("lab0", "lab1", "split", "unsplit", "lab2")}
+w, h, _ = img["lab1"]
+r = {n: v[2] for n, v in img.items()}
+panel = (20, 60, 430, 400)                   # the panel's title, task and check sections
+left = (460, 60, w // 2 - 40, h - 60)        # the view left of the divider, right of the panel
+right = (w // 2 + 40, 60, w - 20, h - 60)    # the view right of the divider, above the magnifier corner
+stats = {
+    "panel lab0/lab1": differing(r["lab0"], r["lab1"], *panel),
+    "panel lab1/lab2 (N)": differing(r["lab1"], r["lab2"], *panel),
+    "left split/lab1": differing(r["split"], r["lab1"], *left),
+    "right split/lab1": differing(r["split"], r["lab1"], *right),
+    "view unsplit/lab1": differing(r["unsplit"], r["lab1"], 460, 60, w - 20, h - 60),
+}
+print(stats)
+assert stats["panel lab0/lab1"] > 0.02, "key 1 did not change the panel"
+assert stats["panel lab1/lab2 (N)"] > 0.02, "key N did not change the panel"
+assert stats["right split/lab1"] > 0.01, "the split's right side (solution) looks like the exercise"
+assert stats["left split/lab1"] < stats["right split/lab1"] / 3, "the split changed the left side"
+assert stats["view unsplit/lab1"] < 0.01, "S again did not return to the single view"
+# The divider: a bright vertical line in the middle of the split screenshot, none without the split.
+col = lambda rows, x: sum(1 for y in range(100, h - 100, 4) if min(rows[y][4 * x:4 * x + 3]) > 200)
+line_split = max(col(r["split"], x) for x in range(w // 2 - 2, w // 2 + 3))
+line_single = max(col(r["lab1"], x) for x in range(w // 2 - 2, w // 2 + 3))
+print("divider rows:", line_split, line_single)
+assert line_split > 0.9 * len(range(100, h - 100, 4)) and line_single < line_split / 2, "no divider"
+PY
+    ;;
+  window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size
+    png_reader
+    window --lab 5 --script "frames:2,resize:800x500,frames:3,screenshot:$tmp/small.png,iconify,wait:0.5,restore,wait:0.3,frames:2,key:m,key:f11,frames:3,screenshot:$tmp/full.png,key:f11,frames:3,screenshot:$tmp/back.png"
+    python3 - "$tmp" <<'PY' || fail "wrong picture sizes"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load
+sizes = {n: load(f"{sys.argv[1]}/{n}.png")[:2] for n in ("small", "full", "back")}
+print(sizes)
+assert sizes["small"] == (800, 500), sizes
+assert sizes["full"] == (1440, 900), sizes
+assert sizes["back"] == (800, 500), sizes
+PY
+    ;;
+  window_drop)  # a bad file dropped on the window shows an error in the panel; a good one replaces the scene
+    png_reader
+    echo "not a model" >"$tmp/bad.gltf"
+    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$shared/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
+    python3 - "$tmp" <<'PY' || fail "drop not shown as expected"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "bad", "duck")}
+w, h = 1440, 860
+red = lambda rows: sum(1 for y in range(20, 400) for x in range(20, 430)
+                       if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
+stats = {"red before": red(r["before"]), "red bad": red(r["bad"]), "red duck": red(r["duck"]),
+         "view bad/before": differing(r["bad"], r["before"], 460, 60, w - 20, h - 60),
+         "view duck/before": differing(r["duck"], r["before"], 460, 60, w - 20, h - 60)}
+print(stats)
+assert stats["red bad"] > stats["red before"] + 200, "no error text in the panel"
+assert stats["red duck"] < stats["red bad"], "the error stayed after a good file"
+assert stats["view bad/before"] < 0.01, "a bad file changed the scene"
+assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
+PY
+    ;;
+  window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
+  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words
+    png_reader
+    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 600 >/dev/null || fail "render failed"
+    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 600 >/dev/null || fail "render --panel failed"
+    python3 - "$tmp" <<'PY' || fail "panel not in final.png"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
+w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
+assert (w, h) == (w2, h2) == (960, 600)
+inside = differing(plain, panel, 20, 40, 420, 560)
+outside = differing(plain, panel, 460, 60, 940, 560)
+# The failed check's FAIL lines are red text.
+red = sum(1 for y in range(20, 580) for x in range(20, 430)
+          if panel[y][4 * x] > 200 and panel[y][4 * x + 1] < 150 and panel[y][4 * x + 2] < 140)
+print("panel region differs:", inside, "view region:", outside, "red pixels:", red)
+assert inside > 0.3 and outside < 0.02 and red > 100
+PY
     ;;
   *) fail "unknown case $case_name" ;;
 esac

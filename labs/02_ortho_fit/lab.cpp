@@ -161,6 +161,8 @@ Lab make_lab_ortho_fit() {
   lab.presets = {
       {"straight down", "The light along -Y: a lookAt with up = +Y has no basis here.", {{"light.elevation", "90"}}},
       {"grazing", "A low light: the box's footprint along the light grows long.", {{"light.elevation", "12"}}},
+      {"aliasing", "A 256^2 map: blocky, jagged edges; a loose box wastes the few texels there are.", {{"shadow.map_size", "256"}}},
+      {"sharp", "A 2048^2 map with the fitted box: fine edges.", {{"shadow.map_size", "2048"}}},
   };
   lab.hooks = [](Impl impl) {
     LabHooks hooks;

@@ -183,6 +183,7 @@ Lab make_lab_vsm_setup() {
        "Half floats: z is rounded to 5e-4 and E[z^2] - E[z]^2 goes negative in places (red in the variance quad).",
        {{"vsm.format", "RG16F"}}},
       {"grazing", "A low light: wide variance on the ground.", {{"light.elevation", "15"}}},
+      {"RG32F", "The fix for RG16F: full floats keep E[z^2] - E[z]^2 >= 0.", {{"vsm.format", "RG32F"}}},
   };
   lab.hooks = [](Impl impl) {
     LabHooks hooks;

@@ -34,31 +34,8 @@ constexpr int kTimingRepeats = 3;
 // are e^-2 = 0.14 of the centre).
 double check_sigma(int radius) { return 0.5 * radius; }
 
-// The reference: the same separable Gaussian in double precision, X then Y, clamped to the edge.
-std::vector<double> cpu_gaussian(const std::vector<float>& rg, int n, int radius, double sigma) {
-  std::vector<double> weights(static_cast<std::size_t>(2 * radius + 1));
-  double sum = 0.0;
-  for (int i = -radius; i <= radius; ++i)
-    sum += weights[static_cast<std::size_t>(i + radius)] = std::exp(-i * i / (2.0 * sigma * sigma));
-  for (auto& w : weights) w /= sum;
-  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * 2;
-  std::vector<double> in(rg.begin(), rg.end()), tmp(count, 0.0), out(count, 0.0);
-  auto pass = [&](const std::vector<double>& src, std::vector<double>& dst, int dx, int dy) {
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        for (int c = 0; c < 2; ++c) {
-          double acc = 0.0;
-          for (int i = -radius; i <= radius; ++i) {
-            const int sx = std::clamp(x + i * dx, 0, n - 1), sy = std::clamp(y + i * dy, 0, n - 1);
-            acc += weights[static_cast<std::size_t>(i + radius)] * src[(static_cast<std::size_t>(sy) * n + sx) * 2 + c];
-          }
-          dst[(static_cast<std::size_t>(y) * n + x) * 2 + c] = acc;
-        }
-  };
-  pass(in, tmp, 1, 0);
-  pass(tmp, out, 0, 1);
-  return out;
-}
+// The reference: the same separable Gaussian in double precision, X then Y, clamped to the edge
+// (cpu_gaussian_blur in renderer/moments_pass.h, shared with the blur tests and benchmark).
 
 double pass_ms(const FrameStats& stats, const std::string& name) {
   for (const auto& p : stats.passes)
@@ -134,7 +111,7 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
     extra_textures = std::max(extra_textures, live_gl_objects(GlKind::Texture) - textures_at_zero);
     int size = 0;
     const std::vector<float> gpu = r.read_moments(&size);
-    const std::vector<double> cpu = cpu_gaussian(raw, n, radius, check_sigma(radius));
+    const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, check_sigma(radius));
     double max_error = 0.0;
     std::size_t non_finite = 0;
     for (std::size_t i = 0; i < gpu.size(); ++i) {
@@ -197,6 +174,8 @@ Lab make_lab_moment_blur() {
       {"cut-off kernel",
        "Radius 2 with sigma 8: a box filter in disguise.",
        {{"vsm.blur_radius", "2"}, {"vsm.blur_sigma", "8"}}},
+      {"tuned", "The lab's defaults, radius 4 and sigma 2: soft edges, little bleeding.",
+       {{"vsm.blur_radius", "4"}, {"vsm.blur_sigma", "2"}}},
   };
   lab.hooks = [](Impl impl) {
     LabHooks hooks;

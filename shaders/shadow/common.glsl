@@ -2,6 +2,7 @@
 // space (light view-projection, then the [-1, 1] -> [0, 1] "bias matrix").
 uniform sampler2D u_shadow_map;
 uniform mat4 u_light_tex_matrix;
+uniform vec3 u_light_position;  // spot and point lights: where the light stands (world space)
 
 // The fragment's position in the shadow map: xy texture coordinates, z its depth seen from the light.
 vec3 shadow_coords(vec3 world_position) {

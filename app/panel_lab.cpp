@@ -1,0 +1,334 @@
+#include "app/panel_lab.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <imgui.h>
+
+#include "app/panel.h"
+#include "app/settings_panel.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+namespace {
+
+const ImVec4 kGreen(0.45f, 0.85f, 0.45f, 1.0f), kRed(1.0f, 0.45f, 0.4f, 1.0f), kHint(0.95f, 0.8f, 0.45f, 1.0f);
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char s[256];
+  std::snprintf(s, sizeof s, fmt, a, b);
+  return s;
+}
+
+// "k3.acne_rate" -> ("k3", "acne_rate"): the part before the last dot names the case a lab measured.
+std::pair<std::string, std::string> split_metric(const std::string& metric) {
+  const auto dot = metric.rfind('.');
+  if (dot == std::string::npos) return {"", metric};
+  return {metric.substr(0, dot), metric.substr(dot + 1)};
+}
+
+void draw_nav(PanelModel& m, PanelActions& a) {
+  if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) a.open_lab = neighbour_lab(*m.lab, -1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Previous lab (P)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
+  if (ImGui::BeginCombo("##lab", ("Lab " + std::to_string(m.lab->number) + "  " + m.lab->title).c_str())) {
+    for (const auto& lab : all_labs()) {
+      if (ImGui::Selectable((std::to_string(lab.number) + "  " + lab.title).c_str(), &lab == m.lab)) a.open_lab = &lab;
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("##next", ImGuiDir_Right)) a.open_lab = neighbour_lab(*m.lab, +1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Next lab (N)");
+  ImGui::TextDisabled("keys: 0-9 lab, N/P next/previous, S split, M magnifier, F11 fullscreen, F12 screenshot");
+}
+
+void draw_task(PanelModel& m, PanelActions& a) {
+  if (!ImGui::CollapsingHeader("Your task", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const std::string task = m.lab_text ? task_section(*m.lab_text) : std::string();
+  ImGui::PushTextWrapPos(0.0f);
+  if (m.lab->exercise_files.empty()) {
+    ImGui::TextUnformatted("A read-along lab: nothing to edit. Read the text, then try the presets below.");
+  } else {
+    ImGui::TextUnformatted(task.empty() ? "Make the Check pass by editing the file(s) below." : task.c_str());
+    ImGui::Spacing();
+    bool cpp = false;  // C++ exercises need a rebuild; shaders reload when saved
+    for (const auto& file : m.lab->exercise_files) cpp |= file.ends_with(".cpp") || file.ends_with(".h");
+    ImGui::TextColored(kHint, cpp ? "Edit, then rebuild (scripts/build):" : "Edit (saving reloads it live):");
+    for (const auto& file : m.lab->exercise_files) {
+      ImGui::BulletText("%s", file.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", (data_dir() / file).string().c_str());
+    }
+    int impl = m.impl == Impl::Exercise ? 0 : 1;
+    bool changed = ImGui::RadioButton("run my exercise", &impl, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("run the solution", &impl, 1);
+    if (changed) a.impl = impl == 0 ? Impl::Exercise : Impl::Solution;
+  }
+  ImGui::PopTextWrapPos();
+}
+
+void draw_check(PanelModel& m, PanelActions& a) {
+  if (!m.lab->check || !ImGui::CollapsingHeader("Check", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (m.interactive) {
+    if (ImGui::Button("Check")) a.check = true;
+    ImGui::SameLine();
+  }
+  ImGui::TextDisabled("same as: shadowlab check --lab %d --impl %s", m.lab->number, impl_name(m.impl));
+  if (!m.check) {
+    ImGui::TextDisabled("Not checked yet: press Check to grade against the ray-cast truth.");
+    return;
+  }
+  const CheckResult& r = *m.check;
+  ImGui::TextColored(r.passed() ? kGreen : kRed, "%s (%.1f s)", r.passed() ? "PASS" : "FAIL", r.seconds);
+  ImGui::PushTextWrapPos(0.0f);
+  if (!r.error.empty()) ImGui::TextColored(kRed, "%s", r.error.c_str());
+  for (const auto& c : r.criteria) {
+    ImGui::TextColored(c.passed() ? kGreen : kRed, "%s", c.passed() ? "ok" : "FAIL");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(explain_criterion(c).c_str());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s = %.4g, limit %s %.4g\n%s", c.metric.c_str(), c.value,
+                        c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());
+  }
+  ImGui::PopTextWrapPos();
+}
+
+void draw_parameters(PanelModel& m, PanelActions&) {
+  if (!ImGui::CollapsingHeader("Parameters and presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  param_widgets(*m.params);
+  if (ImGui::Button("Defaults")) m.params->reset_to_defaults();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The lab's own values");
+  float x = ImGui::GetItemRectMax().x;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  for (const auto& preset : m.lab->presets) {
+    const float w = ImGui::CalcTextSize(preset.name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
+    if (x + ImGui::GetStyle().ItemSpacing.x + w < right) ImGui::SameLine();  // wrap the row of buttons
+    if (ImGui::Button(preset.name.c_str())) {
+      for (const auto& [key, value] : preset.values) m.params->set_from_string(key, value);
+    }
+    x = ImGui::GetItemRectMax().x;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());
+  }
+  if (m.settings) m.settings->draw_presets(m.lab->number, *m.params);
+}
+
+void draw_compare(PanelModel& m, PanelActions& a) {
+  if (!m.compare || !ImGui::CollapsingHeader("Compare", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  CompareState& c = *m.compare;
+  a.compare_changed |= ImGui::Checkbox("Split view (S)", &c.split);
+  ImGui::SameLine();
+  ImGui::Checkbox("Magnifier (M)", &c.magnifier);
+  if (!c.split) return;
+  const char* other = m.impl == Impl::Exercise ? "solution" : "exercise";
+  std::string label = c.with == CompareWith::OtherImpl ? std::string("the ") + other
+                      : c.with == CompareWith::Defaults ? std::string("the lab's defaults")
+                      : c.preset < static_cast<int>(m.lab->presets.size()) ? "preset " + m.lab->presets[static_cast<std::size_t>(c.preset)].name
+                                                                           : std::string("a preset");
+  if (ImGui::BeginCombo("right side", label.c_str())) {
+    if (!m.lab->exercise_files.empty() &&
+        ImGui::Selectable((std::string("the ") + other + " (same values)").c_str(), c.with == CompareWith::OtherImpl)) {
+      c.with = CompareWith::OtherImpl;
+      a.compare_changed = true;
+    }
+    if (ImGui::Selectable("the lab's defaults", c.with == CompareWith::Defaults)) {
+      c.with = CompareWith::Defaults;
+      a.compare_changed = true;
+    }
+    for (std::size_t i = 0; i < m.lab->presets.size(); ++i) {
+      const bool selected = c.with == CompareWith::Preset && c.preset == static_cast<int>(i);
+      if (ImGui::Selectable(("preset " + m.lab->presets[i].name).c_str(), selected)) {
+        c.with = CompareWith::Preset;
+        c.preset = static_cast<int>(i);
+        a.compare_changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SliderFloat("divider", &c.divider, 0.05f, 0.95f, "%.2f");
+  ImGui::TextDisabled("Drag the divider line in the view; left: your values and code.");
+}
+
+void draw_stats(PanelModel& m) {
+  if (!m.stats || !ImGui::CollapsingHeader("GPU time per pass")) return;
+  for (const auto& p : m.stats->passes) ImGui::Text("%-12s %7.2f ms%s", p.name.c_str(), p.gpu_ms, p.wall_clock ? " (wall)" : "");
+  ImGui::Text("shadow passes run: %ld of %ld frames", m.stats->shadow_passes, m.stats->frames);
+  ImGui::Text("%zu triangles, scene: %s", m.triangles, m.scene_name.c_str());
+}
+
+}  // namespace
+
+PanelActions draw_lab_panel(PanelModel& m) {
+  PanelActions a;
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(430, std::min(ImGui::GetIO().DisplaySize.y - 20.0f, 840.0f)), ImGuiCond_FirstUseEver);
+  ImGui::Begin("shadowlab");
+  draw_nav(m, a);
+  if (!m.shader_error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+    ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", m.shader_error.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (!m.scene_error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+    ImGui::TextWrapped("%s", m.scene_error.c_str());
+    ImGui::PopStyleColor();
+  }
+  draw_task(m, a);
+  draw_check(m, a);
+  if (m.lab_text && ImGui::CollapsingHeader("Lab text", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(m.lab_text->c_str());
+    ImGui::PopTextWrapPos();
+  }
+  draw_parameters(m, a);
+  draw_compare(m, a);
+  draw_stats(m);
+  if (m.interactive) {
+    if (ImGui::Button("Screenshot (F12)")) a.screenshot = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Fullscreen (F11)")) a.fullscreen = true;
+    ImGui::TextDisabled("Drop a .gltf/.glb on the window to open it. Mouse: left orbit, right/middle pan, wheel zoom.");
+  }
+  if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
+  ImGui::End();
+  return a;
+}
+
+const Lab* neighbour_lab(const Lab& lab, int step) {
+  const auto& labs = all_labs();
+  for (std::size_t i = 0; i < labs.size(); ++i) {
+    if (&labs[i] != &lab) continue;
+    const auto n = static_cast<long>(labs.size());
+    return &labs[static_cast<std::size_t>(((static_cast<long>(i) + step) % n + n) % n)];
+  }
+  return &labs.front();
+}
+
+std::string explain_criterion(const Criterion& c) {
+  const auto [tag, name] = split_metric(c.metric);
+  const bool ok = c.passed();
+  const std::string where = tag.empty() ? "" : " [" + tag + "]";
+  const double v = c.value;
+  std::string s;
+  if (name == "acne_rate" || name == "acne_rate_all") {
+    s = format("%.2f %% of lit pixels show acne (drawn in shadow)", 100 * v);
+    s += ok ? ": clean." : ": raise the bias, or make it grow with the slope.";
+  } else if (name == "leak_rate" || name == "leak_rate_all") {
+    s = format("%.2f %% of shadowed pixels are drawn lit (light leaks, peter-panning)", 100 * v);
+    s += ok ? ": clean." : ": lower the bias or check the depth comparison.";
+  } else if (name == "bleeding_rate") {
+    s = format("%.2f %% of shadowed pixels show light bleeding", 100 * v);
+    s += ok ? ": acceptable." : ": cut the low tail of Chebyshev's bound (raise delta).";
+  } else if (name == "bleeding_ratio_to_unfixed") {
+    s = format("light bleeding is %.0f %% of what it is without your fix", 100 * v);
+    s += ok ? "." : format(": it must drop to %.0f %% or less.", 100 * c.limit);
+  } else if (name == "error_ratio_fitted_to_fixed") {
+    s = format("the fitted box's error (acne + leak) is %.2f x the fixed box's", v);
+    s += ok ? ": the fit helps." : ": fit the box tighter around the scene's bounds.";
+  } else if (name == "non_finite_directions") {
+    s = format("%.0f light directions gave a matrix with NaN or Inf", v);
+    s += ok ? "." : ": pick another up vector when the light looks along +-Y.";
+  } else if (name == "corners_outside") {
+    s = format("%.0f corners of the scene's box fall outside the light's box", v);
+    s += ok ? "." : ": the box must enclose every corner.";
+  } else if (name == "loose_directions") {
+    s = format("%.0f light directions gave a box looser than needed", v);
+    s += ok ? "." : ": take min and max of the corners in light space.";
+  } else if (name == "interior_agreement") {
+    s = format("%.2f %% of pixels away from edges agree with the ray-cast truth", 100 * v);
+    s += ok ? "." : format(": needs %.2f %%.", 100 * c.limit);
+  } else if (name == "soft_edge_share") {
+    s = format("%.1f %% of pixels along shadow edges are partly lit (soft)", 100 * v);
+    s += ok ? "." : format(": needs %.1f %%; average more shadow-map taps.", 100 * c.limit);
+  } else if (name == "max_first_moment_error" || name == "max_second_moment_error") {
+    s = format(name == "max_first_moment_error" ? "the stored E[z] is off by up to %.2g" : "the stored E[z^2] is off by up to %.2g", v);
+    s += ok ? "." : ": write depth and depth squared (with the slope term) into the moments.";
+  } else if (name == "max_texel_error") {
+    s = format("the blurred moments differ from an exact Gaussian by up to %.2g", v);
+    s += ok ? "." : ": normalise the weights and sample at the right offsets.";
+  } else if (name.find("negative_variance") != std::string::npos) {
+    s = format("%.0f texels have a negative variance", v);
+    s += ok ? "." : ": E[z^2] - E[z]^2 must not go below the minimum variance.";
+  } else if (name.find("non_finite") != std::string::npos) {
+    s = format("%.0f texels are NaN or Inf", v);
+  } else if (c.direction == Criterion::kAtLeast && c.limit == 1.0 && (v == 0.0 || v == 1.0)) {
+    s = name + (v != 0.0 ? ": yes" : ": no");  // a yes/no property (filtering, formats, the eye in shadow)
+  } else if (v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit)) {
+    s = name + format(" = %.0f", v) + (c.direction == Criterion::kAtMost ? " (needs <= " : " (needs >= ") + format("%.0f)", c.limit);
+  } else {
+    s = name + format(" = %.4g", v) + (c.direction == Criterion::kAtMost ? " (needs <= " : " (needs >= ") + format("%.4g)", c.limit);
+  }
+  return s + where;
+}
+
+std::string task_section(const std::string& markdown) {
+  std::istringstream in(markdown);
+  std::string line, out;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      if (inside) break;
+      inside = line.find("Your task") != std::string::npos || line.find("Your part") != std::string::npos;
+      continue;
+    }
+    if (inside) out += line + "\n";
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out.substr(std::min(out.size(), out.find_first_not_of("\n ")));
+}
+
+std::string reflow_markdown(const std::string& text) {
+  std::istringstream in(text);
+  std::string out, line;
+  bool joinable = false;  // the previous line was paragraph text
+  while (std::getline(in, line)) {
+    const bool blank = line.find_first_not_of(' ') == std::string::npos;
+    const bool structural = !blank && (line[0] == '#' || line[0] == '|' || line.rfind("    ", 0) == 0 ||
+                                       line.rfind("- ", 0) == 0 ||
+                                       (std::isdigit(static_cast<unsigned char>(line[0])) && line.find(". ") < 4));
+    const bool continuation = !blank && !structural && line[0] == ' ';
+    if (joinable && !blank && (!structural || continuation)) {
+      out += ' ' + line.substr(line.find_first_not_of(' '));
+    } else {
+      if (!out.empty()) out += '\n';
+      out += line;
+    }
+    joinable = !blank && line[0] != '#' && line[0] != '|' && line.rfind("    ", 0) != 0;
+  }
+  return out;
+}
+
+std::string load_lab_text(const Lab& lab) {
+  std::ifstream in(lab.text_path());
+  if (!in) return "# Lab " + std::to_string(lab.number) + " - " + lab.title + "\n\n" + lab.summary +
+                  "\n\n(This lab's text, " + lab.folder() + "/README.md, is not written yet.)";
+  std::ostringstream s;
+  s << in.rdbuf();
+  return reflow_markdown(s.str());
+}
+
+CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene) {
+  CheckResult result;
+  result.lab = lab.number;
+  result.slug = lab.slug;
+  result.impl = impl;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    Renderer renderer;
+    CheckContext ctx(renderer, lab, impl, scene, {});
+    lab.check(ctx, result);
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,67 @@
+// The point light's shadow map (lab 8): a cube map of distances, with the render targets it owns.
+//
+//   six passes:  for each face f: scene from the light through view[f] -> face f of the distance cube
+//   one pass:    scene once; layers.geom emits every triangle into all six faces (gl_Layer)
+//
+// Each face is a 90-degree perspective view in GL's face order and orientation (point_light_views), so
+// the lit pass can look the cube up with the direction from the light to the fragment. The faces store
+// the distance to the light (R32F), not perspective depth: depth is not linear in distance and its scale
+// changes from face to face. A depth cube map (D24) does the depth test in both modes. The renderer
+// creates this pass only while a lab uses a point light with shadow maps.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "renderer/gl_objects.h"
+#include "renderer/gpu_mesh.h"
+#include "renderer/light.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+// The clear value of the distance cube: no surface in that direction, so nothing shadows anything.
+inline constexpr float kCubeEmptyDistance = 1e30f;
+
+class CubeShadowPass {
+ public:
+  CubeShadowPass();
+
+  template <typename F>
+  void for_each_program(F&& f) {
+    f(faces_);
+    f(layered_);
+  }
+
+  // (Re)allocates the cube maps at this size. Returns true when anything changed.
+  bool ensure_targets(int size);
+  // Draws the distances. single_pass: one draw per mesh through the layering geometry shader; else six
+  // passes. Counts draws and faces rendered.
+  void draw(const GpuScene& scene, const CubeLightViews& views, const glm::vec3& light_position, bool single_pass,
+            long& draws, long& faces);
+
+  GLuint texture() const { return distance_.id(); }
+  int size() const { return size_; }
+  // One face's distances, bottom row first (GL order), in the face's own orientation.
+  std::vector<float> read_face(int face) const;
+
+ private:
+  ReloadableProgram faces_, layered_;
+  struct FaceUniforms {
+    int generation = -1;
+    Uniform light_view_proj, light_position;
+  } faces_u_;
+  struct LayeredUniforms {
+    int generation = -1;
+    Uniform face_view_proj, light_position;
+  } layered_u_;
+
+  int size_ = 0;
+  GlTexture distance_;  // GL_TEXTURE_CUBE_MAP, R32F, nearest
+  GlTexture depth_;     // GL_TEXTURE_CUBE_MAP, DEPTH_COMPONENT24: the depth test, never sampled
+  GlFramebuffer fbo_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,113 @@
+#include "renderer/shadow_volume_pass.h"
+
+#include <stdexcept>
+
+#include "renderer/adjacency.h"
+
+namespace shadowlab {
+
+ShadowVolumePass::ShadowVolumePass()
+    : program_({"shaders/volume/volume.vert", "shaders/volume/extrude.geom", "shaders/volume/volume.frag", {},
+                {{"lab/volume.glsl", "shaders/volume/volume.glsl"}}}),
+      vao_(GlVertexArray::create()),
+      positions_(GlBuffer::create()),
+      indices_(GlBuffer::create()) {}
+
+bool ShadowVolumePass::set_includes(const std::map<std::string, std::filesystem::path>& includes) {
+  ProgramDesc d = program_.desc();
+  d.includes = includes;
+  if (!d.includes.count("lab/volume.glsl")) d.includes["lab/volume.glsl"] = "shaders/volume/volume.glsl";
+  program_.set_desc(std::move(d));
+  return program_.rebuild();
+}
+
+void ShadowVolumePass::set_scene(const Scene& scene) {
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> indices;
+  report_.clear();
+  for (const Mesh& mesh : scene.meshes) {
+    if (!mesh.casts_shadow || mesh.triangle_count() == 0) continue;  // the oracle ignores them too
+    const Adjacency adjacency = build_adjacency(mesh);
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), mesh.positions.begin(), mesh.positions.end());
+    for (std::uint32_t i : adjacency.indices) indices.push_back(base + i);
+    report_.push_back({mesh.name, mesh.triangle_count(), adjacency.edges, adjacency.open_edges,
+                       adjacency.non_manifold_edges, adjacency.inconsistent_edges});
+  }
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, positions_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size() * sizeof(glm::vec3)), positions.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+               GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glBindVertexArray(0);
+  index_count_ = indices.size();
+}
+
+void ShadowVolumePass::draw_volumes(const glm::mat4& view_proj, const glm::vec4& light, bool caps,
+                                    const glm::vec4& color, long& draws) {
+  if (!program_.valid()) throw std::runtime_error("shadow volume program failed to build:\n" + program_.error());
+  if (u_.generation != program_.generation()) {
+    const GLuint id = program_.id();
+    u_ = {program_.generation(), Uniform(id, "u_view_proj"), Uniform(id, "u_light"), Uniform(id, "u_caps"),
+          Uniform(id, "u_color")};
+  }
+  glUseProgram(program_.id());
+  u_.view_proj.set(view_proj);
+  u_.light.set(light);
+  u_.caps.set(caps ? 1 : 0);
+  u_.color.set(color);
+  glBindVertexArray(vao_.id());
+  glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
+  ++draws;
+}
+
+void ShadowVolumePass::draw_stencil(const glm::mat4& view_proj, const glm::vec4& light, bool z_fail, long& draws) {
+  // 2. Only the stencil changes: no colour, no depth writes, but the depth test against the scene.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_DEPTH_CLAMP);  // the points at infinity land exactly on the far plane: keep them
+  glDisable(GL_CULL_FACE);   // both sides in one draw, each with its own stencil operation
+  // The near caps lie exactly on the occluders' lit faces: pushing the volumes a hair back makes those
+  // faces fail the depth test consistently instead of fighting over equal depths.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xFF);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  if (z_fail) {
+    // Carmack's reverse: count the faces behind the surface, out to infinity.
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+  } else {
+    // Count the faces between the eye and the surface: entering a volume +1, leaving it -1.
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+  }
+  draw_volumes(view_proj, light, z_fail, glm::vec4(0.0f), draws);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_DEPTH_CLAMP);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+}
+
+void ShadowVolumePass::draw_wireframe(const glm::mat4& view_proj, const glm::vec4& light, bool caps, long& draws) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_DEPTH_CLAMP);
+  glDisable(GL_CULL_FACE);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  draw_volumes(view_proj, light, caps, glm::vec4(1.0f, 0.85f, 0.1f, 1.0f), draws);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_DEPTH_CLAMP);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
+
+}  // namespace shadowlab

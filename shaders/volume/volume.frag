@@ -1,0 +1,5 @@
+#version 330 core
+// Shadow volumes: the stencil pass writes no colour (colour mask off); the wireframe debug view does.
+uniform vec4 u_color;
+layout(location = 0) out vec4 o_color;
+void main() { o_color = u_color; }

@@ -1,0 +1,277 @@
+// Headless GL tests of the blur methods (issue 6): the fast separable blur and the brute-force 2D blur
+// give the taught separable blur's moments (and the CPU reference's) within the bounds below, for radii
+// 1..16 and both moment formats; radius 0 runs no blur pass whatever the method; no NaN or Inf; a
+// change of method re-runs the moments and the blur; the benchmark function returns what it promises.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+
+#include "renderer/blur_bench.h"
+#include "renderer/gl_objects.h"
+#include "renderer/moments_pass.h"
+#include "renderer/renderer.h"
+#include "renderer/vsm_params.h"
+#include "tests/gl_fixture.h"
+
+namespace shadowlab {
+namespace {
+
+constexpr const char* kMethods[] = {"separable", "fast", "brute2d"};
+constexpr int kRadii[] = {1, 2, 4, 8, 16};
+
+// Per texel, both channels. RG32F: the issue's 1e-4 (float sums differ by ~1e-7). RG16F stores each
+// pass's result in half precision (ulp 9.8e-4 in [1, 2), 4.9e-4 just below 1): two methods can land on
+// neighbouring halves, so against the taught blur the bound is one ulp at [1, 2) (measured: exactly
+// that, 9.77e-4). Against the exact CPU reference both roundings add up, and llvmpipe's conversion to
+// half does not round to nearest (the taught shader itself is 1.8e-3 off on values in [1, 1.5]): two
+// ulps.
+double bound(const std::string& format) { return format == "RG16F" ? 9.8e-4 : 1e-4; }
+double cpu_bound(const std::string& format) { return format == "RG16F" ? 1.96e-3 : 1e-4; }
+
+struct Diff {
+  double max_abs = 0.0;
+  long non_finite = 0;
+};
+
+template <typename T>
+Diff compare(const std::vector<float>& a, const std::vector<T>& b) {
+  Diff d;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!std::isfinite(a[i]) || !std::isfinite(static_cast<double>(b[i]))) {
+      ++d.non_finite;
+      continue;
+    }
+    d.max_abs = std::max(d.max_abs, std::abs(static_cast<double>(a[i]) - static_cast<double>(b[i])));
+  }
+  return d;
+}
+
+class BlurTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    for (const auto& spec : vsm_param_specs()) params.declare(spec);
+    params.apply_assignment("view.debug_quad=false");
+  }
+  static LabHooks moments_hooks() {
+    LabHooks hooks;
+    hooks.technique = ShadowTechnique::Moments;
+    return hooks;
+  }
+  FrameRequest request() const {
+    FrameRequest req;
+    req.camera = OrbitCamera::framing(scene.bounds());
+    req.width = 64;
+    req.height = 64;
+    return req;
+  }
+  Scene scene = make_default_scene();
+  ParamSet params{renderer_param_specs()};
+};
+
+TEST_F(BlurTest, MethodIsDeclaredOnceAndInvalidatesTheShadowMap) {
+  const std::vector<ParamSpec> specs = vsm_param_specs({"vsm.blur_method"});
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_EQ(specs[0].choices, (std::vector<std::string>{"separable", "fast", "brute2d"}));
+  EXPECT_EQ(specs[0].choices.at(static_cast<std::size_t>(specs[0].default_value)), "separable")
+      << "lab 5's students keep the taught shader";
+  EXPECT_FALSE(specs[0].tooltip.empty());
+  EXPECT_NE(params.apply_assignment("vsm.blur_method=fast") & kInvalidatesShadowMap, 0u);
+  for (const char* name : kMethods) EXPECT_STREQ(blur_method_name(blur_method_from_name(name)), name);
+  EXPECT_THROW(blur_method_from_name("box"), std::invalid_argument);
+}
+
+// The default scene's moments at 512^2 (1024^2 gives the same figures; brute2d at r = 16 there costs
+// seconds per pass on llvmpipe).
+TEST_F(BlurTest, AllMethodsMatchTheTaughtBlurAndTheCpuReference) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  params.apply_assignment("shadow.map_size=512");
+  for (const char* format : {"RG32F", "RG16F"}) {
+    params.set_from_string("vsm.format", format);
+    params.set("vsm.blur_radius", 0);
+    r.render(params, request());
+    int n = 0;
+    const std::vector<float> raw = r.read_moments(&n);
+    ASSERT_EQ(n, 512);
+    for (int radius : kRadii) {
+      const double sigma = 0.5 * radius;
+      params.set("vsm.blur_radius", radius);
+      params.set("vsm.blur_sigma", sigma);
+      const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, sigma);
+      std::map<std::string, std::vector<float>> out;
+      for (const char* method : kMethods) {
+        params.set_from_string("vsm.blur_method", method);
+        r.render(params, request());
+        out[method] = r.read_moments(&n);
+      }
+      for (const char* method : kMethods) {
+        const std::string where = std::string(format) + " radius " + std::to_string(radius) + " " + method;
+        const Diff vs_taught = compare(out[method], out["separable"]);
+        const Diff vs_cpu = compare(out[method], cpu);
+        EXPECT_EQ(vs_taught.non_finite, 0) << where;
+        EXPECT_LE(vs_taught.max_abs, bound(format)) << where << " against the taught separable blur";
+        EXPECT_LE(vs_cpu.max_abs, cpu_bound(format)) << where << " against the CPU reference";
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", vs_taught.max_abs);
+        RecordProperty(where + " vs separable", text);
+        std::snprintf(text, sizeof text, "%.3g", vs_cpu.max_abs);
+        RecordProperty(where + " vs cpu", text);
+      }
+    }
+  }
+}
+
+// The moments pass on its own, fed a harsh pattern (steps from 0 to 1 right at the borders and between
+// blocks, values above 1), through both paths of the fast blur: compute shaders and the fragment
+// fallback with bilinear taps (whose clamp at the borders is the texture's CLAMP_TO_EDGE).
+TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
+  constexpr int n = 256;
+  std::vector<float> pattern(static_cast<std::size_t>(n) * n * 2);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const bool edge = x < 3 || y < 2 || x >= n - 2 || y >= n - 3;
+      const float z = edge ? 1.0f : ((x / 5 + y / 7) % 3 == 0 ? 0.0f : 0.25f + 0.0029f * static_cast<float>((x * 7 + y * 13) % 256));
+      pattern[(static_cast<std::size_t>(y) * n + x) * 2] = z;
+      pattern[(static_cast<std::size_t>(y) * n + x) * 2 + 1] = z * z + (edge ? 0.5f : 0.0f);
+    }
+  const GlVertexArray vao = GlVertexArray::create();
+  const auto defaults = Renderer::default_includes(ShadowTechnique::Moments);
+  for (const char* format : {"RG32F", "RG16F"}) {
+    MomentsPass m;
+    ASSERT_TRUE(m.set_includes({defaults.begin(), defaults.end()}));
+    m.ensure_targets(n, format, true);
+    EXPECT_EQ(m.fast_path(), MomentsPass::FastPath::Compute) << "llvmpipe has GL 4.5: compute shaders";
+    auto upload = [&] {
+      glBindTexture(GL_TEXTURE_2D, m.texture());
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RG, GL_FLOAT, pattern.data());
+    };
+    upload();
+    const std::vector<float> raw = m.read_moments();
+    for (int radius : kRadii) {
+      const float sigma = 0.5f * static_cast<float>(radius);
+      const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, sigma);
+      upload();
+      m.blur(0, radius, sigma, vao.id());
+      m.blur(1, radius, sigma, vao.id());
+      const std::vector<float> taught = m.read_moments();
+      for (auto path : {MomentsPass::FastPath::Compute, MomentsPass::FastPath::Fragment}) {
+        m.set_fast_path(path);
+        upload();
+        m.blur_fast(0, radius, sigma, vao.id());
+        m.blur_fast(1, radius, sigma, vao.id());
+        const std::vector<float> fast = m.read_moments();
+        const std::string where = std::string(format) + " radius " + std::to_string(radius) +
+                                  (path == MomentsPass::FastPath::Compute ? " compute" : " fragment");
+        const Diff vs_taught = compare(fast, taught), vs_cpu = compare(fast, cpu);
+        EXPECT_EQ(vs_taught.non_finite, 0) << where;
+        EXPECT_LE(vs_taught.max_abs, bound(format)) << where;
+        EXPECT_LE(vs_cpu.max_abs, cpu_bound(format)) << where;
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", vs_taught.max_abs);
+        RecordProperty(where + " vs separable", text);
+      }
+      upload();
+      m.blur_brute2d(radius, sigma, vao.id());
+      const Diff brute = compare(m.read_moments(), taught);
+      EXPECT_EQ(brute.non_finite, 0) << format << " r" << radius;
+      EXPECT_LE(brute.max_abs, bound(format)) << format << " r" << radius << " brute2d";
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_F(BlurTest, RadiusZeroRunsNoBlurPassWhateverTheMethod) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  params.set("vsm.blur_radius", 0);
+  for (const char* method : kMethods) {
+    params.set_from_string("vsm.blur_method", method);
+    const long moments_before = r.stats().moments_passes;
+    r.render(params, request());
+    EXPECT_EQ(r.stats().moments_passes, moments_before + 1) << method << ": the method is an input of the moments";
+    EXPECT_EQ(r.stats().blur_passes, 0) << method;
+    EXPECT_FALSE(r.moments_targets().blur_target) << method;
+    for (const auto& p : r.stats().passes) EXPECT_EQ(p.name.rfind("blur", 0), std::string::npos) << method << " ran " << p.name;
+  }
+}
+
+TEST_F(BlurTest, PassesAndCountersPerMethod) {
+  const int objects_before = live_gl_objects();
+  auto renderer = std::make_unique<Renderer>();
+  Renderer& r = *renderer;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  params.set("vsm.blur_radius", 3);
+  const std::map<std::string, std::vector<std::string>> expected = {
+      {"separable", {"blur_x", "blur_y"}}, {"fast", {"blur_x", "blur_y"}}, {"brute2d", {"blur_2d"}}};
+  for (const char* method : kMethods) {
+    params.set_from_string("vsm.blur_method", method);
+    const long before = r.stats().blur_passes;
+    r.render(params, request());
+    std::vector<std::string> blur_passes;
+    for (const auto& p : r.stats().passes)
+      if (p.name.rfind("blur", 0) == 0) {
+        blur_passes.push_back(p.name);
+        EXPECT_GT(p.gpu_ms, 0.0) << method << " " << p.name;
+      }
+    EXPECT_EQ(blur_passes, expected.at(method)) << method;
+    EXPECT_EQ(r.stats().blur_passes - before, static_cast<long>(expected.at(method).size())) << method;
+    r.render(params, request());  // nothing changed: no pass
+    EXPECT_EQ(r.stats().blur_passes - before, static_cast<long>(expected.at(method).size())) << method;
+  }
+  renderer.reset();
+  EXPECT_EQ(live_gl_objects(), objects_before) << "the fast and brute-force programs are freed too";
+}
+
+TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  params.apply_assignment("shadow.map_size=256");
+  const std::vector<BlurTiming> rows = measure_blur_methods(r, params, {0, 1, 4}, 1);
+  ASSERT_EQ(rows.size(), 6u) << "radius 0 is skipped; three methods per radius";
+  for (const auto& t : rows) {
+    EXPECT_EQ(t.map_size, 256);
+    EXPECT_EQ(t.format, "RG32F");
+    EXPECT_GT(t.ms_x, 0.0) << t.method;
+    EXPECT_EQ(t.ms_y > 0.0, t.method != "brute2d") << t.method;
+    EXPECT_GE(t.ms_total, t.ms_x) << t.method;
+    EXPECT_EQ(t.non_finite, 0) << t.method;
+    EXPECT_LE(t.max_abs_diff_vs_separable, 1e-4) << t.method << " r" << t.radius;
+    if (t.method == "separable") {
+      EXPECT_EQ(t.max_abs_diff_vs_separable, 0.0);
+    }
+  }
+}
+
+// Not a test: the timing table (run with --gtest_also_run_disabled_tests --gtest_filter=*PrintTimings*).
+TEST_F(BlurTest, DISABLED_PrintTimings) {
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  const char* format = std::getenv("BLUR_FORMAT");  // RG32F unless set
+  params.set_from_string("vsm.format", format ? format : "RG32F");
+  {
+    std::vector<int> radii = {1, 2, 4, 8, 16};
+    if (const char* list = std::getenv("BLUR_RADII")) {  // e.g. "1,2"
+      radii.clear();
+      for (const char* c = list; *c; ++c)
+        if (c == list || c[-1] == ',') radii.push_back(std::atoi(c));
+    }
+    const char* frames = std::getenv("BLUR_FRAMES");
+    for (const auto& t : measure_blur_methods(r, params, radii, frames ? std::atoi(frames) : 5))
+      std::printf("%s %4d %-9s r%-2d  x %8.2f  y %8.2f  total %8.2f ms  max|d| %.3g\n", t.format.c_str(), t.map_size,
+                  t.method.c_str(), t.radius, t.ms_x, t.ms_y, t.ms_total, t.max_abs_diff_vs_separable);
+  }
+}
+
+}  // namespace
+}  // namespace shadowlab

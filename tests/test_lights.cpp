@@ -1,0 +1,258 @@
+// Headless GL tests of the light types and techniques of labs 6-9: the cube shadow map (six passes
+// and one layered pass agree; a point light among the objects shadows every side), stencil shadow
+// volumes (the camera inside a volume: z-fail right, z-pass wrong; the adjacency report names open
+// edges), targets allocated only when used, and the geometry-shader debug views.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+#include "labs/check.h"
+#include "labs/lab.h"
+#include "renderer/gl_objects.h"
+#include "renderer/metrics.h"
+#include "renderer/renderer.h"
+#include "renderer/shadow_volume_pass.h"
+#include "tests/gl_fixture.h"
+
+namespace shadowlab {
+namespace {
+
+class LightsTest : public GlTest {
+ protected:
+  FrameRequest request(const OrbitCamera& camera, int w = 320, int h = 180) {
+    FrameRequest req;
+    req.camera = camera;
+    req.width = w;
+    req.height = h;
+    req.gbuffer = true;
+    return req;
+  }
+  ParamSet lab_set(std::initializer_list<const char*> assignments) {
+    ParamSet p(renderer_param_specs());
+    for (const auto& spec : technique_param_specs({"light.type", "light.position_x", "light.position_y",
+                                                   "light.position_z", "light.cone_deg", "volume.method",
+                                                   "point.single_pass", "pcf.kernel", "pcf.hardware"}))
+      p.declare(spec);
+    p.apply_assignment("view.debug_quad=false");
+    for (const char* a : assignments) p.apply_assignment(a);
+    return p;
+  }
+  // Agreement with the oracle over interior pixels of the renderer's last frame. Shadow volumes have no
+  // texels: their band is 1 screen pixel; shadow maps use the oracle's band of 2 texels.
+  double agreement(Renderer& r, const Oracle& oracle, bool screen_band = true) {
+    BandSpec band;
+    band.fixed_screen_pixels = screen_band ? 1 : 0;
+    const Truth t = oracle.evaluate(r.read_gbuffer(), oracle_light(r), band);
+    return interior_agreement(compare(t, r.read_visibility()));
+  }
+  Scene scene = make_default_scene();
+};
+
+TEST_F(LightsTest, ZFailStaysRightInsideAVolumeWhereZPassFails) {
+  Renderer r;
+  r.set_scene(scene);
+  LabHooks hooks;
+  hooks.technique = ShadowTechnique::ShadowVolumes;
+  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  const Oracle oracle(scene);
+  // The eye 0.3 above the ground in the big box's shadow (light at azimuth 35, elevation 50).
+  const glm::vec3 eye(-3.67f, 0.3f, -0.68f);
+  const glm::vec3 to_light = direction_from_angles(35.0f, 50.0f);
+  ASSERT_TRUE(oracle.occluded(eye, to_light, std::numeric_limits<float>::infinity()));
+  const OrbitCamera inside = camera_looking_at(eye, {-3.5f, 0.0f, 4.0f}, 0.05f, 100.0f);
+  r.render(lab_set({"volume.method=z-fail"}), request(inside));
+  EXPECT_GE(agreement(r, oracle), 0.995);
+  r.render(lab_set({"volume.method=z-pass"}), request(inside));
+  EXPECT_LT(agreement(r, oracle), 0.5) << "z-pass counts the volume the eye is in once too few";
+  // From outside every volume both methods agree with the truth.
+  const OrbitCamera outside = OrbitCamera::framing(scene.bounds());
+  for (const char* method : {"volume.method=z-fail", "volume.method=z-pass"}) {
+    r.render(lab_set({method}), request(outside));
+    EXPECT_GE(agreement(r, oracle), 0.995) << method;
+  }
+  EXPECT_EQ(r.stats().stencil_passes, 4);
+  EXPECT_EQ(r.stats().shadow_passes, 0) << "shadow volumes need no shadow map";
+}
+
+TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
+  Scene s = scene;
+  Mesh open_box = make_box({3.5f, 0.5f, -3.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f});
+  open_box.name = "open box";
+  open_box.indices.resize(open_box.indices.size() - 6);  // drop the last face: a hole with 4 open edges
+  s.meshes.push_back(open_box);
+  Renderer r;
+  r.set_scene(s);
+  LabHooks hooks;
+  hooks.technique = ShadowTechnique::ShadowVolumes;
+  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  r.render(lab_set({}), request(OrbitCamera::framing(s.bounds())));
+  bool saw_ground = false, saw_open_box = false;
+  for (const auto& m : r.volume_report()) {
+    if (m.name == "ground") {
+      saw_ground = true;
+      EXPECT_EQ(m.open_edges, 4u);  // a single-sided plane is open all round
+    } else if (m.name == "open box") {
+      saw_open_box = true;
+      EXPECT_EQ(m.open_edges, 4u);
+      EXPECT_EQ(m.non_manifold_edges, 0u);
+    } else {
+      EXPECT_TRUE(m.closed_manifold()) << m.name;
+    }
+  }
+  EXPECT_TRUE(saw_ground);
+  EXPECT_TRUE(saw_open_box);
+}
+
+TEST_F(LightsTest, CubeMapSixPassesAndOnePassStoreTheSameDistances) {
+  Renderer r;
+  r.set_scene(scene);
+  LabHooks hooks;
+  hooks.light = LightType::Point;
+  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  const OrbitCamera camera = OrbitCamera::framing(scene.bounds(), 30.0f, 60.0f);
+  r.render(lab_set({"point.single_pass=false"}), request(camera));
+  EXPECT_EQ(r.stats().cube_faces, 6);
+  int size = 0;
+  std::vector<float> six[6];
+  for (int f = 0; f < 6; ++f) six[f] = r.read_cube_face(f, &size);
+  r.render(lab_set({"point.single_pass=true"}), request(camera));
+  EXPECT_EQ(r.stats().cube_faces, 12);
+  for (int f = 0; f < 6; ++f) {
+    const std::vector<float> one = r.read_cube_face(f, &size);
+    ASSERT_EQ(one.size(), six[f].size());
+    for (std::size_t i = 0; i < one.size(); ++i) ASSERT_NEAR(one[i], six[f][i], 1e-5f) << "face " << f << " texel " << i;
+  }
+  // The -Y face looks at the ground 3 units below the light: its centre texel stores about 3.
+  const std::vector<float> down = r.read_cube_face(3, &size);
+  EXPECT_NEAR(down[static_cast<std::size_t>(size / 2) * size + size / 2], 3.0f, 0.05f);
+  // And the shadows agree with the oracle casting toward the light's position.
+  const Oracle oracle(scene);
+  r.render(lab_set({"point.single_pass=true", "shadow.slope_bias=2"}), request(camera));  // lab 8's bias
+  EXPECT_GE(agreement(r, oracle, false), 0.995);
+}
+
+TEST_F(LightsTest, TargetsExistOnlyWhileALabUsesThem) {
+  Renderer r;
+  r.set_scene(scene);
+  const OrbitCamera camera = OrbitCamera::framing(scene.bounds());
+  const int textures_before = live_gl_objects(GlKind::Texture);
+  r.render(lab_set({}), request(camera));
+  const int textures_depth_lab = live_gl_objects(GlKind::Texture) - textures_before;
+  EXPECT_EQ(live_gl_objects(GlKind::Sampler), 0) << "no comparison sampler without hardware PCF";
+  // Hardware PCF: one sampler object, no extra texture.
+  LabHooks pcf;
+  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
+  ASSERT_TRUE(r.set_lab(pcf)) << r.shader_error();
+  r.render(lab_set({"pcf.hardware=true", "pcf.kernel=3"}), request(camera));
+  EXPECT_EQ(live_gl_objects(GlKind::Sampler), 1);
+  // A point light: two cube maps (distance, depth) replace the 2D depth map.
+  LabHooks point;
+  point.light = LightType::Point;
+  ASSERT_TRUE(r.set_lab(point)) << r.shader_error();
+  r.render(lab_set({}), request(camera));
+  EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab + 1);
+  // Back to a directional light: the cube maps are freed.
+  ASSERT_TRUE(r.set_lab({})) << r.shader_error();
+  r.render(lab_set({}), request(camera));
+  EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab);
+  EXPECT_THROW(r.read_cube_face(0, nullptr), std::logic_error);
+}
+
+TEST_F(LightsTest, GeometryShaderDebugViewsDrawOnlyWhenOn) {
+  Renderer r;
+  r.set_scene(scene);
+  const OrbitCamera camera = OrbitCamera::framing(scene.bounds());
+  FrameRequest req = request(camera);
+  req.gbuffer = false;
+  r.render(lab_set({}), req);
+  const auto plain = r.read_color();
+  auto has_pass = [&](const char* name) {
+    for (const auto& p : r.stats().passes)
+      if (p.name == name) return true;
+    return false;
+  };
+  EXPECT_FALSE(has_pass("normals_view"));
+  EXPECT_FALSE(has_pass("volumes_view"));
+  for (const char* view : {"view.normals=true", "view.volumes=true"}) {
+    r.render(lab_set({view}), req);
+    const auto with_view = r.read_color();
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < plain.size(); i += 4)
+      changed += plain[i] != with_view[i] || plain[i + 1] != with_view[i + 1] || plain[i + 2] != with_view[i + 2];
+    EXPECT_GT(changed, 500u) << view;
+    EXPECT_TRUE(has_pass(view[5] == 'n' ? "normals_view" : "volumes_view")) << view;
+  }
+}
+
+// Not a pass/fail timing: prints the median GPU time of each pass per technique (default scene, 1024^2
+// maps, 1280x720), the figures the labs' READMEs quote, and checks that each technique ran its passes.
+TEST_F(LightsTest, PassTimesPerTechnique) {
+  Renderer r;
+  r.set_scene(scene);
+  struct Case {
+    const char* name;
+    LabHooks hooks;
+    std::vector<const char*> set;
+  };
+  LabHooks pcf;
+  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
+  LabHooks spot, point, volumes;
+  spot.light = LightType::Spot;
+  point.light = LightType::Point;
+  volumes.technique = ShadowTechnique::ShadowVolumes;
+  const Case cases[] = {
+      {"directional 1 tap", {}, {}},
+      {"pcf 3x3", pcf, {"pcf.kernel=3"}},
+      {"pcf 9x9", pcf, {"pcf.kernel=9"}},
+      {"pcf hw 3x3", pcf, {"pcf.kernel=3", "pcf.hardware=true"}},
+      {"spot", spot, {"light.position_x=5", "light.position_y=7", "light.position_z=4", "light.cone_deg=40"}},
+      {"point 6 passes", point, {}},
+      {"point 1 pass (GS)", point, {"point.single_pass=true"}},
+      {"volumes z-fail", volumes, {}},
+      {"volumes z-pass", volumes, {"volume.method=z-pass"}},
+      {"volumes z-fail, point", volumes, {"light.type=point"}},
+      {"normals view", {}, {"view.normals=true"}},
+      {"volumes wireframe", volumes, {"view.volumes=true"}},
+  };
+  FrameRequest req = request(OrbitCamera::framing(scene.bounds()), 1280, 720);
+  req.gbuffer = false;
+  for (const auto& c : cases) {
+    ParamSet p = lab_set({"shadow.map_size=1024"});
+    for (const char* a : c.set) p.apply_assignment(a);
+    std::map<std::string, std::vector<double>> ms;
+    for (int frame = 0; frame < 5; ++frame) {
+      ASSERT_TRUE(r.set_lab(c.hooks)) << r.shader_error();  // forces the shadow pass to run again
+      r.render(p, req);
+      if (frame == 0) continue;  // shaders compile during the first frame
+      for (const auto& pass : r.stats().passes) ms[pass.name].push_back(pass.gpu_ms);
+    }
+    std::printf("  %-24s", c.name);
+    double total = 0.0;
+    for (auto& [name, v] : ms) {
+      std::sort(v.begin(), v.end());
+      std::printf(" %s %.1f", name.c_str(), v[v.size() / 2]);
+      total += v[v.size() / 2];
+    }
+    std::printf("  | sum %.1f ms\n", total);
+    EXPECT_TRUE(ms.count("lit")) << c.name;
+  }
+}
+
+TEST_F(LightsTest, EveryNewLabBuildsItsExerciseAndSolution) {
+  Renderer r;
+  r.set_scene(scene);
+  for (int number : {0, 6, 7, 8, 9}) {
+    const Lab* lab = find_lab(number);
+    ASSERT_NE(lab, nullptr) << number;
+    for (Impl impl : {Impl::Exercise, Impl::Solution}) {
+      EXPECT_TRUE(r.set_lab(lab->hooks(impl))) << "lab " << number << " " << impl_name(impl) << ": " << r.shader_error();
+      r.render(lab_params(*lab), request(OrbitCamera::framing(scene.bounds()), 64, 36));
+      EXPECT_TRUE(r.shader_error().empty()) << r.shader_error();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shadowlab
