@@ -22,15 +22,6 @@ GlTexture make_cube(GLenum internal_format, GLenum format, int size) {
   return t;
 }
 
-void check_complete(const char* what) {
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    std::ostringstream s;
-    s << what << " framebuffer is incomplete (status 0x" << std::hex << status << ")";
-    throw std::runtime_error(s.str());
-  }
-}
-
 }  // namespace
 
 CubeShadowPass::CubeShadowPass()
@@ -49,7 +40,7 @@ bool CubeShadowPass::ensure_targets(int size) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0);  // layered: all six faces
   glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-  check_complete("cube shadow (layered)");
+  check_framebuffer("cube shadow (layered)");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   size_ = size;
   return true;

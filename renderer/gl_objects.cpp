@@ -2,6 +2,8 @@
 
 #include <array>
 #include <atomic>
+#include <sstream>
+#include <stdexcept>
 
 namespace shadowlab {
 namespace {
@@ -20,6 +22,26 @@ int live_gl_objects() {
   int total = 0;
   for (const auto& c : live_counts) total += c.load();
   return total;
+}
+
+GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum format, GLenum type, GLenum filter) {
+  GlTexture t = GlTexture::create();
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), width, height, 0, format, type, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void check_framebuffer(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    std::ostringstream s;
+    s << what << " framebuffer is incomplete (status 0x" << std::hex << status << ")";
+    throw std::runtime_error(s.str());
+  }
 }
 
 namespace detail {

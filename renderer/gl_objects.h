@@ -67,4 +67,10 @@ using GlSampler = GlObject<GlKind::Sampler>;
 
 inline GlShader make_shader(GLenum type) { return GlShader::adopt(glCreateShader(type)); }
 
+// A 2D texture with storage, one filter for min and mag, clamped to the edge.
+GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum format, GLenum type, GLenum filter);
+
+// Throws "<what> framebuffer is incomplete (status 0x...)" unless the bound framebuffer is complete.
+void check_framebuffer(const char* what);
+
 }  // namespace shadowlab

@@ -11,16 +11,9 @@ namespace shadowlab {
 namespace {
 
 GlTexture make_moments_texture(GLenum internal_format, int size) {
-  GlTexture t = GlTexture::create();
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), size, size, 0, GL_RG, GL_FLOAT, nullptr);
   // Linear filtering is what VSM is for: the average of moments is still a pair of moments, while the
   // average of depths compared with one depth means nothing.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
+  return make_texture_2d(internal_format, size, size, GL_RG, GL_FLOAT, GL_LINEAR);
 }
 
 GlFramebuffer make_color_fbo(GLuint texture, GLuint depth_renderbuffer, const char* what) {
@@ -29,12 +22,7 @@ GlFramebuffer make_color_fbo(GLuint texture, GLuint depth_renderbuffer, const ch
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
   if (depth_renderbuffer)
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_renderbuffer);
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    std::ostringstream s;
-    s << what << " framebuffer is incomplete (status 0x" << std::hex << status << ")";
-    throw std::runtime_error(s.str());
-  }
+  check_framebuffer(what);
   return fbo;
 }
 

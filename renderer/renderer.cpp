@@ -126,26 +126,6 @@ GLenum depth_internal_format(const std::string& name) {
   return GL_DEPTH_COMPONENT24;
 }
 
-GlTexture make_texture(GLenum internal_format, int w, int h, GLenum format, GLenum type, GLenum filter) {
-  GlTexture t = GlTexture::create();
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal_format), w, h, 0, format, type, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
-
-void check_framebuffer(const char* what) {
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    std::ostringstream s;
-    s << what << " framebuffer is incomplete (status 0x" << std::hex << status << ")";
-    throw std::runtime_error(s.str());
-  }
-}
-
 // Times one pass with a GL_TIME_ELAPSED query, read at once: on llvmpipe the pass has finished by then
 // anyway, and it keeps per-pass figures exact for the benchmark. A GPU time cannot exceed the wall time
 // around it; llvmpipe breaks that for the first timed pass of a new context's first frame (the query's
@@ -321,7 +301,7 @@ void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& reques
     if (!cube_) cube_ = std::make_unique<CubeShadowPass>();
     if (cube_->ensure_targets(size)) shadow_state_.clear();
   } else if (size != t.shadow_size || format != t.depth_format) {
-    t.shadow_depth = make_texture(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
+    t.shadow_depth = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
     t.shadow_fbo = GlFramebuffer::create();
     glBindFramebuffer(GL_FRAMEBUFFER, t.shadow_fbo.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.shadow_depth.id(), 0);
@@ -334,7 +314,7 @@ void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& reques
   }
   if (request.width != t.width || request.height != t.height || request.gbuffer != t.gbuffer || volumes != t.stencil) {
     const int w = request.width, h = request.height;
-    t.color = make_texture(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
+    t.color = make_texture_2d(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
     t.depth = GlRenderbuffer::create();
     glBindRenderbuffer(GL_RENDERBUFFER, t.depth.id());
     glRenderbufferStorage(GL_RENDERBUFFER, volumes ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24, w, h);
@@ -349,9 +329,9 @@ void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& reques
     t.position = {};
     t.normal = {};
     if (request.gbuffer) {
-      t.visibility = make_texture(GL_R32F, w, h, GL_RED, GL_FLOAT, GL_NEAREST);
-      t.position = make_texture(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
-      t.normal = make_texture(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
+      t.visibility = make_texture_2d(GL_R32F, w, h, GL_RED, GL_FLOAT, GL_NEAREST);
+      t.position = make_texture_2d(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
+      t.normal = make_texture_2d(GL_RGBA32F, w, h, GL_RGBA, GL_FLOAT, GL_NEAREST);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, t.visibility.id(), 0);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, t.position.id(), 0);
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, t.normal.id(), 0);
