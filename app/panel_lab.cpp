@@ -156,9 +156,13 @@ void draw_compare(PanelModel& m, PanelActions& a) {
 }
 
 void draw_stats(PanelModel& m) {
-  if (!m.stats || !ImGui::CollapsingHeader("GPU time per pass")) return;
+  if (!m.stats || !ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) return;
   for (const auto& p : m.stats->passes) ImGui::Text("%-12s %7.2f ms%s", p.name.c_str(), p.gpu_ms, p.wall_clock ? " (wall)" : "");
+  if (!m.stats->passes.empty() && m.stats->passes.front().wall_clock)
+    ImGui::TextDisabled("(wall): glFinish-bracketed time; a software rasteriser's real cost");
   ImGui::Text("shadow passes run: %ld of %ld frames", m.stats->shadow_passes, m.stats->frames);
+  ImGui::Text("since start: %ld draws, %ld casters culled,", m.stats->draws, m.stats->casters_culled);
+  ImGui::Text("  %.1f M shadow texels written", static_cast<double>(m.stats->shadow_texels_written) * 1e-6);
   ImGui::Text("%zu triangles, scene: %s", m.triangles, m.scene_name.c_str());
 }
 

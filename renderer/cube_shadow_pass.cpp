@@ -47,7 +47,7 @@ bool CubeShadowPass::ensure_targets(int size) {
 }
 
 void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, const glm::vec3& light_position,
-                          bool single_pass, long& draws, long& faces) {
+                          bool single_pass, bool cull_casters, long& draws, long& faces, long& culled) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   const GLenum color = GL_COLOR_ATTACHMENT0;
   glDrawBuffers(1, &color);
@@ -58,13 +58,13 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
   glDisable(GL_CULL_FACE);
   const float empty[4] = {kCubeEmptyDistance, 0.0f, 0.0f, 0.0f};
   const float far_depth = 1.0f;
-  auto draw_casters = [&] {
-    scene.bind();
-    for (const auto& range : scene.ranges()) {
-      if (!range.casts_shadow) continue;
-      scene.draw(range);
-      ++draws;
-    }
+  glm::mat4 view_proj[6];
+  for (int f = 0; f < 6; ++f) view_proj[f] = views.projection * views.view[f];
+  // A caster outside every face's frustum (single pass) or outside this face's (six passes) is not drawn.
+  auto draw_casters = [&](const glm::mat4* faces_view_proj, int count) {
+    const auto counts = scene.draw_casters(faces_view_proj, count, cull_casters);
+    draws += counts.drawn;
+    culled += counts.culled;
   };
   if (single_pass) {
     // 1. All six faces attached at once (layered); the geometry shader picks the face per triangle.
@@ -77,12 +77,10 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
                     Uniform(layered_.id(), "u_light_position")};
     }
     glUseProgram(layered_.id());
-    glm::mat4 view_proj[6];
-    for (int f = 0; f < 6; ++f) view_proj[f] = views.projection * views.view[f];
     if (layered_u_.face_view_proj.present())
       glUniformMatrix4fv(glGetUniformLocation(layered_.id(), "u_face_view_proj[0]"), 6, GL_FALSE, &view_proj[0][0][0]);
     layered_u_.light_position.set(light_position);
-    draw_casters();
+    draw_casters(view_proj, 6);
     faces += 6;
   } else {
     // 1..6. One face at a time: attach it, clear it, draw the scene through that face's view.
@@ -97,8 +95,8 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, target, depth_.id(), 0);
       glClearBufferfv(GL_COLOR, 0, empty);
       glClearBufferfv(GL_DEPTH, 0, &far_depth);
-      faces_u_.light_view_proj.set(views.projection * views.view[f]);
-      draw_casters();
+      faces_u_.light_view_proj.set(view_proj[f]);
+      draw_casters(&view_proj[f], 1);
       ++faces;
     }
   }

@@ -38,9 +38,10 @@ class CubeShadowPass {
   // (Re)allocates the cube maps at this size. Returns true when anything changed.
   bool ensure_targets(int size);
   // Draws the distances. single_pass: one draw per mesh through the layering geometry shader; else six
-  // passes. Counts draws and faces rendered.
+  // passes. Skips the casters outside a face's frustum (outside all six in one pass) when cull_casters.
+  // Counts draws, faces rendered and casters culled.
   void draw(const GpuScene& scene, const CubeLightViews& views, const glm::vec3& light_position, bool single_pass,
-            long& draws, long& faces);
+            bool cull_casters, long& draws, long& faces, long& culled);
 
   GLuint texture() const { return distance_.id(); }
   int size() const { return size_; }

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "renderer/light.h"
+
 namespace shadowlab {
 
 namespace {
@@ -49,6 +51,23 @@ GpuScene::GpuScene(const Scene& scene)
 void GpuScene::draw(const Range& range) const {
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(range.index_count), GL_UNSIGNED_INT,
                  reinterpret_cast<void*>(static_cast<std::uintptr_t>(range.first_index) * sizeof(std::uint32_t)));
+}
+
+GpuScene::CasterCounts GpuScene::draw_casters(const glm::mat4* light_view_projs, int count, bool cull) const {
+  bind();
+  CasterCounts counts;
+  for (const auto& range : ranges_) {
+    if (!range.casts_shadow) continue;
+    bool inside = !cull;
+    for (int i = 0; i < count && !inside; ++i) inside = !box_outside_clip_volume(range.bounds, light_view_projs[i]);
+    if (!inside) {
+      ++counts.culled;
+      continue;
+    }
+    draw(range);
+    ++counts.drawn;
+  }
+  return counts;
 }
 
 }  // namespace shadowlab

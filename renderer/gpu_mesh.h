@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "renderer/gl_objects.h"
 #include "renderer/scene.h"
 
@@ -25,6 +27,13 @@ class GpuScene {
   void bind() const { glBindVertexArray(vao_.id()); }
   // Draws one mesh (the VAO must be bound).
   void draw(const Range& range) const;
+  // Binds the VAO and draws the shadow casters whose bounds reach into the light's volume (the clip
+  // volume of any of the given view-projections); the others cannot write a texel, so they are not
+  // drawn (unless cull is false: then all are). Counts both.
+  struct CasterCounts {
+    long drawn = 0, culled = 0;
+  };
+  CasterCounts draw_casters(const glm::mat4* light_view_projs, int count, bool cull = true) const;
   const std::vector<Range>& ranges() const { return ranges_; }
   std::size_t triangle_count() const { return triangles_; }
 

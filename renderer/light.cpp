@@ -150,4 +150,18 @@ OrbitCamera OrbitCamera::framing(const Bounds& bounds, float yaw_deg, float pitc
   return cam;
 }
 
+bool box_outside_clip_volume(const Bounds& box, const glm::mat4& view_proj) {
+  if (box.empty()) return true;
+  glm::vec4 clip[8];
+  for (int i = 0; i < 8; ++i) clip[i] = view_proj * glm::vec4(box.corner(i), 1.0f);
+  // Plane k: axis k / 2, side +1 (x <= w) or -1 (x >= -w); a corner is outside when side * x > w.
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      bool all_outside = true;
+      for (int i = 0; i < 8 && all_outside; ++i) all_outside = side * clip[i][axis] > clip[i].w;
+      if (all_outside) return true;
+    }
+  return false;
+}
+
 }  // namespace shadowlab

@@ -27,6 +27,12 @@ struct LightView {
   glm::mat4 view_projection() const { return projection * view; }
 };
 
+// True when the box lies wholly outside the clip volume of view_proj (all eight corners beyond one of
+// its six planes, tested in homogeneous clip space, so perspective and points behind the eye are
+// handled): nothing in the box can be rasterised through that matrix. Conservative: a box that only
+// straddles the volume's corner regions counts as inside. An empty box is outside.
+bool box_outside_clip_volume(const Bounds& box, const glm::mat4& view_proj);
+
 // The course's task 2: the light's view centred on the bounding box, axes X, Y orthogonal to the light
 // direction Z, each half-length the largest |(V - C) . axis| over the box's 8 corners, so every corner
 // maps into [-1, 1]^3 and the box touches the boundary on every axis.

@@ -201,7 +201,8 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
   return changed;
 }
 
-void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, long& draws) {
+void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, bool cull_casters,
+                               long& draws, long& culled) {
   if (moments_u_.generation != moments_.generation())
     moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj")};
   glBindFramebuffer(GL_FRAMEBUFFER, moments_fbo_.id());
@@ -222,12 +223,9 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   }
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);
-  scene.bind();
-  for (const auto& range : scene.ranges()) {
-    if (!range.casts_shadow) continue;
-    scene.draw(range);
-    ++draws;
-  }
+  const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters);
+  draws += counts.drawn;
+  culled += counts.culled;
   glDisable(GL_CULL_FACE);
 }
 

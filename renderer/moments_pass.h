@@ -87,7 +87,8 @@ class MomentsPass {
   bool ensure_targets(int size, const std::string& format, bool blur);
 
   // 1. The moments of the nearest surface per texel, from the light. cull: 0 none, 1 front, 2 back.
-  void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, long& draws);
+  void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, bool cull_casters, long& draws,
+                    long& culled);
   // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
   // Needs ensure_targets(..., blur = true).
   void blur(int direction, int radius, float sigma, GLuint empty_vao);

@@ -24,7 +24,8 @@ nlohmann::json FrameStats::to_json() const {
   }
   return {{"gpu_ms", passes_json}, {"gpu_ms_from_wall_clock", wall_clock}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
           {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"cube_faces", cube_faces},
-          {"stencil_passes", stencil_passes}, {"draws", draws}};
+          {"stencil_passes", stencil_passes}, {"draws", draws}, {"casters_culled", casters_culled},
+          {"shadow_texels_written", shadow_texels_written}};
 }
 
 std::map<std::string, std::string> Renderer::default_includes(ShadowTechnique technique, LightType light) {
@@ -126,14 +127,15 @@ GLenum depth_internal_format(const std::string& name) {
   return GL_DEPTH_COMPONENT24;
 }
 
-// Times one pass with a GL_TIME_ELAPSED query, read at once: on llvmpipe the pass has finished by then
-// anyway, and it keeps per-pass figures exact for the benchmark. A GPU time cannot exceed the wall time
-// around it; llvmpipe breaks that for the first timed pass of a new context's first frame (the query's
-// start reads as 0, giving the machine's uptime: 3.3e6 ms measured), so there the glFinish-bracketed
-// wall time is used instead (within ~0.3 ms of the query where both work, shared/NOTES.md) and the pass
-// is marked. Later frames measured clean (test PassTimesArePlausible).
+// Times one pass: a GL_TIME_ELAPSED query read at once, and the wall time between two glFinish calls
+// around it. On a GPU the query is the figure (a GPU time cannot exceed the wall time around it; if it
+// does, the wall time is used and the pass marked). On llvmpipe the "GPU" is the CPU, so the wall time
+// is the pass's true cost, and its queries are not: they read 0.01-0.3 ms for passes that draw into the
+// framebuffer the previous pass drew into (the stencil shadow volumes' three passes, a lit pass after a
+// skipped shadow pass) against 1.1-16.6 ms of wall time, and the first query of a new context reads the
+// machine's uptime (3.3e6 ms). There every pass uses the wall time and is marked.
 template <typename F>
-void timed(GLuint query, const char* name, FrameStats& stats, F&& pass) {
+void timed(GLuint query, const char* name, FrameStats& stats, bool software, F&& pass) {
   glFinish();
   const auto start = std::chrono::steady_clock::now();
   glBeginQuery(GL_TIME_ELAPSED, query);
@@ -144,8 +146,26 @@ void timed(GLuint query, const char* name, FrameStats& stats, F&& pass) {
   glFinish();
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const double gpu_ms = static_cast<double>(ns) * 1e-6;
-  const bool plausible = gpu_ms <= wall_ms + 1.0;
-  stats.passes.push_back({name, plausible ? gpu_ms : wall_ms, !plausible});
+  const bool use_wall = software || gpu_ms > wall_ms + 1.0;
+  stats.passes.push_back({name, use_wall ? wall_ms : gpu_ms, use_wall, wall_ms});
+}
+
+// Runs draws and returns how many fragments passed the depth test (texels written, overdraw included).
+template <typename F>
+long count_samples(GLuint query, F&& draws) {
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  draws();
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samples = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+  return static_cast<long>(samples);
+}
+
+bool is_software_rasterizer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer ? renderer : "";
+  return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
+         name.find("SwiftShader") != std::string::npos;
 }
 
 }  // namespace
@@ -154,7 +174,9 @@ Renderer::Renderer()
     : targets_(std::make_unique<Targets>()),
       programs_(std::make_unique<Programs>()),
       empty_vao_(GlVertexArray::create()),
-      timer_(GlQuery::create()) {
+      timer_(GlQuery::create()),
+      samples_(GlQuery::create()),
+      software_rasterizer_(is_software_rasterizer()) {
   programs_->shadow_depth = ReloadableProgram({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}});
   programs_->debug_quad = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}});
   programs_->normals =
@@ -399,6 +421,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     state.append(reinterpret_cast<const char*>(&light_view_.projection), sizeof(glm::mat4));
     state += params.get_choice("shadow.cull") + (hooks_.shadow_cull_override ? std::to_string(hooks_.shadow_cull_override()) : "");
     state += light_type_name(light_type_);
+    state += params.get_bool("shadow.cull_casters") ? " cull-casters" : " all-casters";
     state.append(reinterpret_cast<const char*>(&light_position_), sizeof(glm::vec3));
     const bool point = light_type_ == LightType::Point;
     if (point) state += technique_param(params, "point.single_pass") != 0.0 ? " single" : " six";
@@ -416,29 +439,33 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
         moments_passes(params);
       } else if (point) {
         const bool single = technique_param(params, "point.single_pass") != 0.0;
-        timed(timer_.id(), "cube_shadow", stats_, [&] {
-          cube_->draw(*gpu_scene_, cube_views_, light_position_, single, stats_.draws, stats_.cube_faces);
+        timed(timer_.id(), "cube_shadow", stats_, software_rasterizer_, [&] {
+          stats_.shadow_texels_written += count_samples(samples_.id(), [&] {
+            cube_->draw(*gpu_scene_, cube_views_, light_position_, single, params.get_bool("shadow.cull_casters"),
+                        stats_.draws, stats_.cube_faces, stats_.casters_culled);
+          });
         });
       } else {
-        timed(timer_.id(), "shadow", stats_, [&] { shadow_pass(params); });
+        timed(timer_.id(), "shadow", stats_, software_rasterizer_,
+              [&] { stats_.shadow_texels_written += count_samples(samples_.id(), [&] { shadow_pass(params); }); });
       }
       ++stats_.shadow_passes;
       shadow_state_ = state;
     }
 
     // 3. Lit pass from the camera, reading the shadow map (or the moments).
-    timed(timer_.id(), "lit", stats_, [&] { lit_pass(params, request); });
+    timed(timer_.id(), "lit", stats_, software_rasterizer_, [&] { lit_pass(params, request); });
   }
 
   // 4. Debug views.
   if (hooks_.technique == ShadowTechnique::Moments && vsm_param(params, "vsm.show_remap") != 0.0)
-    timed(timer_.id(), "remap_view", stats_, [&] { remap_view_pass(params); });
-  if (params.get_bool("view.normals")) timed(timer_.id(), "normals_view", stats_, [&] { normals_pass(params); });
+    timed(timer_.id(), "remap_view", stats_, software_rasterizer_, [&] { remap_view_pass(params); });
+  if (params.get_bool("view.normals")) timed(timer_.id(), "normals_view", stats_, software_rasterizer_, [&] { normals_pass(params); });
   if (params.get_bool("view.volumes"))
-    timed(timer_.id(), "volumes_view", stats_, [&] { volumes_wireframe_pass(params); });
+    timed(timer_.id(), "volumes_view", stats_, software_rasterizer_, [&] { volumes_wireframe_pass(params); });
   const bool has_depth_map = !volumes && light_type_ != LightType::Point;
   if (has_depth_map && params.get_bool("view.debug_quad"))
-    timed(timer_.id(), "debug_quad", stats_, [&] { debug_quad_pass(params); });
+    timed(timer_.id(), "debug_quad", stats_, software_rasterizer_, [&] { debug_quad_pass(params); });
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   stats_.cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
@@ -453,9 +480,9 @@ void Renderer::shadow_volume_passes(const ParamSet& params, const FrameRequest& 
   ShadowVolumePass& volumes = volume_pass();
   const bool z_fail = technique_choice(params, "volume.method") == "z-fail";
   // 2a. The scene with ambient light only: colour, depth (and the G-buffer, visibility 0).
-  timed(timer_.id(), "ambient", stats_, [&] { draw_scene_pass(params, request, 1); });
+  timed(timer_.id(), "ambient", stats_, software_rasterizer_, [&] { draw_scene_pass(params, request, 1); });
   // 2b. The volumes into the stencil buffer.
-  timed(timer_.id(), "volumes", stats_, [&] {
+  timed(timer_.id(), "volumes", stats_, software_rasterizer_, [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, targets_->view_fbo.id());
     glViewport(0, 0, targets_->width, targets_->height);
     glClearStencil(0);
@@ -464,7 +491,7 @@ void Renderer::shadow_volume_passes(const ParamSet& params, const FrameRequest& 
   });
   ++stats_.stencil_passes;
   // 3. The light's share, added where no volume was counted (stencil == 0).
-  timed(timer_.id(), "lit", stats_, [&] { draw_scene_pass(params, request, 2); });
+  timed(timer_.id(), "lit", stats_, software_rasterizer_, [&] { draw_scene_pass(params, request, 2); });
   glDisable(GL_STENCIL_TEST);
 }
 
@@ -587,12 +614,10 @@ void Renderer::shadow_pass(const ParamSet& params) {
   }
   glUseProgram(p.shadow_depth.id());
   p.shadow.light_view_proj.set(light_view_.view_projection());
-  gpu_scene_->bind();
-  for (const auto& range : gpu_scene_->ranges()) {
-    if (!range.casts_shadow) continue;
-    gpu_scene_->draw(range);
-    ++stats_.draws;
-  }
+  const glm::mat4 light_view_proj = light_view_.view_projection();
+  const auto counts = gpu_scene_->draw_casters(&light_view_proj, 1, params.get_bool("shadow.cull_casters"));
+  stats_.draws += counts.drawn;
+  stats_.casters_culled += counts.culled;
   glDisable(GL_CULL_FACE);
 }
 
@@ -601,8 +626,13 @@ void Renderer::moments_passes(const ParamSet& params) {
   const int cull =
       hooks_.shadow_cull_override ? hooks_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
   // 2a. The moments (z, z^2 + slope term) of the nearest surface per texel.
-  timed(timer_.id(), "moments", stats_,
-        [&] { m.draw_moments(*gpu_scene_, light_view_.view_projection(), cull, stats_.draws); });
+  timed(timer_.id(), "moments", stats_, software_rasterizer_,
+        [&] {
+          stats_.shadow_texels_written += count_samples(samples_.id(), [&] {
+            m.draw_moments(*gpu_scene_, light_view_.view_projection(), cull, params.get_bool("shadow.cull_casters"),
+                           stats_.draws, stats_.casters_culled);
+          });
+        });
   ++stats_.moments_passes;
   // 2b. The Gaussian over the moments: X then Y (the taught shader or the fast one), or one 2D pass
   // and its copy back into A (brute2d, timed together as "blur_2d"). Radius 0 runs none of them (and
@@ -611,13 +641,16 @@ void Renderer::moments_passes(const ParamSet& params) {
   const auto sigma = static_cast<float>(vsm_param(params, "vsm.blur_sigma"));
   if (radius > 0) {
     const BlurMethod method = blur_method_from_name(vsm_choice(params, "vsm.blur_method"));
+    // Every blur writes the whole map once per direction (brute 2D: once, and once more copying back).
+    const long map_texels = static_cast<long>(m.size()) * m.size();
+    stats_.shadow_texels_written += 2 * map_texels;
     if (method == BlurMethod::Brute2D) {
-      timed(timer_.id(), "blur_2d", stats_, [&] { m.blur_brute2d(radius, sigma, empty_vao_.id()); });
+      timed(timer_.id(), "blur_2d", stats_, software_rasterizer_, [&] { m.blur_brute2d(radius, sigma, empty_vao_.id()); });
       stats_.blur_passes += 1;
     } else {
       const bool fast = method == BlurMethod::Fast;
       for (int direction : {0, 1})
-        timed(timer_.id(), direction == 0 ? "blur_x" : "blur_y", stats_, [&] {
+        timed(timer_.id(), direction == 0 ? "blur_x" : "blur_y", stats_, software_rasterizer_, [&] {
           fast ? m.blur_fast(direction, radius, sigma, empty_vao_.id()) : m.blur(direction, radius, sigma, empty_vao_.id());
         });
       stats_.blur_passes += 2;

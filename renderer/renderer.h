@@ -63,13 +63,14 @@ struct LabHooks {
 
 struct PassTiming {
   std::string name;
-  double gpu_ms = 0.0;
-  bool wall_clock = false;  // the timer query was implausible; gpu_ms is the glFinish-bracketed wall time
+  double gpu_ms = 0.0;      // the pass's cost: its timer query, or its wall time where that is the truth
+  bool wall_clock = false;  // gpu_ms is the glFinish-bracketed wall time (see timed() in renderer.cpp)
+  double wall_ms = 0.0;     // the glFinish-bracketed wall time around the pass, always measured
 };
 
 struct FrameStats {
   std::vector<PassTiming> passes;  // this frame's passes, in order, with GPU time (GL_TIME_ELAPSED)
-  double cpu_ms = 0.0;
+  double cpu_ms = 0.0;  // wall time of render(), passes included (each is finished before the next)
   // Counters over the renderer's lifetime, so tests can see what was skipped.
   long frames = 0;
   long shadow_passes = 0;   // depth or moments passes
@@ -78,6 +79,12 @@ struct FrameStats {
   long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)
   long stencil_passes = 0;  // shadow-volume stencil passes
   long draws = 0;
+  // Shadow casters not drawn into a shadow map (or cube face) because their bounds lie outside the
+  // light's volume: they could not have written a texel.
+  long casters_culled = 0;
+  // Fragments that passed the depth test in the shadow passes (GL_SAMPLES_PASSED; a texel written twice
+  // counts twice), plus every texel a blur pass wrote.
+  long shadow_texels_written = 0;
   nlohmann::json to_json() const;
 };
 
@@ -188,6 +195,10 @@ class Renderer {
   LabHooks hooks_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   GlQuery timer_;
+  GlQuery samples_;  // GL_SAMPLES_PASSED around the shadow passes' draws: FrameStats::shadow_texels_written
+  // A software rasteriser (llvmpipe) runs the "GPU" work on the CPU: its glFinish-bracketed wall time is
+  // the pass's true cost, and its timer queries under-report some passes (see timed()).
+  bool software_rasterizer_ = false;
 
   LightView light_view_;
   glm::vec3 to_light_{0, 1, 0};

@@ -30,6 +30,10 @@ std::vector<ParamSpec> renderer_param_specs() {
       {"shadow.cull", "Shadow pass culling", ParamKind::Choice, 0.0, 0.0, 2.0,
        "Which faces the shadow pass skips. Culling front faces stores back faces, moving acne to faces that "
        "are unlit anyway (needs closed meshes).", {"none", "front", "back"}, shadow},
+      {"shadow.cull_casters", "Skip casters outside the light", ParamKind::Bool, 1.0, 0.0, 1.0,
+       "Shadow casters whose bounding box lies outside the light's volume (the ortho box, the spot's frustum, "
+       "a cube face's frustum) are not drawn into the map: they could not write a texel. Off draws them all, "
+       "for comparison (same map, more draws).", {}, shadow},
       {"view.ambient", "Ambient", ParamKind::Float, 0.25, 0.0, 1.0, "Light that reaches shadowed surfaces too.", {}},
       {"view.debug_quad", "Show shadow map", ParamKind::Bool, 1.0, 0.0, 1.0,
        "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
@@ -57,7 +61,7 @@ std::vector<ParamSpec> vsm_param_specs() {
        "bleeds through stacked occluders, at the price of darker penumbrae.", {}},
       {"vsm.show_remap", "Show where delta acts", ParamKind::Bool, 0.0, 0.0, 1.0,
        "Tints the pixels whose visibility the delta remap lowered: magenta, stronger where it removed more light.", {}},
-      {"vsm.blur_radius", "Blur radius (texels)", ParamKind::Int, 0.0, 0.0, 16.0,
+      {"vsm.blur_radius", "Blur radius (texels)", ParamKind::Int, 0.0, 0.0, 64.0,
        "Half-width of the separable Gaussian run over the moments (X then Y). 0 runs no blur pass and allocates "
        "no blur target.", {}, moments | kInvalidatesTargets},
       {"vsm.blur_sigma", "Blur sigma (texels)", ParamKind::Float, 1.0, 0.25, 8.0,

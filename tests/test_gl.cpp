@@ -262,8 +262,9 @@ TEST_F(RendererTest, EveryAssetModelRenders) {
 namespace shadowlab {
 namespace {
 
-// Per-pass GPU times are real figures: positive, below the frame's wall time. (llvmpipe's first timer
-// query in a context reads its start as 0; the renderer then falls back to wall time and says so.)
+// Per-pass times are real figures: positive, not under-reported against the wall time around the pass,
+// and their sum below the frame's wall time. On llvmpipe the wall time is the figure (its timer queries
+// read 0.01 ms for passes that take milliseconds; see timed() in renderer.cpp); on a GPU the query is.
 TEST_F(RendererTest, PassTimesArePlausible) {
   Renderer r;
   r.set_scene(scene);
@@ -276,12 +277,26 @@ TEST_F(RendererTest, PassTimesArePlausible) {
     double sum = 0.0;
     for (const auto& p : stats.passes) {
       EXPECT_GT(p.gpu_ms, 0.0) << p.name;
-      sum += p.gpu_ms;
-      if (frame > 0) {
-        EXPECT_FALSE(p.wall_clock) << p.name << " in frame " << frame << " needed the fallback";
+      EXPECT_LE(p.gpu_ms, p.wall_ms + 1.0) << p.name;
+      if (p.wall_clock) {
+        EXPECT_EQ(p.gpu_ms, p.wall_ms) << p.name;
       }
+      sum += p.gpu_ms;
     }
     EXPECT_LE(sum, wall + 1.0) << "frame " << frame;
+    // A frame whose shadow pass is skipped still reports a lit pass of real cost (llvmpipe's query read
+    // 0.01 ms there against 4-6 ms of wall time).
+    for (const auto& p : stats.passes) EXPECT_GE(p.gpu_ms, 0.25 * p.wall_ms) << p.name;
+  }
+  params.set("view.debug_quad", 0.0);
+  const FrameStats& still = r.render(params, req);  // same light: no shadow pass
+  ASSERT_EQ(still.passes.size(), 1u);
+  EXPECT_EQ(still.passes[0].name, "lit");
+  EXPECT_GE(still.passes[0].gpu_ms, 0.25 * still.passes[0].wall_ms);
+  const std::string gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (gl_renderer.find("llvmpipe") != std::string::npos) {
+    EXPECT_TRUE(still.passes[0].wall_clock);
+    EXPECT_GT(still.passes[0].gpu_ms, 0.2) << "a 640x360 lit pass on llvmpipe takes milliseconds";
   }
 }
 

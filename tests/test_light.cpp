@@ -14,6 +14,32 @@ TEST(Direction, AnglesMapToUnitVectors) {
   EXPECT_NEAR(glm::distance(direction_from_angles(90, 0), glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
 }
 
+// The caster cull's test: a box is outside a light's volume only when it is beyond one clip plane.
+TEST(ClipVolume, BoxesOutsideAnOrthoBoxAndASpotFrustum) {
+  Bounds scene;
+  scene.extend(glm::vec3(-5, 0, -5));
+  scene.extend(glm::vec3(5, 2, 5));
+  const glm::mat4 ortho = fit_light_ortho(scene, glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f))).view_projection();
+  auto box = [](glm::vec3 lo, glm::vec3 hi) {
+    Bounds b;
+    b.extend(lo);
+    b.extend(hi);
+    return b;
+  };
+  EXPECT_FALSE(box_outside_clip_volume(scene, ortho)) << "the fitted box holds the whole scene";
+  EXPECT_FALSE(box_outside_clip_volume(box({-1, 0, -1}, {1, 1, 1}), ortho));
+  EXPECT_FALSE(box_outside_clip_volume(box({4, 1, 4}, {9, 3, 9}), ortho)) << "straddling a side";
+  EXPECT_TRUE(box_outside_clip_volume(box({40, 0, 40}, {41, 1, 41}), ortho)) << "far to the side";
+  EXPECT_TRUE(box_outside_clip_volume(Bounds{}, ortho)) << "an empty box";
+  // A spot 10 above the origin looking down with a 20-degree half-angle covers |x| < 3.6 at the ground.
+  const LightView spot = fit_spot_light(scene, glm::vec3(0, 10, 0), glm::vec3(0, -1, 0), 20.0f);
+  const glm::mat4 vp = spot.view_projection();
+  EXPECT_FALSE(box_outside_clip_volume(box({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}), vp));
+  EXPECT_FALSE(box_outside_clip_volume(box({3, 0, -0.5f}, {4, 1, 0.5f}), vp)) << "across the cone's edge";
+  EXPECT_TRUE(box_outside_clip_volume(box({4.5f, 0, -0.5f}, {5, 1, 0.5f}), vp)) << "outside the cone";
+  EXPECT_TRUE(box_outside_clip_volume(box({-1, 11, -1}, {1, 12, 1}), vp)) << "behind the light (w < 0)";
+}
+
 TEST(Basis, OrthonormalForAxesAndRandomDirections) {
   std::vector<glm::vec3> dirs = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   std::mt19937 rng(7);
