@@ -174,6 +174,14 @@ PanelActions draw_lab_panel(PanelModel& m) {
   ImGui::SetNextWindowSize(ImVec2(430, std::min(ImGui::GetIO().DisplaySize.y - 20.0f, 840.0f)), ImGuiCond_FirstUseEver);
   ImGui::Begin("shadowlab");
   draw_nav(m, a);
+  if (m.stats) {
+    const std::string warning = m.stats->precision_warning();
+    if (!warning.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, m.stats->moments_negative_variance >= 0.5 ? kRed : ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+      ImGui::TextWrapped("%s", warning.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
   if (!m.shader_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kRed);
     ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", m.shader_error.c_str());

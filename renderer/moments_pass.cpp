@@ -394,6 +394,16 @@ void MomentsPass::draw_debug_quad(int channel, GLuint empty_vao) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+double MomentsPass::negative_variance_share(const std::vector<float>& moments) {
+  long covered = 0, negative = 0;
+  for (std::size_t i = 0; i + 1 < moments.size(); i += 2) {
+    if (!(moments[i] < 1.0f)) continue;  // background (cleared to 1, 1)
+    ++covered;
+    if (moments[i + 1] - moments[i] * moments[i] < 0.0f) ++negative;
+  }
+  return covered ? static_cast<double>(negative) / static_cast<double>(covered) : 0.0;
+}
+
 std::vector<float> MomentsPass::read_moments() const {
   std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 2);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, moments_fbo_.id());

@@ -109,6 +109,10 @@ class MomentsPass {
   int size() const { return size_; }
   // Texture A as (E[z], E[z^2]) pairs, bottom row first.
   std::vector<float> read_moments() const;
+  // The share of covered texels (E[z] < 1) whose stored moments give a negative variance,
+  // E[z^2] - E[z]^2 < 0: float cancellation. 0 for RG32F on every scene measured; RG16F 2.1 % on the
+  // default scene, 5.2 % with a 120-unit depth range, 99.98 % at 1200 (tests/test_gl_stress.cpp).
+  static double negative_variance_share(const std::vector<float>& moments);
   // The depth renderbuffer, bottom row first.
   std::vector<float> read_depth() const;
   MomentsTargetInfo query_targets() const;

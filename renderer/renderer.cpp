@@ -1,6 +1,7 @@
 #include "renderer/renderer.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -25,7 +26,24 @@ nlohmann::json FrameStats::to_json() const {
   return {{"gpu_ms", passes_json}, {"gpu_ms_from_wall_clock", wall_clock}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
           {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"cube_faces", cube_faces},
           {"stencil_passes", stencil_passes}, {"draws", draws}, {"casters_culled", casters_culled},
-          {"shadow_texels_written", shadow_texels_written}};
+          {"shadow_texels_written", shadow_texels_written}, {"moments_negative_variance", moments_negative_variance}};
+}
+
+std::string FrameStats::precision_warning() const {
+  if (moments_negative_variance < 0.01) return {};
+  char text[320];
+  if (moments_negative_variance >= 0.5) {
+    std::snprintf(text, sizeof text,
+                  "RG16F has run out of precision: %.0f %% of the shadow map's texels store a negative variance "
+                  "(float16 cancellation over this light's depth range), so the shadows shown are wrong. Use RG32F.",
+                  100.0 * moments_negative_variance);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "RG16F: %.1f %% of the shadow map's texels lost their variance to float16 cancellation; Chebyshev "
+                  "clamps them to the minimum variance. RG32F stores them exactly.",
+                  100.0 * moments_negative_variance);
+  }
+  return text;
 }
 
 std::map<std::string, std::string> Renderer::default_includes(ShadowTechnique technique, LightType light) {
@@ -197,6 +215,7 @@ bool Renderer::set_lab(const LabHooks& hooks) {
   const LightType light = hooks.light ? *hooks.light : programs_light_;
   const bool ok = build_programs(hooks, light);
   shadow_state_.clear();
+  stats_.moments_negative_variance = -1.0;
   return ok;
 }
 
@@ -656,6 +675,9 @@ void Renderer::moments_passes(const ParamSet& params) {
       stats_.blur_passes += 2;
     }
   }
+  // Half floats run out of precision on large depth ranges: measure it so the panel can say so.
+  stats_.moments_negative_variance =
+      vsm_choice(params, "vsm.format") == "RG16F" ? MomentsPass::negative_variance_share(m.read_moments()) : -1.0;
 }
 
 void Renderer::set_lit_uniforms(const ParamSet& params, LitUniforms& u) {

@@ -85,6 +85,13 @@ struct FrameStats {
   // Fragments that passed the depth test in the shadow passes (GL_SAMPLES_PASSED; a texel written twice
   // counts twice), plus every texel a blur pass wrote.
   long shadow_texels_written = 0;
+  // With RG16F moments: the share of covered texels whose variance came out negative (float16
+  // cancellation), measured after each moments update (a read-back, done only for RG16F); -1 otherwise.
+  // The panel warns from it.
+  double moments_negative_variance = -1.0;
+  // What the panel shows when precision ran out (empty when it did not): from 1 % of texels with a
+  // negative variance, a warning; from 50 %, the shadows on screen are wrong.
+  std::string precision_warning() const;
   nlohmann::json to_json() const;
 };
 

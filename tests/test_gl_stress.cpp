@@ -1,0 +1,237 @@
+// The numerical stress suite on the GPU path (headless GL): each case renders with a lab's solution,
+// checks the raw visibility (no NaN or Inf, every value in [0, 1]) and the moments (finite), measures
+// the error against the oracle, and asserts the outcome the case names. The limits come from the figures
+// measured here (printed as a table; README "Limits, measured"). The CPU side of the light fit is in
+// test_stress.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "labs/check.h"
+#include "labs/lab.h"
+#include "renderer/moments_pass.h"
+#include "renderer/vsm_params.h"
+#include "tests/gl_fixture.h"
+
+namespace shadowlab {
+namespace {
+
+struct Outcome {
+  Metrics metrics;
+  long non_finite = 0;   // NaN or Inf in the visibility (and in the moments, for VSM labs)
+  long out_of_range = 0; // visibility outside [0, 1]
+  double error = 0.0;    // acne + leak over all valid pixels
+  double negative_variance = 0.0;  // share of covered moments texels with E[z^2] - E[z]^2 < 0
+  std::string warning;             // the panel's precision warning after the frame
+};
+
+Scene transformed(const Scene& s, const glm::mat4& m) {
+  Scene out = s;
+  for (auto& mesh : out.meshes) transform_mesh(mesh, m);
+  return out;
+}
+
+class StressGlTest : public GlTest {
+ protected:
+  // Renders `scene` with lab `lab`'s solution and the assignments, at 480 x 270, and measures it.
+  // The camera frames `view` (default: the whole scene).
+  Outcome run(const char* name, const char* expected, int lab, const Scene& scene,
+              std::initializer_list<std::string> assignments, const Bounds* view = nullptr) {
+    const Lab& l = *find_lab(lab);
+    Renderer renderer;
+    CheckContext ctx(renderer, l, Impl::Solution, scene, {});
+    ParamSet p = ctx.params();
+    p.set("view.debug_quad", 0.0);
+    for (const auto& a : assignments) {
+      const std::string key = a.substr(0, a.find('='));
+      if (!p.find(key) && key.rfind("vsm.", 0) == 0) p.declare(vsm_param_specs({key}).at(0));  // not on the lab's panel
+      p.apply_assignment(a);
+    }
+    const auto m = ctx.measure(p, l.hooks(Impl::Solution), name, view, {}, 480, 270);
+    Outcome o;
+    o.metrics = m.metrics;
+    for (float v : m.visibility) {
+      if (!std::isfinite(v)) ++o.non_finite;
+      else if (v < 0.0f || v > 1.0f) ++o.out_of_range;
+    }
+    if (l.hooks(Impl::Solution).technique == ShadowTechnique::Moments) {
+      int size = 0;
+      const std::vector<float> moments = renderer.read_moments(&size);
+      for (float v : moments)
+        if (!std::isfinite(v)) ++o.non_finite;
+      o.negative_variance = MomentsPass::negative_variance_share(moments);
+      // The renderer measured the same for the panel (RG16F only).
+      const double reported = renderer.stats().moments_negative_variance;
+      if (reported >= 0.0) EXPECT_EQ(reported, o.negative_variance) << name;
+      o.warning = renderer.stats().precision_warning();
+      std::printf("  %-28s negative variance in %.4f of covered texels\n", name, o.negative_variance);
+    }
+    o.error = m.metrics.acne_rate_all + m.metrics.leak_rate_all;
+    std::printf("  %-28s acne %.5f  leak %.5f  bleed %.5f  mae %.5f/%.5f  error %.5f  nan %ld  out %ld  (%s)\n", name,
+                m.metrics.acne_rate_all, m.metrics.leak_rate_all, m.metrics.bleeding_rate, m.metrics.mae_interior,
+                m.metrics.mae_edge, o.error, o.non_finite, o.out_of_range, expected);
+    EXPECT_EQ(o.non_finite, 0) << name;
+    EXPECT_EQ(o.out_of_range, 0) << name;
+    EXPECT_GT(m.metrics.valid_pixels, 1000u) << name << ": the camera sees the scene";
+    return o;
+  }
+};
+
+// The default scene plus a small marker far below it: the fitted box's depth range grows with `depth`
+// while what the camera sees stays the same, so the stored depth's precision is spread ever thinner.
+Scene stretched_scene(float depth) {
+  Scene s = make_default_scene();
+  if (depth > 12.0f) {
+    Mesh marker = make_box({0, -depth, 0}, {0.1f, 0.1f, 0.1f}, glm::vec3(0.5f));
+    marker.casts_shadow = false;  // it only stretches the box; it shadows nothing
+    s.meshes.push_back(marker);
+  }
+  return s;
+}
+
+// The bias and the minimum variance are in units of the fitted box's depth: scale them by 12 / range to
+// keep the same world-space amounts (otherwise a range of 12000 turns lab 1's 0.005 into 60 units of
+// bias and every shadow detaches: measured leak 100 % with every format).
+std::string world_constant(const char* key, double value, float depth, int power = 1) {
+  return std::string(key) + "=" + std::to_string(value * std::pow(12.0 / depth, power));
+}
+
+TEST_F(StressGlTest, DepthFormatsOverGrowingDepthRanges) {
+  // 16-bit fixed point steps 1/65536 of the range, 24-bit 1/16.7M, 32F ~2^-24 near 1.
+  const Bounds view = make_default_scene().bounds();
+  for (float depth : {12.0f, 1200.0f, 12000.0f}) {
+    const Scene s = stretched_scene(depth);
+    char label[64];
+    std::snprintf(label, sizeof label, "range %.0f", static_cast<double>(depth));
+    const std::string l(label);
+    const std::string bias = world_constant("shadow.bias", 0.005, depth);
+    const Outcome as_is = run((l + " depth 24, bias as is").c_str(), "shadows detach at large ranges", 1, s,
+                              {"light.elevation=90", "shadow.depth_format=24"}, &view);
+    const Outcome d16 = run((l + " depth 16").c_str(), "acne once the step outgrows the bias", 1, s,
+                            {"light.elevation=90", "shadow.depth_format=16", bias}, &view);
+    const Outcome d24 = run((l + " depth 24").c_str(), "lab 1's bounds", 1, s, {"light.elevation=90", "shadow.depth_format=24", bias}, &view);
+    const Outcome d32 = run((l + " depth 32F").c_str(), "as 24", 1, s, {"light.elevation=90", "shadow.depth_format=32F", bias}, &view);
+    EXPECT_GE(d16.error, d24.error - 1e-4) << "16-bit cannot beat 24-bit";
+    EXPECT_GE(d16.metrics.acne_rate, d24.metrics.acne_rate) << depth;
+    if (depth <= 1200.0f) {
+      // Measured: 0.0022 for every format at 12 and 1200; lab 1's bounds hold.
+      EXPECT_LE(d24.metrics.acne_rate, 0.001) << depth;
+      EXPECT_LE(d32.metrics.acne_rate, 0.001) << depth;
+      EXPECT_NEAR(d16.error, d24.error, 1e-3) << depth;
+      EXPECT_NEAR(as_is.error, d24.error, 1e-3) << depth;
+    } else {
+      // 12000: lab 1's constant bias (0.0005 of the range) is 6 world units: every shadow detaches
+      // (measured leak 1.0). With the bias held at 0.06 world units, float32 arithmetic in the passes
+      // (not the stored format) limits: acne 2.5 % with 24-bit and 32F, 2.7 % with 16-bit.
+      EXPECT_GE(as_is.metrics.leak_rate, 0.99);
+      EXPECT_GT(d24.metrics.acne_rate, 0.005) << "if this improves, update the README's limits";
+      EXPECT_LT(d24.metrics.acne_rate, 0.05);
+      EXPECT_NEAR(d32.error, d24.error, 2e-3);
+    }
+  }
+}
+
+TEST_F(StressGlTest, MomentsFormatsOverGrowingDepthRanges) {
+  // RG16F stores z in [0, 1] to 2^-11 near 1: the world-space step grows with the range, and
+  // E[z^2] - E[z]^2 cancels to nothing.
+  const Bounds view = make_default_scene().bounds();
+  for (float depth : {12.0f, 120.0f, 1200.0f, 12000.0f}) {
+    const Scene s = stretched_scene(depth);
+    char label[64];
+    std::snprintf(label, sizeof label, "range %.0f", static_cast<double>(depth));
+    const std::string l(label);
+    const std::string bias = world_constant("shadow.bias", 0.005, depth);
+    const Outcome f32 = run((l + " RG32F").c_str(), "within lab 4's bounds", 4, s,
+                            {"vsm.format=RG32F", "light.elevation=90", bias}, &view);
+    const Outcome f16 = run((l + " RG16F").c_str(), "worse as the range grows", 4, s,
+                            {"vsm.format=RG16F", "light.elevation=90", bias}, &view);
+    EXPECT_EQ(f32.negative_variance, 0.0) << depth;
+    EXPECT_GT(f16.negative_variance, 0.01) << depth;  // measured 0.021, 0.052, 0.9998, 1.0
+    if (depth <= 120.0f) {
+      EXPECT_LE(f32.metrics.acne_rate, 0.005) << depth;
+      EXPECT_LE(f32.metrics.bleeding_rate, 0.01) << depth;
+    } else {
+      // The minimum variance is in depth^2 units of the box: 2e-6 is a standard deviation of 1.7 world
+      // units at a 1200-unit range, so light passes every shadow whatever the format (leak 0.67, 1.0).
+      EXPECT_GT(f32.metrics.leak_rate, 0.5) << depth;
+      EXPECT_GT(f16.negative_variance, 0.9) << depth;
+    }
+    // What the panel says: nothing for RG32F; a warning for RG16F, naming the fix.
+    EXPECT_EQ(f32.warning, "") << depth;
+    EXPECT_NE(f16.warning.find("RG32F"), std::string::npos) << depth;
+    EXPECT_EQ(f16.warning.find("wrong") != std::string::npos, depth >= 1200.0f) << f16.warning;
+  }
+}
+
+TEST_F(StressGlTest, BlurRadiiUpTo64) {
+  const Scene s = make_default_scene();
+  for (const char* method : {"separable", "fast"}) {
+    std::map<std::string, double> error;
+    for (const char* radius : {"16", "32", "64"}) {
+      const std::string name = std::string("blur r") + radius + " " + method;
+      error[radius] = run(name.c_str(), "finite; r32 = r64 at sigma 8", 5, s,
+                          {"shadow.map_size=512", std::string("vsm.blur_radius=") + radius, std::string("vsm.blur_sigma=8"),
+                           std::string("vsm.blur_method=") + method})
+                          .metrics.mae_edge;
+    }
+    // sigma 8 (the slider's top) puts 3 sigma at 24 texels: radii 32 and 64 add weights below 1e-3.
+    EXPECT_NEAR(error["64"], error["32"], 1e-3) << method;
+    EXPECT_GT(std::abs(error["16"] - error["32"]), 0.0) << method;
+  }
+}
+
+TEST_F(StressGlTest, ExtremeBiasAndDelta) {
+  const Scene s = make_default_scene();
+  const Outcome zero = run("bias 0", "acne everywhere lit at grazing light", 1, s,
+                           {"shadow.bias=0", "shadow.slope_bias=0", "light.elevation=10"});
+  const Outcome huge = run("bias 0.1 slope 20", "peter-panning: leaks", 1, s, {"shadow.bias=0.1", "shadow.slope_bias=20"});
+  EXPECT_GT(zero.metrics.acne_rate, 0.05);
+  EXPECT_GT(huge.metrics.leak_rate, 0.02);
+  const Outcome d0 = run("delta 0", "bleeding (blurred)", 4, make_stacked_occluders_scene(),
+                         {"vsm.bleed_delta=0", "vsm.blur_radius=4", "vsm.blur_sigma=2"});
+  const Outcome d9 = run("delta 0.9", "no bleeding, penumbrae gone dark", 4, make_stacked_occluders_scene(),
+                         {"vsm.bleed_delta=0.9", "vsm.blur_radius=4", "vsm.blur_sigma=2"});
+  EXPECT_GT(d0.metrics.bleeding_rate, 0.01);
+  EXPECT_EQ(d9.metrics.bleeding_rate, 0.0);
+  const Outcome v = run("min variance 1e-2", "light through thin shadows", 4, make_stacked_occluders_scene(),
+                        {"vsm.min_variance=0.01"});
+  EXPECT_GT(v.metrics.leak_rate_all + v.metrics.bleeding_rate, d9.metrics.leak_rate_all);
+}
+
+TEST_F(StressGlTest, OffsetScaledFlatAndDegenerateScenes) {
+  const Scene base = make_default_scene();
+  const Outcome plain = run("default", "lab 1's bounds", 1, base, {});
+  for (float offset : {1e4f, 1e6f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "offset %.0e", static_cast<double>(offset));
+    const Outcome o = run(name, "precision loss grows with the offset", 1,
+                          transformed(base, glm::translate(glm::mat4(1.0f), glm::vec3(offset))), {});
+    // Measured: 1e4 -> 0.0158 (6x the plain 0.0027: float32 positions keep ~1e-3 units), 1e6 -> 0.94.
+    if (offset < 1e5f) {
+      EXPECT_LT(o.error, 0.05);
+    } else {
+      EXPECT_GT(o.error, 0.5) << "if this improves, update the README's limits";
+    }
+  }
+  for (float scale : {1e-3f, 1e4f}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "scale %.0e", static_cast<double>(scale));
+    const Outcome o = run(name, "as unscaled (the fit is scale-free)", 1,
+                          transformed(base, glm::scale(glm::mat4(1.0f), glm::vec3(scale))), {});
+    EXPECT_NEAR(o.error, plain.error, 0.01) << name;
+  }
+  Scene flat;
+  flat.meshes.push_back(make_plane({0, 0, 0}, 5.0f, 5.0f, glm::vec3(0.8f)));
+  const Outcome f = run("flat ground only", "all lit: nothing casts", 1, flat, {"light.elevation=90"});
+  EXPECT_EQ(f.metrics.acne_rate_all, 0.0);
+  const Outcome g = run("flat ground, grazing 1 deg", "all lit", 1, flat, {"light.elevation=1"});
+  EXPECT_LE(g.metrics.acne_rate_all, 0.001);
+}
+
+}  // namespace
+}  // namespace shadowlab
