@@ -14,6 +14,7 @@
 
 #include "app/headless.h"
 #include "app/imgui_offscreen.h"
+#include "app/panel_lab.h"
 #include "app/plot.h"
 #include "labs/check.h"
 #include "renderer/blur_bench.h"
@@ -182,6 +183,77 @@ nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int fram
           {"shadow_passes_without_skipping", force_shadow}};
 }
 
+// What the views cost when shown, and that hiding them removes them: the debug quads (VSM: three) and
+// the light volume's wireframe are passes of their own (absent when hidden); the panel is ImGui, timed
+// offscreen building and drawing it (3 layout frames + 1 draw + a read-back per call, as `render --panel`
+// does) against the same call with no window in it.
+nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int frames) {
+  const Lab& lab = *find_lab(4);
+  renderer.set_lab(lab.hooks(Impl::Solution));
+  renderer.set_scene(scene);
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(scene.bounds());
+  request.width = kWidth;
+  request.height = kHeight;
+  auto pass_median = [&](ParamSet params, const char* name, long* present) {
+    std::vector<double> ms;
+    *present = 0;
+    for (int f = 0; f < frames; ++f) {
+      for (const auto& p : renderer.render(params, request).passes)
+        if (p.name == name) ms.push_back(p.gpu_ms), ++*present;
+    }
+    return median(ms);
+  };
+  ParamSet shown = lab_params(lab);
+  shown.set("view.debug_quad", 1.0);
+  shown.set("view.light_volume", 1.0);
+  ParamSet hidden = shown;
+  hidden.set("view.debug_quad", 0.0);
+  hidden.set("view.light_volume", 0.0);
+  long quad_frames = 0, volume_frames = 0, quad_hidden = 0, volume_hidden = 0;
+  const double quad_ms = pass_median(shown, "debug_quad", &quad_frames);
+  const double volume_ms = pass_median(shown, "light_volume_view", &volume_frames);
+  pass_median(hidden, "debug_quad", &quad_hidden);
+  pass_median(hidden, "light_volume_view", &volume_hidden);
+  std::vector<double> lit_ms;
+  for (int f = 0; f < frames; ++f)
+    for (const auto& p : renderer.render(hidden, request).passes)
+      if (p.name == "lit") lit_ms.push_back(p.gpu_ms);
+
+  const std::string text = load_lab_text(lab);
+  PanelModel model;
+  model.lab = &lab;
+  model.params = &shown;
+  model.stats = &renderer.stats();
+  model.triangles = scene.triangle_count();
+  model.scene_name = scene.name;
+  model.lab_text = &text;
+  model.interactive = false;
+  ImGuiOffscreen imgui(kWidth, kHeight);
+  auto time_ui = [&](const std::function<void()>& draw) {
+    std::vector<double> ms;
+    for (int f = 0; f < frames; ++f) {
+      const auto start = std::chrono::steady_clock::now();
+      imgui.render(draw);
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    return median(ms);
+  };
+  time_ui([&] { draw_lab_panel(model); });  // warm-up: fonts, shaders
+  const double panel_ms = time_ui([&] { draw_lab_panel(model); });
+  const double no_panel_ms = time_ui([] {});
+  return {{"frames", frames},
+          {"lit_pass_ms", median(lit_ms)},
+          {"debug_quad_ms", quad_ms},
+          {"debug_quad_passes_shown", quad_frames},
+          {"debug_quad_passes_hidden", quad_hidden},
+          {"light_volume_ms", volume_ms},
+          {"light_volume_passes_shown", volume_frames},
+          {"light_volume_passes_hidden", volume_hidden},
+          {"panel_ui_ms", panel_ms},
+          {"no_panel_ui_ms", no_panel_ms}};
+}
+
 nlohmann::json blur_json(const std::vector<BlurTiming>& rows) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& b : rows)
@@ -213,7 +285,7 @@ int run_bench(const BenchOptions& options) {
     for (const auto& t : techs) per_scene += t.uses_map ? sizes.size() : 1;
     const std::size_t total = bench_scenes.size() * per_scene;
     std::vector<BenchPoint> points;
-    nlohmann::json skipping;
+    nlohmann::json skipping, overlays;
     std::vector<BlurTiming> blur_rows;
     const auto start = std::chrono::steady_clock::now();
     {
@@ -233,6 +305,7 @@ int run_bench(const BenchOptions& options) {
       }
       std::fprintf(stderr, "\n");
       skipping = measure_skipping(renderer, bench_scenes.front().scene, options.quick ? 12 : 36);
+      overlays = measure_overlays(renderer, bench_scenes.front().scene, options.quick ? 5 : 15);
       // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
       std::fprintf(stderr, "blur methods...\n");
       const Lab& vsm = *find_lab(4);
@@ -287,6 +360,7 @@ int run_bench(const BenchOptions& options) {
                              {"seconds", seconds},
                              {"points", json_points},
                              {"skipping", skipping},
+                             {"hidden_views", overlays},
                              {"blur_methods", blur_json(blur_rows)}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
@@ -312,6 +386,12 @@ int run_bench(const BenchOptions& options) {
     std::printf("steady frame with skipping: %.2f ms = %.2f x the lit pass alone (%.2f ms); without skipping %.2f ms\n",
                 skipping["with_skipping_ms"].get<double>(), skipping["ratio_to_lit_pass"].get<double>(),
                 skipping["lit_pass_ms"].get<double>(), skipping["without_skipping_ms"].get<double>());
+    std::printf("views: debug quads %.2f ms, light volume %.2f ms (lit pass %.2f ms); hidden: %ld and %ld passes in %d "
+                "frames; panel %.2f ms per offscreen build+draw vs %.2f ms with it hidden\n",
+                overlays["debug_quad_ms"].get<double>(), overlays["light_volume_ms"].get<double>(),
+                overlays["lit_pass_ms"].get<double>(), overlays["debug_quad_passes_hidden"].get<long>(),
+                overlays["light_volume_passes_hidden"].get<long>(), overlays["frames"].get<int>(),
+                overlays["panel_ui_ms"].get<double>(), overlays["no_panel_ui_ms"].get<double>());
     for (const auto& b : blur_rows) {
       if (b.method == "separable") continue;
       const auto taught = std::find_if(blur_rows.begin(), blur_rows.end(), [&](const BlurTiming& t) {

@@ -66,6 +66,7 @@ struct App {
   std::string status;       // last screenshot path or error
   std::string scene_error;  // the last dropped file that could not be opened
   bool screenshot_requested = false;
+  bool panel_hidden = false;  // H: no ImGui window is built or drawn (the pass-time line stays)
   std::string screenshot_path;  // empty: a timestamped name
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
@@ -145,6 +146,7 @@ void handle_keys(App& app) {
     app.rebuild_split();
   }
   if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) app.compare.magnifier = !app.compare.magnifier;
+  if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) app.panel_hidden = !app.panel_hidden;
 }
 
 void draw_panel(App& app) {
@@ -249,7 +251,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       app.last_poll = glfwGetTime();
       app.settings.autosave(app.lab->number, app.params);
     }
-    draw_panel(app);
+    if (!app.panel_hidden) draw_panel(app);
     if (app.check_requested) {
       app.check_result = run_lab_check(*app.lab, app.impl, app.renderer->scene());
       app.check_requested = false;

@@ -96,6 +96,16 @@ struct Renderer::Programs {
   // Shadow volumes: the ambient pass's programs (lit and lit_gbuffer are then the additive pass's).
   ReloadableProgram volume_ambient, volume_ambient_gbuffer;
   ReloadableProgram normals;  // the normals debug view (geometry shader)
+  ReloadableProgram lines;    // the light volume's wireframe
+  ReloadableProgram cube_face;  // a point light's debug quads, one per cube face
+  struct Lines {
+    int generation = -1;
+    Uniform view_proj, color;
+  } lines_u;
+  struct CubeFace {
+    int generation = -1;
+    Uniform cube, face, far_plane;
+  } cube_face_u;
   struct Normals {
     int generation = -1;
     Uniform view_proj, length;
@@ -117,6 +127,8 @@ struct Renderer::Programs {
     f(lit_gbuffer);
     f(debug_quad);
     f(normals);
+    f(lines);
+    f(cube_face);
     if (!remap_view.desc().fragment.empty()) f(remap_view);
     if (!volume_ambient.desc().fragment.empty()) f(volume_ambient);
     if (!volume_ambient_gbuffer.desc().fragment.empty()) f(volume_ambient_gbuffer);
@@ -199,6 +211,8 @@ Renderer::Renderer()
   programs_->debug_quad = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}});
   programs_->normals =
       ReloadableProgram({"shaders/debug/normals.vert", "shaders/debug/normals.geom", "shaders/debug/normals.frag", {}, {}});
+  programs_->lines = ReloadableProgram({"shaders/debug/lines.vert", {}, "shaders/debug/lines.frag", {}, {}});
+  programs_->cube_face = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug/cube_face.frag", {}, {}});
   if (!set_lab({})) throw std::runtime_error("cannot build the renderer's shaders:\n" + shader_error());
 }
 
@@ -482,8 +496,9 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   if (params.get_bool("view.normals")) timed(timer_.id(), "normals_view", stats_, software_rasterizer_, [&] { normals_pass(params); });
   if (params.get_bool("view.volumes"))
     timed(timer_.id(), "volumes_view", stats_, software_rasterizer_, [&] { volumes_wireframe_pass(params); });
-  const bool has_depth_map = !volumes && light_type_ != LightType::Point;
-  if (has_depth_map && params.get_bool("view.debug_quad"))
+  if (params.get_bool("view.light_volume") && light_type_ != LightType::Point)
+    timed(timer_.id(), "light_volume_view", stats_, software_rasterizer_, [&] { light_volume_pass(); });
+  if (!volumes && params.get_bool("view.debug_quad"))  // shadow volumes have no map to show
     timed(timer_.id(), "debug_quad", stats_, software_rasterizer_, [&] { debug_quad_pass(params); });
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -820,43 +835,105 @@ void Renderer::remap_view_pass(const ParamSet& params) {
   glDepthFunc(GL_LESS);
 }
 
-void Renderer::debug_quad_pass(const ParamSet&) {
+void Renderer::debug_quad_pass(const ParamSet& params) {
   Targets& t = *targets_;
   Programs& p = *programs_;
-  if (hooks_.technique == ShadowTechnique::Moments) {
-    // Three quads along the bottom right, left to right: E[z], E[z^2] and the variance.
-    glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-    const GLenum color_only = GL_COLOR_ATTACHMENT0;
-    glDrawBuffers(1, &color_only);
-    glDisable(GL_DEPTH_TEST);
-    const int side = t.height / 4;
-    for (int channel = 0; channel < 3; ++channel) {
-      glViewport(t.width - (3 - channel) * (side + 8), 8, side, side);
-      moments_->draw_debug_quad(channel, empty_vao_.id());
-    }
-    glEnable(GL_DEPTH_TEST);
-    glViewport(0, 0, t.width, t.height);
-    return;
-  }
-  if (p.quad.generation != p.debug_quad.generation()) {
-    p.quad = {p.debug_quad.generation(), Uniform(p.debug_quad.id(), "u_depth_map"), Uniform(p.debug_quad.id(), "u_rect")};
-  }
   glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // the quad must not overwrite the G-buffer
+  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // the quads must not overwrite the G-buffer
   glDrawBuffers(1, &color_only);
   glDisable(GL_DEPTH_TEST);
-  // A square in the lower-right corner (the panel sits on the left), a quarter of the frame height.
-  const int side = t.height / 4;
-  glViewport(t.width - side - 8, 8, side, side);
-  glUseProgram(p.debug_quad.id());
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());
-  p.quad.depth_map.set(0);
-  p.quad.rect.set(glm::vec4(0, 0, 1, 1));
-  glBindVertexArray(empty_vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Squares along the bottom right (the panel sits on the left), view.debug_quad_size of the frame height.
+  const int side = std::max(8, static_cast<int>(static_cast<float>(t.height) * params.get_float("view.debug_quad_size")));
+  const std::string channel = params.get_choice("view.debug_channel");
+  if (cube_ && light_type_ == LightType::Point) {
+    cube_debug_quads(side);
+  } else if (hooks_.technique == ShadowTechnique::Moments) {
+    // "all": E[z], E[z^2] and the variance left to right; else the one channel ("depth" is E[z]).
+    const int only = channel == "moment 2" ? 1 : channel == "variance" ? 2 : channel == "all" ? -1 : 0;
+    const int count = only < 0 ? 3 : 1;
+    for (int i = 0; i < count; ++i) {
+      glViewport(t.width - (count - i) * (side + 8), 8, side, side);
+      moments_->draw_debug_quad(only < 0 ? i : only, empty_vao_.id());
+    }
+  } else {
+    if (p.quad.generation != p.debug_quad.generation()) {
+      p.quad = {p.debug_quad.generation(), Uniform(p.debug_quad.id(), "u_depth_map"), Uniform(p.debug_quad.id(), "u_rect")};
+    }
+    glViewport(t.width - side - 8, 8, side, side);
+    glUseProgram(p.debug_quad.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, t.shadow_depth.id());
+    p.quad.depth_map.set(0);
+    p.quad.rect.set(glm::vec4(0, 0, 1, 1));
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
   glEnable(GL_DEPTH_TEST);
   glViewport(0, 0, t.width, t.height);
+}
+
+void Renderer::cube_debug_quads(int side) {
+  // The six faces in a 3 x 2 grid, top row +X -X +Y, bottom row -Y +Z -Z, together `side` high.
+  Programs& p = *programs_;
+  if (p.cube_face_u.generation != p.cube_face.generation()) {
+    const GLuint id = p.cube_face.id();
+    p.cube_face_u = {p.cube_face.generation(), Uniform(id, "u_cube"), Uniform(id, "u_face"), Uniform(id, "u_far")};
+  }
+  const Targets& t = *targets_;
+  const int cell = side / 2;
+  glUseProgram(p.cube_face.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_->texture());
+  p.cube_face_u.cube.set(0);
+  p.cube_face_u.far_plane.set(std::max(cube_views_.far_plane, 1e-6f));
+  glBindVertexArray(empty_vao_.id());
+  for (int f = 0; f < 6; ++f) {
+    glViewport(t.width - 8 - (3 - f % 3) * (cell + 4), 8 + (f < 3 ? cell + 4 : 0), cell, cell);
+    p.cube_face_u.face.set(f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+void Renderer::light_volume_pass() {
+  // The 12 edges of the shadow map's volume: the clip cube [-1, 1]^3 taken back to world space through
+  // the inverse of the light's view-projection (an ortho box or a spot's frustum alike).
+  const glm::mat4 to_world = glm::inverse(light_view_.view_projection());
+  glm::vec3 corner[8];
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = to_world * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
+    corner[i] = glm::vec3(c) / c.w;
+  }
+  std::vector<glm::vec3> lines;
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) lines.insert(lines.end(), {corner[i], corner[i | bit]});
+  if (!lines_vao_) {
+    lines_vao_ = GlVertexArray::create();
+    lines_vbo_ = GlBuffer::create();
+    glBindVertexArray(lines_vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, lines_vbo_.id());
+    glBufferData(GL_ARRAY_BUFFER, 24 * sizeof(glm::vec3), nullptr, GL_DYNAMIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  }
+  glBindVertexArray(lines_vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, lines_vbo_.id());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(lines.size() * sizeof(glm::vec3)), lines.data());
+  Programs& p = *programs_;
+  if (p.lines_u.generation != p.lines.generation())
+    p.lines_u = {p.lines.generation(), Uniform(p.lines.id(), "u_view_proj"), Uniform(p.lines.id(), "u_color")};
+  Targets& t = *targets_;
+  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
+  const GLenum color_only = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &color_only);
+  glViewport(0, 0, t.width, t.height);
+  glDisable(GL_DEPTH_TEST);  // the whole box, also where the scene hides it
+  glUseProgram(p.lines.id());
+  p.lines_u.view_proj.set(camera_projection_ * camera_view_);
+  p.lines_u.color.set(glm::vec4(1.0f, 0.85f, 0.2f, 1.0f));
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
+  ++stats_.draws;
+  glEnable(GL_DEPTH_TEST);
 }
 
 void Renderer::present(GLuint framebuffer, int width, int height) const {

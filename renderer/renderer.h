@@ -175,6 +175,8 @@ class Renderer {
   void shadow_pass(const ParamSet& params);
   void lit_pass(const ParamSet& params, const FrameRequest& request);
   void debug_quad_pass(const ParamSet& params);
+  void cube_debug_quads(int side);
+  void light_volume_pass();
   void set_lit_uniforms(const ParamSet& params, LitUniforms& u);
   static void resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u);
   void moments_passes(const ParamSet& params);
@@ -201,6 +203,8 @@ class Renderer {
   GlSampler compare_sampler_;  // GL_COMPARE_REF_TO_TEXTURE, made when a lit program reads a sampler2DShadow
   LabHooks hooks_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
+  GlVertexArray lines_vao_;  // the light volume's 12 edges, made on first use
+  GlBuffer lines_vbo_;
   GlQuery timer_;
   GlQuery samples_;  // GL_SAMPLES_PASSED around the shadow passes' draws: FrameStats::shadow_texels_written
   // A software rasteriser (llvmpipe) runs the "GPU" work on the CPU: its glFinish-bracketed wall time is

@@ -37,6 +37,15 @@ std::vector<ParamSpec> renderer_param_specs() {
       {"view.ambient", "Ambient", ParamKind::Float, 0.25, 0.0, 1.0, "Light that reaches shadowed surfaces too.", {}},
       {"view.debug_quad", "Show shadow map", ParamKind::Bool, 1.0, 0.0, 1.0,
        "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
+      {"view.debug_channel", "Shadow map channel", ParamKind::Choice, 0.0, 0.0, 4.0,
+       "What the debug quad shows. all: the depth map (or, for variance shadow maps, E[z], E[z^2] and the "
+       "variance side by side); one channel: that one alone. Labs without moments show depth for every choice.",
+       {"all", "depth", "moment 1", "moment 2", "variance"}, {}},
+      {"view.debug_quad_size", "Shadow map quad size", ParamKind::Float, 0.25, 0.1, 1.0,
+       "Side of the debug quad as a share of the view's height: enlarge it to read single texels.", {}},
+      {"view.light_volume", "Show the light's volume", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "Wireframe of what the shadow map covers: the fitted ortho box of a directional light or the frustum of "
+       "a spot light (a point light's six frusta fill all space: nothing to draw).", {}},
       // Geometry-shader debug views (lecture 9); they cost nothing while off.
       {"view.normals", "Show normals (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
        "A geometry shader turns every triangle into three lines: each vertex and its normal.", {}},

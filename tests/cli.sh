@@ -256,6 +256,10 @@ for scene in {r["scene"] for r in rows}:  # every scene has a front, and its fas
     assert min(pts, key=lambda r: float(r["gpu_ms"]))["pareto"] == "1", scene
 s = j["skipping"]
 assert s["shadow_passes_with_skipping"] == 0 and s["shadow_passes_without_skipping"] == s["frames"], s
+v = j["hidden_views"]  # shown: one pass per frame; hidden: none
+assert v["debug_quad_passes_shown"] == v["frames"] and v["debug_quad_passes_hidden"] == 0, v
+assert v["light_volume_passes_shown"] == v["frames"] and v["light_volume_passes_hidden"] == 0, v
+assert v["panel_ui_ms"] > 0 and v["no_panel_ui_ms"] > 0, v
 PY
     echo "bench --quick: ${elapsed} s"
     ;;
@@ -292,6 +296,21 @@ line_split = max(col(r["split"], x) for x in range(w // 2 - 2, w // 2 + 3))
 line_single = max(col(r["lab1"], x) for x in range(w // 2 - 2, w // 2 + 3))
 print("divider rows:", line_split, line_single)
 assert line_split > 0.9 * len(range(100, h - 100, 4)) and line_single < line_split / 2, "no divider"
+PY
+    ;;
+  window_hide_panel)  # H hides the panel (no ImGui window is built) and shows it again
+    png_reader
+    window --script "frames:3,screenshot:$tmp/shown.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,frames:3,screenshot:$tmp/again.png"
+    python3 - "$tmp" <<'PY' || fail "H did not hide and restore the panel"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("shown", "hidden", "again")}
+stats = {"panel hidden/shown": differing(r["hidden"], r["shown"], 20, 60, 430, 400),
+         "panel again/shown": differing(r["again"], r["shown"], 20, 60, 430, 400)}
+print(stats)
+assert stats["panel hidden/shown"] > 0.2, "H did not hide the panel"
+assert stats["panel again/shown"] < 0.01, "H again did not bring the panel back"
 PY
     ;;
   window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size

@@ -67,7 +67,9 @@ class StressGlTest : public GlTest {
       o.negative_variance = MomentsPass::negative_variance_share(moments);
       // The renderer measured the same for the panel (RG16F only).
       const double reported = renderer.stats().moments_negative_variance;
-      if (reported >= 0.0) EXPECT_EQ(reported, o.negative_variance) << name;
+      if (reported >= 0.0) {
+        EXPECT_EQ(reported, o.negative_variance) << name;
+      }
       o.warning = renderer.stats().precision_warning();
       std::printf("  %-28s negative variance in %.4f of covered texels\n", name, o.negative_variance);
     }
@@ -231,6 +233,33 @@ TEST_F(StressGlTest, OffsetScaledFlatAndDegenerateScenes) {
   EXPECT_EQ(f.metrics.acne_rate_all, 0.0);
   const Outcome g = run("flat ground, grazing 1 deg", "all lit", 1, flat, {"light.elevation=1"});
   EXPECT_LE(g.metrics.acne_rate_all, 0.001);
+}
+
+TEST_F(StressGlTest, EmptySceneAndSinglePointRenderWithoutNaN) {
+  Scene point;
+  Mesh m;
+  m.positions = {glm::vec3(1, 2, 3), glm::vec3(1, 2, 3), glm::vec3(1, 2, 3)};  // a triangle of zero area
+  m.normals = {glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0)};
+  m.indices = {0, 1, 2};
+  point.meshes.push_back(m);
+  const Scene empty;
+  for (const Scene* s : {static_cast<const Scene*>(&point), &empty}) {
+    for (int lab : {1, 4}) {
+      Renderer r;
+      r.set_scene(*s);
+      ASSERT_TRUE(r.set_lab(find_lab(lab)->hooks(Impl::Solution)));
+      FrameRequest req;
+      req.camera = OrbitCamera::framing(s->bounds());
+      req.width = 64;
+      req.height = 36;
+      req.gbuffer = true;
+      r.render(lab_params(*find_lab(lab)), req);
+      for (float v : r.read_visibility()) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f && v <= 1.0f) << lab;
+      const glm::mat4 vp = r.light_view().view_projection();
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) ASSERT_TRUE(std::isfinite(vp[c][k])) << lab;
+    }
+  }
 }
 
 }  // namespace

@@ -122,5 +122,107 @@ TEST_F(SkipTest, BlurTexelsAndSkippedFramesAreCountedExactly) {
   EXPECT_EQ(j.at("casters_culled").get<long>(), 0);
 }
 
+// Share of pixels that differ between two RGBA8 frames inside a rectangle (x0, y0)-(x1, y1), top-left
+// origin.
+double differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int width, int x0, int y0,
+                 int x1, int y1) {
+  long diff = 0, total = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+      ++total;
+      if (a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2]) ++diff;
+    }
+  return total ? static_cast<double>(diff) / static_cast<double>(total) : 0.0;
+}
+
+bool has_pass(const FrameStats& stats, const std::string& name) {
+  for (const auto& p : stats.passes)
+    if (p.name == name) return true;
+  return false;
+}
+
+TEST_F(SkipTest, LightVolumeWireframeDrawsOnlyWhenShown) {
+  Renderer r;
+  r.set_scene(scene);
+  const FrameRequest req = request();
+  r.render(params({"view.light_volume=false"}), req);
+  EXPECT_FALSE(has_pass(r.stats(), "light_volume_view"));
+  const auto off = r.read_color();
+  r.render(params({"view.light_volume=true"}), req);
+  EXPECT_TRUE(has_pass(r.stats(), "light_volume_view"));
+  const auto on = r.read_color();
+  // The box's edges in the wireframe's colour (255, 217, 51), and only lines: a few percent of the frame.
+  long yellow = 0;
+  for (std::size_t i = 0; i < on.size(); i += 4)
+    if (on[i] > 240 && on[i + 1] > 200 && on[i + 1] < 235 && on[i + 2] < 70) ++yellow;
+  EXPECT_GT(yellow, 200);
+  const double changed = differing(on, off, req.width, 0, 0, req.width, req.height);
+  EXPECT_GT(changed, 0.003);
+  EXPECT_LT(changed, 0.1);
+  // A spot light's frustum too; a point light has nothing to draw (no pass).
+  LabHooks spot;
+  spot.light = LightType::Spot;
+  ASSERT_TRUE(r.set_lab(spot));
+  r.render(params({"view.light_volume=true", "light.position_y=10", "light.cone_deg=20"}), req);
+  EXPECT_TRUE(has_pass(r.stats(), "light_volume_view"));
+  LabHooks point;
+  point.light = LightType::Point;
+  ASSERT_TRUE(r.set_lab(point));
+  r.render(params({"view.light_volume=true", "light.position_y=4"}), req);
+  EXPECT_FALSE(has_pass(r.stats(), "light_volume_view"));
+}
+
+TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
+  Renderer r;
+  r.set_scene(scene);
+  FrameRequest req = request();
+  r.render(params({"view.debug_quad=false"}), req);
+  EXPECT_FALSE(has_pass(r.stats(), "debug_quad"));
+  const auto none = r.read_color();
+  const int w = req.width, h = req.height;
+  auto covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, none, w, 0, 0, w, h); };
+  r.render(params({"view.debug_quad=true", "view.debug_quad_size=0.25"}), req);
+  const double small = covered(r.read_color());
+  r.render(params({"view.debug_quad=true", "view.debug_quad_size=0.75"}), req);
+  const double large = covered(r.read_color());
+  // The quad's area grows with the square of its side: (0.75 / 0.25)^2 = 9.
+  EXPECT_GT(large, 6.0 * small);
+  EXPECT_GT(small, 0.01);
+
+  // Moments: "all" draws E[z], E[z^2] and the variance side by side; one channel draws one quad, and the
+  // three channels differ.
+  LabHooks vsm;
+  vsm.technique = ShadowTechnique::Moments;
+  ASSERT_TRUE(r.set_lab(vsm));
+  r.render(params({"view.debug_quad=false"}), req);
+  const auto vsm_none = r.read_color();
+  auto vsm_covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, vsm_none, w, 0, 0, w, h); };
+  r.render(params({"view.debug_quad=true", "view.debug_channel=all"}), req);
+  const double three = vsm_covered(r.read_color());
+  std::vector<std::uint8_t> channel[3];
+  const char* names[] = {"view.debug_channel=moment 1", "view.debug_channel=moment 2", "view.debug_channel=variance"};
+  for (int c = 0; c < 3; ++c) {
+    r.render(params({"view.debug_quad=true", names[c]}), req);
+    channel[c] = r.read_color();
+  }
+  const double one = vsm_covered(channel[0]);
+  EXPECT_NEAR(three / one, 3.0, 0.3);
+  const int side = h / 4;  // the single quad, bottom right
+  const int x0 = w - side - 8, y0 = h - 8 - side;
+  EXPECT_GT(differing(channel[0], channel[2], w, x0, y0, x0 + side, y0 + side), 0.2) << "variance looks like E[z]";
+  EXPECT_GT(differing(channel[0], channel[1], w, x0, y0, x0 + side, y0 + side), 0.2) << "E[z^2] looks like E[z]";
+
+  // A point light's six cube faces, in the window as in the PNG.
+  LabHooks point;
+  point.light = LightType::Point;
+  ASSERT_TRUE(r.set_lab(point));
+  r.render(params({"view.debug_quad=false", "light.position_y=4"}), req);
+  const auto point_none = r.read_color();
+  r.render(params({"view.debug_quad=true", "light.position_y=4"}), req);
+  EXPECT_TRUE(has_pass(r.stats(), "debug_quad"));
+  EXPECT_GT(differing(r.read_color(), point_none, w, 0, 0, w, h), 0.01);
+}
+
 }  // namespace
 }  // namespace shadowlab
