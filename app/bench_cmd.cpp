@@ -58,6 +58,15 @@ constexpr int kWidth = 640, kHeight = 360;
 // The issue asks for an edge band of fixed width in screen pixels, so map sizes compare fairly.
 constexpr int kBandPixels = 3;
 
+// The benchmark's frame: kWidth x kHeight, the camera framing `view`.
+FrameRequest bench_request(const Bounds& view) {
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(view);
+  request.width = kWidth;
+  request.height = kHeight;
+  return request;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -109,10 +118,7 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   if (map_size > 0) params.set_from_string("shadow.map_size", std::to_string(map_size));
   params.set("view.debug_quad", 0.0);
   if (!renderer.set_lab(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
-  FrameRequest request;
-  request.camera = OrbitCamera::framing(s.view ? *s.view : s.scene.bounds());
-  request.width = kWidth;
-  request.height = kHeight;
+  FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
 
   BenchPoint point{t.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
   std::map<std::string, std::vector<double>> pass_ms;
@@ -154,10 +160,7 @@ nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int fram
   params.set("view.debug_quad", 0.0);
   renderer.set_lab(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
-  FrameRequest request;
-  request.camera = OrbitCamera::framing(scene.bounds());
-  request.width = kWidth;
-  request.height = kHeight;
+  FrameRequest request = bench_request(scene.bounds());
   auto run = [&](bool force) {
     std::vector<double> total, lit;
     const long shadow_before = renderer.stats().shadow_passes;
@@ -191,10 +194,7 @@ nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int fram
   const Lab& lab = *find_lab(4);
   renderer.set_lab(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
-  FrameRequest request;
-  request.camera = OrbitCamera::framing(scene.bounds());
-  request.width = kWidth;
-  request.height = kHeight;
+  FrameRequest request = bench_request(scene.bounds());
   auto pass_median = [&](ParamSet params, const char* name, long* present) {
     std::vector<double> ms;
     *present = 0;
@@ -313,10 +313,7 @@ int run_bench(const BenchOptions& options) {
       blur_params.set_from_string("shadow.map_size", "1024");
       renderer.set_lab(vsm.hooks(Impl::Solution));
       renderer.set_scene(bench_scenes.front().scene);
-      FrameRequest request;
-      request.camera = OrbitCamera::framing(bench_scenes.front().scene.bounds());
-      request.width = kWidth;
-      request.height = kHeight;
+      const FrameRequest request = bench_request(bench_scenes.front().scene.bounds());
       renderer.render(blur_params, request);
       const std::vector<int> radii = options.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16};
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);

@@ -96,6 +96,12 @@ Scene stretched_scene(float depth) {
   return s;
 }
 
+std::string range_label(float depth) {
+  char label[64];
+  std::snprintf(label, sizeof label, "range %.0f", static_cast<double>(depth));
+  return label;
+}
+
 // The bias and the minimum variance are in units of the fitted box's depth: scale them by 12 / range to
 // keep the same world-space amounts (otherwise a range of 12000 turns lab 1's 0.005 into 60 units of
 // bias and every shadow detaches: measured leak 100 % with every format).
@@ -108,9 +114,7 @@ TEST_F(StressGlTest, DepthFormatsOverGrowingDepthRanges) {
   const Bounds view = make_default_scene().bounds();
   for (float depth : {12.0f, 1200.0f, 12000.0f}) {
     const Scene s = stretched_scene(depth);
-    char label[64];
-    std::snprintf(label, sizeof label, "range %.0f", static_cast<double>(depth));
-    const std::string l(label);
+    const std::string l = range_label(depth);
     const std::string bias = world_constant("shadow.bias", 0.005, depth);
     const Outcome as_is = run((l + " depth 24, bias as is").c_str(), "shadows detach at large ranges", 1, s,
                               {"light.elevation=90", "shadow.depth_format=24"}, &view);
@@ -144,9 +148,7 @@ TEST_F(StressGlTest, MomentsFormatsOverGrowingDepthRanges) {
   const Bounds view = make_default_scene().bounds();
   for (float depth : {12.0f, 120.0f, 1200.0f, 12000.0f}) {
     const Scene s = stretched_scene(depth);
-    char label[64];
-    std::snprintf(label, sizeof label, "range %.0f", static_cast<double>(depth));
-    const std::string l(label);
+    const std::string l = range_label(depth);
     const std::string bias = world_constant("shadow.bias", 0.005, depth);
     const Outcome f32 = run((l + " RG32F").c_str(), "within lab 4's bounds", 4, s,
                             {"vsm.format=RG32F", "light.elevation=90", bias}, &view);

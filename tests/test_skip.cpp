@@ -3,6 +3,9 @@
 // (draws, casters culled, shadow texels written) are exact.
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <optional>
+
 #include "renderer/renderer.h"
 #include "renderer/technique_params.h"
 #include "renderer/vsm_params.h"
@@ -43,82 +46,80 @@ class SkipTest : public GlTest {
     req.height = 180;
     return req;
   }
+  // A renderer on the spread scene with a lab's hooks: a light type, a technique.
+  std::unique_ptr<Renderer> renderer(std::optional<LightType> light = {},
+                                     ShadowTechnique technique = ShadowTechnique::Depth) {
+    auto r = std::make_unique<Renderer>();
+    r->set_scene(scene);
+    LabHooks hooks;
+    hooks.light = light;
+    hooks.technique = technique;
+    EXPECT_TRUE(r->set_lab(hooks)) << r->shader_error();
+    return r;
+  }
   Scene scene = spread_scene();
 };
 
 TEST_F(SkipTest, SpotSkipsCastersOutsideItsFrustumAndTheMapIsTheSame) {
-  Renderer r;
-  r.set_scene(scene);
-  LabHooks hooks;
-  hooks.light = LightType::Spot;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  auto r = renderer(LightType::Spot);
   // The spot stands 10 above the centre box (the scene's centre is there too), cone 20 degrees.
   const char* spot[] = {"light.position_x=0", "light.position_y=10", "light.position_z=0", "light.cone_deg=20"};
   ParamSet on = params({spot[0], spot[1], spot[2], spot[3], "shadow.cull_casters=true"});
   ParamSet off = params({spot[0], spot[1], spot[2], spot[3], "shadow.cull_casters=false"});
-  r.render(off, request());
-  const long draws_off = r.stats().draws;
-  const long texels_off = r.stats().shadow_texels_written;
-  EXPECT_EQ(r.stats().casters_culled, 0);
+  r->render(off, request());
+  const long draws_off = r->stats().draws;
+  const long texels_off = r->stats().shadow_texels_written;
+  EXPECT_EQ(r->stats().casters_culled, 0);
   int size = 0;
-  const std::vector<float> all = r.read_shadow_depth(&size);
-  r.render(on, request());
+  const std::vector<float> all = r->read_shadow_depth(&size);
+  r->render(on, request());
   // The three far boxes are outside the cone: 2 casters drawn instead of 5 (the lit pass draws all 5).
-  EXPECT_EQ(r.stats().casters_culled, 3);
-  EXPECT_EQ(r.stats().draws - draws_off, 2 + 5);
-  EXPECT_EQ(r.stats().shadow_texels_written - texels_off, texels_off) << "the culled boxes wrote no texel";
-  const std::vector<float> culled = r.read_shadow_depth(&size);
+  EXPECT_EQ(r->stats().casters_culled, 3);
+  EXPECT_EQ(r->stats().draws - draws_off, 2 + 5);
+  EXPECT_EQ(r->stats().shadow_texels_written - texels_off, texels_off) << "the culled boxes wrote no texel";
+  const std::vector<float> culled = r->read_shadow_depth(&size);
   ASSERT_EQ(all.size(), culled.size());
   EXPECT_EQ(all, culled) << "culling changed the shadow map";
 }
 
 TEST_F(SkipTest, DirectionalFitHoldsEveryCaster) {
-  Renderer r;
-  r.set_scene(scene);
-  r.render(params({"light.elevation=40"}), request());
-  EXPECT_EQ(r.stats().casters_culled, 0) << "the fitted ortho box contains the whole scene";
-  EXPECT_EQ(r.stats().shadow_passes, 1);
+  auto r = renderer();
+  r->render(params({"light.elevation=40"}), request());
+  EXPECT_EQ(r->stats().casters_culled, 0) << "the fitted ortho box contains the whole scene";
+  EXPECT_EQ(r->stats().shadow_passes, 1);
   // Every texel the ground covers is written at least once: the ground fills the map seen from above.
-  EXPECT_GE(r.stats().shadow_texels_written, 512L * 512L / 2);
+  EXPECT_GE(r->stats().shadow_texels_written, 512L * 512L / 2);
 }
 
 TEST_F(SkipTest, PointLightCullsPerCubeFaceAndStoresTheSameDistances) {
-  Renderer r;
-  r.set_scene(scene);
-  LabHooks hooks;
-  hooks.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  auto r = renderer(LightType::Point);
   const char* at = "light.position_y=4";
-  r.render(params({at, "point.single_pass=false", "shadow.cull_casters=false"}), request());
-  EXPECT_EQ(r.stats().casters_culled, 0);
-  const long draws_all = r.stats().draws;
+  r->render(params({at, "point.single_pass=false", "shadow.cull_casters=false"}), request());
+  EXPECT_EQ(r->stats().casters_culled, 0);
+  const long draws_all = r->stats().draws;
   int size = 0;
   std::vector<float> all[6];
-  for (int f = 0; f < 6; ++f) all[f] = r.read_cube_face(f, &size);
-  r.render(params({at, "point.single_pass=false", "shadow.cull_casters=true"}), request());
+  for (int f = 0; f < 6; ++f) all[f] = r->read_cube_face(f, &size);
+  r->render(params({at, "point.single_pass=false", "shadow.cull_casters=true"}), request());
   // 6 faces x 5 casters = 30 candidate draws; the +Y face sees nothing (all below the light), each side
   // face sees at most the ground, the centre box and its own far box.
-  const long culled = r.stats().casters_culled;
+  const long culled = r->stats().casters_culled;
   EXPECT_GE(culled, 10);
-  EXPECT_EQ(r.stats().draws - draws_all, draws_all - culled);
-  for (int f = 0; f < 6; ++f) EXPECT_EQ(all[f], r.read_cube_face(f, &size)) << "face " << f;
+  EXPECT_EQ(r->stats().draws - draws_all, draws_all - culled);
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(all[f], r->read_cube_face(f, &size)) << "face " << f;
 }
 
 TEST_F(SkipTest, BlurTexelsAndSkippedFramesAreCountedExactly) {
-  Renderer r;
-  r.set_scene(scene);
-  LabHooks hooks;
-  hooks.technique = ShadowTechnique::Moments;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
-  r.render(params({"vsm.blur_radius=0"}), request());
-  const long moments_only = r.stats().shadow_texels_written;
+  auto r = renderer({}, ShadowTechnique::Moments);
+  r->render(params({"vsm.blur_radius=0"}), request());
+  const long moments_only = r->stats().shadow_texels_written;
   EXPECT_GT(moments_only, 0);
-  r.render(params({"vsm.blur_radius=0"}), request());  // nothing changed: no pass, no texel
-  EXPECT_EQ(r.stats().shadow_texels_written, moments_only);
-  r.render(params({"vsm.blur_radius=2"}), request());
-  EXPECT_EQ(r.stats().shadow_texels_written, 2 * moments_only + 2L * 512 * 512) << "moments again plus X and Y";
-  const nlohmann::json j = r.stats().to_json();
-  EXPECT_EQ(j.at("shadow_texels_written").get<long>(), r.stats().shadow_texels_written);
+  r->render(params({"vsm.blur_radius=0"}), request());  // nothing changed: no pass, no texel
+  EXPECT_EQ(r->stats().shadow_texels_written, moments_only);
+  r->render(params({"vsm.blur_radius=2"}), request());
+  EXPECT_EQ(r->stats().shadow_texels_written, 2 * moments_only + 2L * 512 * 512) << "moments again plus X and Y";
+  const nlohmann::json j = r->stats().to_json();
+  EXPECT_EQ(j.at("shadow_texels_written").get<long>(), r->stats().shadow_texels_written);
   EXPECT_EQ(j.at("casters_culled").get<long>(), 0);
 }
 
@@ -143,15 +144,14 @@ bool has_pass(const FrameStats& stats, const std::string& name) {
 }
 
 TEST_F(SkipTest, LightVolumeWireframeDrawsOnlyWhenShown) {
-  Renderer r;
-  r.set_scene(scene);
+  auto r = renderer();
   const FrameRequest req = request();
-  r.render(params({"view.light_volume=false"}), req);
-  EXPECT_FALSE(has_pass(r.stats(), "light_volume_view"));
-  const auto off = r.read_color();
-  r.render(params({"view.light_volume=true"}), req);
-  EXPECT_TRUE(has_pass(r.stats(), "light_volume_view"));
-  const auto on = r.read_color();
+  r->render(params({"view.light_volume=false"}), req);
+  EXPECT_FALSE(has_pass(r->stats(), "light_volume_view"));
+  const auto off = r->read_color();
+  r->render(params({"view.light_volume=true"}), req);
+  EXPECT_TRUE(has_pass(r->stats(), "light_volume_view"));
+  const auto on = r->read_color();
   // The box's edges in the wireframe's colour (255, 217, 51), and only lines: a few percent of the frame.
   long yellow = 0;
   for (std::size_t i = 0; i < on.size(); i += 4)
@@ -163,29 +163,28 @@ TEST_F(SkipTest, LightVolumeWireframeDrawsOnlyWhenShown) {
   // A spot light's frustum too; a point light has nothing to draw (no pass).
   LabHooks spot;
   spot.light = LightType::Spot;
-  ASSERT_TRUE(r.set_lab(spot));
-  r.render(params({"view.light_volume=true", "light.position_y=10", "light.cone_deg=20"}), req);
-  EXPECT_TRUE(has_pass(r.stats(), "light_volume_view"));
+  ASSERT_TRUE(r->set_lab(spot));
+  r->render(params({"view.light_volume=true", "light.position_y=10", "light.cone_deg=20"}), req);
+  EXPECT_TRUE(has_pass(r->stats(), "light_volume_view"));
   LabHooks point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(point));
-  r.render(params({"view.light_volume=true", "light.position_y=4"}), req);
-  EXPECT_FALSE(has_pass(r.stats(), "light_volume_view"));
+  ASSERT_TRUE(r->set_lab(point));
+  r->render(params({"view.light_volume=true", "light.position_y=4"}), req);
+  EXPECT_FALSE(has_pass(r->stats(), "light_volume_view"));
 }
 
 TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
-  Renderer r;
-  r.set_scene(scene);
+  auto r = renderer();
   FrameRequest req = request();
-  r.render(params({"view.debug_quad=false"}), req);
-  EXPECT_FALSE(has_pass(r.stats(), "debug_quad"));
-  const auto none = r.read_color();
+  r->render(params({"view.debug_quad=false"}), req);
+  EXPECT_FALSE(has_pass(r->stats(), "debug_quad"));
+  const auto none = r->read_color();
   const int w = req.width, h = req.height;
   auto covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, none, w, 0, 0, w, h); };
-  r.render(params({"view.debug_quad=true", "view.debug_quad_size=0.25"}), req);
-  const double small = covered(r.read_color());
-  r.render(params({"view.debug_quad=true", "view.debug_quad_size=0.75"}), req);
-  const double large = covered(r.read_color());
+  r->render(params({"view.debug_quad=true", "view.debug_quad_size=0.25"}), req);
+  const double small = covered(r->read_color());
+  r->render(params({"view.debug_quad=true", "view.debug_quad_size=0.75"}), req);
+  const double large = covered(r->read_color());
   // The quad's area grows with the square of its side: (0.75 / 0.25)^2 = 9.
   EXPECT_GT(large, 6.0 * small);
   EXPECT_GT(small, 0.01);
@@ -194,17 +193,17 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
   // three channels differ.
   LabHooks vsm;
   vsm.technique = ShadowTechnique::Moments;
-  ASSERT_TRUE(r.set_lab(vsm));
-  r.render(params({"view.debug_quad=false"}), req);
-  const auto vsm_none = r.read_color();
+  ASSERT_TRUE(r->set_lab(vsm));
+  r->render(params({"view.debug_quad=false"}), req);
+  const auto vsm_none = r->read_color();
   auto vsm_covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, vsm_none, w, 0, 0, w, h); };
-  r.render(params({"view.debug_quad=true", "view.debug_channel=all"}), req);
-  const double three = vsm_covered(r.read_color());
+  r->render(params({"view.debug_quad=true", "view.debug_channel=all"}), req);
+  const double three = vsm_covered(r->read_color());
   std::vector<std::uint8_t> channel[3];
   const char* names[] = {"view.debug_channel=moment 1", "view.debug_channel=moment 2", "view.debug_channel=variance"};
   for (int c = 0; c < 3; ++c) {
-    r.render(params({"view.debug_quad=true", names[c]}), req);
-    channel[c] = r.read_color();
+    r->render(params({"view.debug_quad=true", names[c]}), req);
+    channel[c] = r->read_color();
   }
   const double one = vsm_covered(channel[0]);
   EXPECT_NEAR(three / one, 3.0, 0.3);
@@ -216,12 +215,12 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
   // A point light's six cube faces, in the window as in the PNG.
   LabHooks point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(point));
-  r.render(params({"view.debug_quad=false", "light.position_y=4"}), req);
-  const auto point_none = r.read_color();
-  r.render(params({"view.debug_quad=true", "light.position_y=4"}), req);
-  EXPECT_TRUE(has_pass(r.stats(), "debug_quad"));
-  EXPECT_GT(differing(r.read_color(), point_none, w, 0, 0, w, h), 0.01);
+  ASSERT_TRUE(r->set_lab(point));
+  r->render(params({"view.debug_quad=false", "light.position_y=4"}), req);
+  const auto point_none = r->read_color();
+  r->render(params({"view.debug_quad=true", "light.position_y=4"}), req);
+  EXPECT_TRUE(has_pass(r->stats(), "debug_quad"));
+  EXPECT_GT(differing(r->read_color(), point_none, w, 0, 0, w, h), 0.01);
 }
 
 }  // namespace
