@@ -22,6 +22,15 @@ ParamSet lab_params(const Lab& lab) {
   return set;
 }
 
+std::function<LabHooks(Impl)> visibility_lab_hooks(LightType light, std::string exercise, std::string solution) {
+  return [=](Impl impl) {
+    LabHooks hooks;
+    hooks.light = light;
+    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? exercise : solution;
+    return hooks;
+  };
+}
+
 // Each lab's definition lives in its own folder; this is the list, in the course's order.
 Lab make_lab_basic_shadow_map();
 Lab make_lab_bias_tuning();

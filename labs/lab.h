@@ -52,4 +52,8 @@ const Lab* find_lab(int number);
 // The renderer's parameters with the lab's declared on top (its defaults win).
 ParamSet lab_params(const Lab& lab);
 
+// Hooks of a lab whose exercise is the visibility function for one light type (the spot and point
+// light labs): "lab/visibility.glsl" is the exercise or the solution file.
+std::function<LabHooks(Impl)> visibility_lab_hooks(LightType light, std::string exercise, std::string solution);
+
 }  // namespace shadowlab

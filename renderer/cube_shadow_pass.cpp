@@ -48,10 +48,7 @@ bool CubeShadowPass::ensure_targets(int size) {
 
 void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, const glm::vec3& light_position,
                           bool single_pass, bool cull_casters, long& draws, long& faces, long& culled) {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glViewport(0, 0, size_, size_);
+  bind_color_target(fbo_.id(), size_, size_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

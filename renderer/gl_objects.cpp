@@ -35,6 +35,13 @@ GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum 
   return t;
 }
 
+void bind_color_target(GLuint framebuffer, int width, int height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  const GLenum color = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &color);
+  glViewport(0, 0, width, height);
+}
+
 void check_framebuffer(const char* what) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {

@@ -72,5 +72,8 @@ GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum 
 
 // Throws "<what> framebuffer is incomplete (status 0x...)" unless the bound framebuffer is complete.
 void check_framebuffer(const char* what);
+// Binds a framebuffer to draw into its first colour attachment only (a G-buffer's other attachments
+// keep what they hold) over a width x height viewport.
+void bind_color_target(GLuint framebuffer, int width, int height);
 
 }  // namespace shadowlab

@@ -205,10 +205,7 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
                                long& draws, long& culled) {
   if (moments_u_.generation != moments_.generation())
     moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj")};
-  glBindFramebuffer(GL_FRAMEBUFFER, moments_fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glViewport(0, 0, size_, size_);
+  bind_color_target(moments_fbo_.id(), size_, size_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -238,10 +235,7 @@ void MomentsPass::blur(int direction, int radius, float sigma, GLuint empty_vao)
     u = {program.generation(), Uniform(id, "u_moments"), Uniform(id, "u_blur_radius"), Uniform(id, "u_blur_sigma")};
   }
   // X reads A and writes B, Y reads B and writes A: a texture is never read and written at once.
-  glBindFramebuffer(GL_FRAMEBUFFER, direction == 0 ? blur_fbo_.id() : moments_fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glViewport(0, 0, size_, size_);
+  bind_color_target(direction == 0 ? blur_fbo_.id() : moments_fbo_.id(), size_, size_);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(program.id());
   glActiveTexture(GL_TEXTURE0);
@@ -333,10 +327,7 @@ void MomentsPass::blur_fast_fragment(int direction, int radius, float sigma, GLu
   const GLuint id = direction == 0 ? it->second.x.id() : it->second.y.id();
   const std::vector<double> w = gaussian_weights(radius, sigma);
   const std::vector<float> taps = bilinear_taps(w, radius);
-  glBindFramebuffer(GL_FRAMEBUFFER, direction == 0 ? blur_fbo_.id() : moments_fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glViewport(0, 0, size_, size_);
+  bind_color_target(direction == 0 ? blur_fbo_.id() : moments_fbo_.id(), size_, size_);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(id);
   glActiveTexture(GL_TEXTURE0);
@@ -359,10 +350,7 @@ void MomentsPass::blur_brute2d(int radius, float sigma, GLuint empty_vao) {
   if (radius > kMaxBrute2dRadius) throw std::invalid_argument("brute2d blur: radius above 64");
   const GLuint id = brute_.id();
   const std::vector<float> wf = to_float(gaussian_weights(radius, sigma));
-  glBindFramebuffer(GL_FRAMEBUFFER, blur_fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glViewport(0, 0, size_, size_);
+  bind_color_target(blur_fbo_.id(), size_, size_);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(id);
   glActiveTexture(GL_TEXTURE0);
@@ -376,6 +364,7 @@ void MomentsPass::blur_brute2d(int radius, float sigma, GLuint empty_vao) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, blur_fbo_.id());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, moments_fbo_.id());
+  const GLenum color = GL_COLOR_ATTACHMENT0;
   glDrawBuffers(1, &color);
   glBlitFramebuffer(0, 0, size_, size_, 0, 0, size_, size_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -582,10 +582,7 @@ void Renderer::normals_pass(const ParamSet&) {
   Programs& p = *programs_;
   if (p.normals_u.generation != p.normals.generation())
     p.normals_u = {p.normals.generation(), Uniform(p.normals.id(), "u_view_proj"), Uniform(p.normals.id(), "u_normal_length")};
-  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // lines over the picture; the G-buffer stays as drawn
-  glDrawBuffers(1, &color_only);
-  glViewport(0, 0, t.width, t.height);
+  bind_color_target(t.view_fbo.id(), t.width, t.height);  // lines over the picture; the G-buffer stays as drawn
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
@@ -606,10 +603,7 @@ void Renderer::normals_pass(const ParamSet&) {
 void Renderer::volumes_wireframe_pass(const ParamSet& params) {
   ShadowVolumePass& volumes = volume_pass();
   Targets& t = *targets_;
-  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color_only);
-  glViewport(0, 0, t.width, t.height);
+  bind_color_target(t.view_fbo.id(), t.width, t.height);
   // Lines running to infinity need the infinite far plane, whatever the technique drew with; the depth
   // test against the scene is then only approximate for the other techniques (a different projection).
   glm::mat4 projection = camera_projection_;  // the same field of view, its far plane moved to infinity
@@ -812,10 +806,7 @@ void Renderer::remap_view_pass(const ParamSet& params) {
   Targets& t = *targets_;
   Programs& p = *programs_;
   if (p.remap_view_u.generation != p.remap_view.generation()) resolve_lit_uniforms(p.remap_view, p.remap_view_u);
-  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // a tint over the picture; the G-buffer stays as drawn
-  glDrawBuffers(1, &color_only);
-  glViewport(0, 0, t.width, t.height);
+  bind_color_target(t.view_fbo.id(), t.width, t.height);  // a tint over the picture; the G-buffer stays as drawn
   // The same vertices through the same vertex shader give the same depths: LEQUAL keeps exactly the
   // visible surfaces.
   glEnable(GL_DEPTH_TEST);
@@ -838,9 +829,7 @@ void Renderer::remap_view_pass(const ParamSet& params) {
 void Renderer::debug_quad_pass(const ParamSet& params) {
   Targets& t = *targets_;
   Programs& p = *programs_;
-  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;  // the quads must not overwrite the G-buffer
-  glDrawBuffers(1, &color_only);
+  bind_color_target(t.view_fbo.id(), t.width, t.height);  // the quads must not overwrite the G-buffer
   glDisable(GL_DEPTH_TEST);
   // Squares along the bottom right (the panel sits on the left), view.debug_quad_size of the frame height.
   const int side = std::max(8, static_cast<int>(static_cast<float>(t.height) * params.get_float("view.debug_quad_size")));
@@ -923,10 +912,7 @@ void Renderer::light_volume_pass() {
   if (p.lines_u.generation != p.lines.generation())
     p.lines_u = {p.lines.generation(), Uniform(p.lines.id(), "u_view_proj"), Uniform(p.lines.id(), "u_color")};
   Targets& t = *targets_;
-  glBindFramebuffer(GL_FRAMEBUFFER, t.view_fbo.id());
-  const GLenum color_only = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color_only);
-  glViewport(0, 0, t.width, t.height);
+  bind_color_target(t.view_fbo.id(), t.width, t.height);
   glDisable(GL_DEPTH_TEST);  // the whole box, also where the scene hides it
   glUseProgram(p.lines.id());
   p.lines_u.view_proj.set(camera_projection_ * camera_view_);

@@ -79,12 +79,7 @@ Lab make_lab_spot_light() {
       {"low", "Low and near: the check's second place.", {{"light.position_x", "-5.5"}, {"light.position_y", "3.2"}, {"light.position_z", "3"}, {"light.cone_deg", "50"}}},
       {"narrow", "A 15-degree cone: the same texels on a small spot, crisp shadows.", {{"light.cone_deg", "15"}}},
   };
-  lab.hooks = [](Impl impl) {
-    LabHooks hooks;
-    hooks.light = LightType::Spot;
-    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? kExercise : kSolution;
-    return hooks;
-  };
+  lab.hooks = visibility_lab_hooks(LightType::Spot, kExercise, kSolution);
   lab.check = check_spot;
   return lab;
 }

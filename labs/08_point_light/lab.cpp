@@ -93,12 +93,7 @@ Lab make_lab_point_light() {
       {"low", "Just above the ground: long shadows in every direction.", {{"light.position_y", "1.5"}}},
       {"one pass", "All six faces in one draw, the geometry shader choosing the layer.", {{"point.single_pass", "true"}}},
   };
-  lab.hooks = [](Impl impl) {
-    LabHooks hooks;
-    hooks.light = LightType::Point;
-    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? kExercise : kSolution;
-    return hooks;
-  };
+  lab.hooks = visibility_lab_hooks(LightType::Point, kExercise, kSolution);
   lab.check = check_point;
   return lab;
 }
