@@ -35,7 +35,10 @@ bool orbit_pan_zoom(OrbitCamera& camera, const Bounds& scene) {
     moved = true;
   }
   if (io.MouseWheel != 0.0f) {
-    camera.distance = std::max(camera.near_plane * 2.0f, camera.distance * std::pow(kZoomPerNotch, io.MouseWheel));
+    // Closer by 10 % a notch, down to a thousandth of the scene's size. (It was clamped to twice the near
+    // plane, which is recomputed from the distance: from the framed view a notch in moved the camera out.)
+    const float closest = scene.empty() ? 1e-3f : 1e-3f * glm::length(scene.extent());
+    camera.distance = std::max(closest, camera.distance * std::pow(kZoomPerNotch, io.MouseWheel));
     moved = true;
   }
   if (moved && !scene.empty()) {
