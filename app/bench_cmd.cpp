@@ -15,7 +15,7 @@
 #include "app/headless.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
-#include "app/plot.h"
+#include "app/bench_plot.h"
 #include "labs/check.h"
 #include "renderer/blur_bench.h"
 #include "renderer/context.h"
@@ -319,33 +319,28 @@ int run_bench(const BenchOptions& options) {
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
     }
 
-    // The Pareto front of each scene: no other technique of that scene is both faster and more exact.
-    std::map<std::string, std::vector<PlotPoint>> by_scene;
-    std::vector<std::string> families;
+    // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
+    // exact), built from the JSON points by the function the app's panel uses to show a bench.json.
+    nlohmann::json json_points = nlohmann::json::array();
     for (const auto& p : points)
-      if (std::find(families.begin(), families.end(), p.family) == families.end()) families.push_back(p.family);
-    for (const auto& p : points) {
-      const int group = static_cast<int>(std::find(families.begin(), families.end(), p.family) - families.begin());
-      const std::string label = p.map_size > 0 ? p.technique + " " + std::to_string(p.map_size) : p.technique;
-      by_scene[p.scene].push_back({label, p.gpu_ms, p.error, false, group});
-    }
-    for (auto& [name, plot] : by_scene) mark_pareto_front(plot);
+      json_points.push_back({{"scene", p.scene}, {"technique", p.technique}, {"family", p.family},
+                             {"map_size", p.map_size}, {"gpu_ms", p.gpu_ms}, {"cpu_ms", p.cpu_ms}, {"error", p.error},
+                             {"passes", p.pass_ms}, {"metrics", to_json(p.metrics)}});
+    const BenchPlots plots = bench_plots_from_json({{"points", json_points}});
 
     const fs::path out(options.out_dir);
     std::ostringstream csv;
     csv << "scene,technique,map_size,gpu_ms,cpu_ms,error,acne_all,leak_all,bleeding,mae_interior,mae_edge,pareto,passes\n";
-    nlohmann::json json_points = nlohmann::json::array();
     std::map<std::string, std::size_t> index_in_scene;
-    for (const auto& p : points) {
-      const bool pareto = by_scene[p.scene][index_in_scene[p.scene]++].pareto;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const BenchPoint& p = points[i];
+      const bool pareto = plots.by_scene.at(p.scene)[index_in_scene[p.scene]++].pareto;
+      json_points[i]["pareto"] = pareto;
       std::string passes;
       for (const auto& [name, ms] : p.pass_ms) passes += (passes.empty() ? "" : " ") + name + "=" + std::to_string(ms);
       csv << p.scene << ',' << csv_escape(p.technique) << ',' << p.map_size << ',' << p.gpu_ms << ',' << p.cpu_ms << ','
           << p.error << ',' << p.metrics.acne_rate_all << ',' << p.metrics.leak_rate_all << ',' << p.metrics.bleeding_rate
           << ',' << p.metrics.mae_interior << ',' << p.metrics.mae_edge << ',' << (pareto ? 1 : 0) << ',' << passes << '\n';
-      json_points.push_back({{"scene", p.scene}, {"technique", p.technique}, {"map_size", p.map_size}, {"gpu_ms", p.gpu_ms},
-                             {"cpu_ms", p.cpu_ms}, {"error", p.error}, {"pareto", pareto}, {"passes", p.pass_ms},
-                             {"metrics", to_json(p.metrics)}});
     }
     write_text_atomic(out / "bench.csv", csv.str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -361,18 +356,17 @@ int run_bench(const BenchOptions& options) {
                              {"blur_methods", blur_json(blur_rows)}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
-    // The plot: one panel per scene, drawn with the same function as the app's panel.
+    // The plot: one tile per scene, drawn by the code that draws it in the app's panel.
     const int plot_w = 640, plot_h = 420;
-    const int cols = 2, rows = static_cast<int>((by_scene.size() + 1) / 2);
+    const int cols = 2, rows = static_cast<int>((plots.by_scene.size() + 1) / 2);
     ImGuiOffscreen imgui(cols * plot_w, rows * plot_h);
     const auto pixels = imgui.render([&] {
       int i = 0;
-      for (const auto& [name, plot] : by_scene) {
+      for (const auto& [name, plot] : plots.by_scene) {
         ImGui::SetNextWindowPos(ImVec2(static_cast<float>((i % cols) * plot_w), static_cast<float>((i / cols) * plot_h)));
         ImGui::SetNextWindowSize(ImVec2(static_cast<float>(plot_w), static_cast<float>(plot_h)));
         ImGui::Begin(("##plot" + name).c_str(), nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
-        draw_error_time_plot(plot, families, plot_w - 16.0f, plot_h - 40.0f,
-                             ("scene: " + name + "  (error against GPU ms per frame; front circled)").c_str());
+        draw_bench_scene(plots, name, plot_w - 16.0f, plot_h - 40.0f);
         ImGui::End();
         ++i;
       }
@@ -397,7 +391,7 @@ int run_bench(const BenchOptions& options) {
       std::printf("blur r%-2d %-8s %7.2f ms = %.2fx the taught separable blur (%.2f ms), max |d| %.1e\n", b.radius,
                   b.method.c_str(), b.ms_total, taught->ms_total / b.ms_total, taught->ms_total, b.max_abs_diff_vs_separable);
     }
-    for (const auto& [name, plot] : by_scene) {
+    for (const auto& [name, plot] : plots.by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;
       for (const auto& p : plot)

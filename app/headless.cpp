@@ -67,6 +67,8 @@ int run_render(const RenderOptions& options) {
     ParamSet params = lab_params(*lab);
     for (const auto& a : options.assignments) params.apply_assignment(a);
     const Scene scene = load_scene_or_default(options.scene_file);
+    std::optional<BenchPlots> bench_plots;
+    if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
     make_output_dir(options.out_dir);
 
     std::string error;
@@ -102,6 +104,13 @@ int run_render(const RenderOptions& options) {
         model.lab_text = &text;
         model.check = check ? &*check : nullptr;
         model.interactive = false;
+        BenchPanelState bench;
+        bench.open = bench_plots.has_value();
+        bench.path = options.bench_file;
+        if (bench_plots) {
+          model.bench = &bench;
+          model.bench_plots = &*bench_plots;
+        }
         ImGuiOffscreen offscreen(options.width, options.height);
         color = offscreen.render(
             [&] {

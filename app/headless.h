@@ -22,6 +22,7 @@ struct RenderOptions {
   // documentation pictures; with panel_check the lab's Check runs first and its result is shown.
   bool panel = false;
   bool panel_check = false;
+  std::string bench_file;  // with panel: the Speed against error window on this bench.json
 };
 
 // Loads --scene or builds the default scene; throws with a message naming the file on failure.

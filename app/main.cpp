@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   app.add_option("--frames", window_options.frames, "Close the window after this many frames (for tests)")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", window_options.screenshot, "Save the last frame, panel included, to this PNG");
+  app.add_option("--bench", window_options.bench_file,
+                 "Open the Speed against error window on this bench.json (default: docs/bench.json, when opened)");
   app.add_option("--script", window_options.script,
                  "Scripted input for tests: key:K,frames:N,screenshot:F,resize:WxH,iconify,restore,wait:S,drop:F");
 
@@ -33,8 +35,11 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--impl", render.impl, "Run the lab's exercise or its solution")
       ->check(CLI::IsMember({"exercise", "solution"}));
   render_cmd->add_option("--out", render.out_dir, "Folder for the outputs (created if missing)")->required();
-  render_cmd->add_flag("--panel", render.panel, "Draw the window's panel over final.png (documentation screenshots)");
+  CLI::Option* panel_flag =
+      render_cmd->add_flag("--panel", render.panel, "Draw the window's panel over final.png (documentation screenshots)");
   render_cmd->add_flag("--check", render.panel_check, "With --panel: run the lab's Check first and show its result");
+  render_cmd->add_option("--bench", render.bench_file, "With --panel: also show the Speed against error window on this bench.json")
+      ->needs(panel_flag);
   render_cmd->add_flag("--buffers", render.buffers,
                        "Also write world positions, normals and visibility as float32 .npy files");
 

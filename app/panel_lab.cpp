@@ -202,6 +202,11 @@ PanelActions draw_lab_panel(PanelModel& m) {
   draw_parameters(m, a);
   draw_compare(m, a);
   draw_stats(m);
+  if (m.bench) {
+    ImGui::Checkbox("Speed against error (bench plot)", &m.bench->open);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Error against frame time for every technique and map size, from a bench.json");
+  }
   if (m.interactive) {
     if (ImGui::Button("Screenshot (F12)")) a.screenshot = true;
     ImGui::SameLine();
@@ -210,6 +215,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
   }
   if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
   ImGui::End();
+  if (m.bench) a.load_bench = draw_bench_window(m.bench_plots, *m.bench, m.interactive);
   return a;
 }
 

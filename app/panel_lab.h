@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "app/bench_plot.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/params.h"
@@ -42,6 +43,8 @@ struct PanelModel {
   std::string status;
   CompareState* compare = nullptr;  // null: no Compare section (headless)
   SettingsSession* settings = nullptr;
+  BenchPanelState* bench = nullptr;       // null: no Speed against error window
+  const BenchPlots* bench_plots = nullptr;  // what it shows (null: nothing loaded)
   bool interactive = true;  // false: headless pictures (no buttons that would do nothing)
 };
 
@@ -53,6 +56,7 @@ struct PanelActions {
   bool screenshot = false;
   bool fullscreen = false;
   bool compare_changed = false;  // the split view's other side must be rebuilt
+  bool load_bench = false;       // load BenchPanelState::path into the Speed against error window
 };
 
 PanelActions draw_lab_panel(PanelModel& model);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImRect
 
 namespace shadowlab {
 
@@ -14,6 +15,30 @@ void mark_pareto_front(std::vector<PlotPoint>& points) {
       return (q.time_ms <= p.time_ms && q.error <= p.error) && (q.time_ms < p.time_ms || q.error < p.error);
     });
   }
+}
+
+std::vector<ImVec2> place_labels(const std::vector<ImVec2>& anchors, const std::vector<ImVec2>& sizes, ImVec2 min,
+                                 ImVec2 max) {
+  std::vector<ImRect> placed;
+  std::vector<ImVec2> out;
+  for (std::size_t i = 0; i < anchors.size(); ++i) {
+    const ImVec2 c = anchors[i], size = sizes[i];
+    const ImVec2 corners[] = {{c.x + 8, c.y - 16}, {c.x + 8, c.y + 4}, {c.x - 8 - size.x, c.y - 16},
+                              {c.x - 8 - size.x, c.y + 4}};
+    ImRect where(corners[0], ImVec2(corners[0].x + size.x, corners[0].y + size.y));
+    for (const ImVec2& at : corners) {
+      const ImRect r(at, ImVec2(at.x + size.x, at.y + size.y));
+      const bool inside = r.Min.x >= min.x && r.Max.x <= max.x && r.Min.y >= min.y && r.Max.y <= max.y;
+      const bool free = std::none_of(placed.begin(), placed.end(), [&](const ImRect& q) { return q.Overlaps(r); });
+      if (inside && free) {
+        where = r;
+        break;
+      }
+    }
+    placed.push_back(where);
+    out.push_back(where.Min);
+  }
+  return out;
 }
 
 namespace {
@@ -72,7 +97,8 @@ void draw_error_time_plot(const std::vector<PlotPoint>& points, const std::vecto
     const ImVec2 a = to_screen(std::pow(10.0, lt), std::pow(10.0, lg_min));
     draw->AddLine(ImVec2(a.x, p0.y), ImVec2(a.x, p1.y), IM_COL32(60, 62, 70, 255));
     std::snprintf(text, sizeof text, "%g", std::pow(10.0, lt));
-    draw->AddText(ImVec2(a.x - 8, p1.y + 4), IM_COL32(200, 200, 200, 255), text);
+    const float w = ImGui::CalcTextSize(text).x;  // centred on its line, kept inside the plot's width
+    draw->AddText(ImVec2(std::min(a.x - 0.5f * w, origin.x + width - w), p1.y + 4), IM_COL32(200, 200, 200, 255), text);
   }
   draw->AddText(ImVec2((p0.x + p1.x) * 0.5f - 50, p1.y + 18), IM_COL32(220, 220, 220, 255), "frame time (GPU ms, log)");
   // The front, joined in order of time, then every point, the front's labelled.
@@ -86,16 +112,23 @@ void draw_error_time_plot(const std::vector<PlotPoint>& points, const std::vecto
   for (const auto& p : points) {
     const ImVec2 c = to_screen(p.time_ms, p.error);
     draw->AddCircleFilled(c, p.pareto ? 5.0f : 3.5f, group_color(p.group));
-    if (p.pareto) {
-      draw->AddCircle(c, 7.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
-      draw->AddText(ImVec2(c.x + 8, c.y - 16), IM_COL32(255, 255, 255, 255), p.label.c_str());
-    }
+    if (p.pareto) draw->AddCircle(c, 7.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
   }
+  // The front's labels, placed apart from each other.
+  std::vector<ImVec2> anchors, sizes;
+  for (const PlotPoint* p : front) {
+    anchors.push_back(to_screen(p->time_ms, p->error));
+    sizes.push_back(ImGui::CalcTextSize(p->label.c_str()));
+  }
+  const std::vector<ImVec2> at = place_labels(anchors, sizes, p0, p1);
+  for (std::size_t i = 0; i < front.size(); ++i)
+    draw->AddText(at[i], IM_COL32(255, 255, 255, 255), front[i]->label.c_str());
   // Legend.
-  float y = p0.y + 6;
+  float y = p0.y + 6, widest = 0.0f;
+  for (const auto& name : group_names) widest = std::max(widest, ImGui::CalcTextSize(name.c_str()).x);
   for (std::size_t g = 0; g < group_names.size(); ++g) {
-    draw->AddCircleFilled(ImVec2(p1.x - 150, y + 7), 4.0f, group_color(static_cast<int>(g)));
-    draw->AddText(ImVec2(p1.x - 140, y), IM_COL32(220, 220, 220, 255), group_names[g].c_str());
+    draw->AddCircleFilled(ImVec2(p1.x - widest - 18, y + 7), 4.0f, group_color(static_cast<int>(g)));
+    draw->AddText(ImVec2(p1.x - widest - 8, y), IM_COL32(220, 220, 220, 255), group_names[g].c_str());
     y += 16;
   }
   draw->AddText(ImVec2(origin.x + 4, p0.y - 4 + (p1.y - p0.y) * 0.5f - 30), IM_COL32(220, 220, 220, 255), "error");

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <imgui.h>
+
 namespace shadowlab {
 
 struct PlotPoint {
@@ -17,6 +19,12 @@ struct PlotPoint {
 
 // Marks the points no other point beats in both time and error (lower is better in both).
 void mark_pareto_front(std::vector<PlotPoint>& points);
+
+// Where to put labels of the given sizes next to their anchors (top-left corners): above right of the
+// anchor, else the first other corner (below right, above left, below left) that stays inside [min, max]
+// and overlaps no label placed before; when none does, above right.
+std::vector<ImVec2> place_labels(const std::vector<ImVec2>& anchors, const std::vector<ImVec2>& sizes, ImVec2 min,
+                                 ImVec2 max);
 
 // Draws into the current ImGui window: log-scaled error (y) against time (x), the front joined and its
 // points labelled. `group_names` names the colours in a legend.

@@ -77,6 +77,8 @@ struct App {
   Magnifier magnifier;
   int windowed[4] = {0, 0, 1440, 860};  // position and size to return to from fullscreen
   std::vector<std::string> dropped;     // files dropped on the window, opened at the next frame
+  BenchPanelState bench;                // the Speed against error window
+  std::optional<BenchPlots> bench_plots;
 
   void open_lab(const Lab& next) {
     if (lab) settings.leave_lab(lab->number, params);
@@ -96,6 +98,15 @@ struct App {
   void rebuild_split() {
     std::string error;
     if (!split.rebuild(*lab, impl, compare, renderer->scene(), &error)) status = "right side: shader error: " + error;
+  }
+  // Loads bench.path; a file that cannot be read keeps what was shown and says why.
+  void load_bench() {
+    try {
+      bench_plots = load_bench_plots(bench.path);
+      bench.error.clear();
+    } catch (const std::exception& e) {
+      bench.error = e.what();
+    }
   }
   void open_scene(const std::string& path) {
     try {
@@ -164,7 +175,12 @@ void draw_panel(App& app) {
   model.status = app.status;
   model.compare = &app.compare;
   model.settings = &app.settings;
+  model.bench = &app.bench;
+  model.bench_plots = app.bench_plots ? &*app.bench_plots : nullptr;
+  const bool bench_was_open = app.bench.open;
   const PanelActions actions = draw_lab_panel(model);
+  if (actions.load_bench || (app.bench.open && !bench_was_open && !app.bench_plots && app.bench.error.empty()))
+    app.load_bench();
   if (actions.open_lab && actions.open_lab != app.lab) app.open_lab(*actions.open_lab);
   if (actions.impl && *actions.impl != app.impl) {
     app.impl = *actions.impl;
@@ -298,6 +314,13 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     return 1;
   }
+  std::optional<BenchPlots> bench;  // asked for on the command line: read it now, or say why not
+  try {
+    if (!options.bench_file.empty()) bench = load_bench_plots(options.bench_file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    return 1;
+  }
   if (!glfwInit()) {
     std::fprintf(stderr, "shadowlab: no display to open a window on (DISPLAY is not set); %s\n", kHeadlessHint);
     return 1;
@@ -328,6 +351,9 @@ int run_window(const WindowOptions& options) {
     app.renderer = std::make_unique<Renderer>();
     app.renderer->set_scene(scene);
     app.camera = OrbitCamera::framing(scene.bounds());
+    app.bench.path = options.bench_file.empty() ? (data_dir() / "docs" / "bench.json").string() : options.bench_file;
+    app.bench_plots = std::move(bench);
+    app.bench.open = app.bench_plots.has_value();
     app.settings.start();  // only now: a run that failed to start never touches the settings file
     app.open_lab(*lab);
     glfwSetWindowUserPointer(window, &app);

@@ -15,6 +15,9 @@ struct WindowOptions {
   // Scripted input (app/input_script.h): key presses through ImGui's GLFW callback, frames, screenshots,
   // resizing and minimising; the window closes when it ends.
   std::string script;
+  // The bench.json shown in the Speed against error window (opened at start when given). Empty: the
+  // project's measured docs/bench.json, loaded when the window is first opened.
+  std::string bench_file;
 };
 
 // Returns the process exit code. Without a display it prints one line naming the headless commands.

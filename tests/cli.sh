@@ -370,6 +370,61 @@ print("panel region differs:", inside, "view region:", outside, "red pixels:", r
 assert inside > 0.3 and outside < 0.02 and red > 100
 PY
     ;;
+  render_bench_plot)  # the Speed against error window drawn over the frame from a bench.json; bad files refused
+    png_reader
+    python3 - "$tmp/b.json" <<'PY'
+import json, sys
+pts = [dict(scene=s, technique=t, family=f, map_size=m, gpu_ms=ms, error=e)
+       for s in ("default", "grazing")
+       for (t, f, m, ms, e) in [("hard", "hard (lab 1)", 512, 5, 3e-3), ("hard", "hard (lab 1)", 1024, 10, 1e-3),
+                                ("pcf 3x3", "PCF (lab 6)", 1024, 30, 2e-3), ("volumes", "shadow volumes (lab 9)", 0, 4, 4e-3)]]
+json.dump({"points": pts}, open(sys.argv[1], "w"))
+PY
+    "$bin" render --lab 1 --panel --out "$tmp/plain" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
+    "$bin" render --lab 1 --panel --bench "$tmp/b.json" --out "$tmp/plot" --width 1280 --height 720 >/dev/null \
+      || fail "render --panel --bench failed"
+    "$bin" render --lab 1 --panel --bench "$src/docs/bench.json" --out "$tmp/docs" --width 1280 --height 720 >/dev/null \
+      || fail "the shipped docs/bench.json does not load"
+    python3 - "$tmp" <<'PY' || fail "no plot window over the frame"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+_, _, plain = load(f"{sys.argv[1]}/plain/final.png")
+_, _, plot = load(f"{sys.argv[1]}/plot/final.png")
+window = differing(plain, plot, 660, 60, 1260, 540)  # where the window opens: right of the panel
+panel = differing(plain, plot, 20, 40, 420, 400)
+print("plot window region differs:", window, "panel region:", panel)
+assert window > 0.5 and panel < 0.01
+PY
+    echo '{"points": [' >"$tmp/broken.json"
+    expect_error "broken.json: not valid JSON" "$bin" render --panel --bench "$tmp/broken.json" --out "$tmp/never"
+    one_line
+    [ ! -e "$tmp/never" ] || fail "a refused bench.json still created the output folder"
+    expect_error "none.json: cannot open the file" "$bin" render --panel --bench "$tmp/none.json" --out "$tmp/never"
+    expect_error "--panel" "$bin" render --bench "$tmp/b.json" --out "$tmp/never"
+    ;;
+  window_bench)  # --bench opens the plot window; a bad file stops before the window, settings untouched
+    png_reader
+    cp "$src/docs/bench.json" "$tmp/b.json"
+    window --frames 3 --screenshot "$tmp/plain.png"
+    window --bench "$tmp/b.json" --frames 3 --screenshot "$tmp/plot.png"
+    python3 - "$tmp" <<'PY' || fail "no plot window in the screenshot"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+w, h, plain = load(f"{sys.argv[1]}/plain.png")
+_, _, plot = load(f"{sys.argv[1]}/plot.png")
+d = differing(plain, plot, w - 640, 60, w - 40, 500)
+print("plot window region differs:", d)
+assert d > 0.5
+PY
+    rm -f "$SHADOWLAB_SETTINGS"
+    echo 'not json' >"$tmp/bad.json"
+    xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --bench "$tmp/bad.json" --frames 3 >"$tmp/out" 2>"$tmp/err" \
+      && fail "exit 0 with a bad --bench file"
+    grep -qF "bad.json: not valid JSON" "$tmp/err" || fail "the error does not name the file: $(cat "$tmp/err")"
+    [ ! -e "$SHADOWLAB_SETTINGS" ] || fail "a failed start wrote the settings file"
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"

@@ -6,26 +6,19 @@
 #include <imgui.h>
 
 #include "app/camera_input.h"
+#include "tests/imgui_fixture.h"
 #include "renderer/scene.h"
 
 namespace shadowlab {
 namespace {
 
-class CameraInputTest : public ::testing::Test {
+class CameraInputTest : public BareImGuiTest {
  protected:
   void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1280, 720);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // NewFrame needs a built atlas, not a GPU texture
+    BareImGuiTest::SetUp();
     scene = make_default_scene().bounds();
     camera = OrbitCamera::framing(scene);
   }
-  void TearDown() override { ImGui::DestroyContext(); }
 
   // One frame: the mouse at (x, y) with the given buttons and wheel, a panel window at (10, 10) 420 x
   // 700 as the app draws it; returns whether the camera moved.
