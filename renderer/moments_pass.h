@@ -5,11 +5,14 @@
 //   blur X:        A -> ping-pong texture B      (only while the blur radius is > 0)
 //   blur Y:        B -> A                        (the lit pass always reads A)
 //   or, brute2d:   A -> B with the (2r + 1)^2 kernel, then B copied back into A (glBlitFramebuffer)
+//   or, fast at radius <= 4 with compute shaders: both directions A -> B in one dispatch, then A and B
+//                  swap names (texture() is always the blurred moments; nothing is copied)
 //
 // Three blur methods give the same moments (vsm.blur_method; see BlurMethod): the taught separable
 // shader (lab 5's "lab/blur.glsl"), the renderer's fast separable blur (a compute shader,
-// shaders/vsm/fast_blur.comp; without compute shaders a fragment shader with bilinear taps,
-// shaders/vsm/fast_blur.frag) and a brute-force 2D pass to compare them with.
+// shaders/vsm/fast_blur.comp, fused into one dispatch for small radii by shaders/vsm/fast_blur2d.comp;
+// without compute shaders a fragment shader with bilinear taps, shaders/vsm/fast_blur.frag) and a
+// brute-force 2D pass to compare them with.
 //
 // The blur writes back into A, so A holds blurred moments afterwards: a change of the blur settings
 // redraws the moments too (4-14 ms) rather than keeping a third full-size texture for raw moments.
@@ -92,7 +95,8 @@ class MomentsPass {
   // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
   // Needs ensure_targets(..., blur = true).
   void blur(int direction, int radius, float sigma, GLuint empty_vao);
-  // The same direction with the fast blur: the same output within float rounding.
+  // The same direction with the fast blur: the same output within float rounding. Call it for 0 then
+  // 1: at small radii direction 0 does both (fused) and direction 1 swaps A and B.
   void blur_fast(int direction, int radius, float sigma, GLuint empty_vao);
   // How blur_fast runs: compute shaders where the context has them (GL 4.3+), else fragment shaders
   // with bilinear taps. Tests can force the fragment path.
@@ -137,6 +141,7 @@ class MomentsPass {
     GlProgram x, y;
   };
   std::map<std::pair<int, std::string>, ComputeBlur> fast_compute_;
+  std::map<std::pair<int, std::string>, GlProgram> fused_compute_;  // small radii: both directions at once
   struct FragmentBlur {
     ReloadableProgram x, y;
   };
@@ -144,6 +149,7 @@ class MomentsPass {
   FastPath fast_path_ = FastPath::Fragment;
   ReloadableProgram brute_;  // built on first use
   void blur_fast_compute(int direction, int radius, float sigma);
+  void blur_fused_compute(int direction, int radius, float sigma);
   void blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao);
 
   int size_ = 0;
