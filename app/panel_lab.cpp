@@ -60,7 +60,7 @@ void draw_task(PanelModel& m, PanelActions& a) {
     ImGui::Spacing();
     bool cpp = false;  // C++ exercises need a rebuild; shaders reload when saved
     for (const auto& file : m.lab->exercise_files) cpp |= file.ends_with(".cpp") || file.ends_with(".h");
-    ImGui::TextColored(kHint, cpp ? "Edit, then rebuild (scripts/build):" : "Edit (saving reloads it live):");
+    ImGui::TextColored(kHint, cpp ? "Edit, rebuild (scripts/build) and start the lab again:" : "Edit (saving reloads it live):");
     for (const auto& file : m.lab->exercise_files) {
       ImGui::BulletText("%s", file.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", (data_dir() / file).string().c_str());

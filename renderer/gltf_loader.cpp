@@ -248,6 +248,30 @@ class Loader {
 
   // ---- 1. The file and tinygltf.
 
+  // Debian's tinygltf (2.5) trusts a GLB chunk's declared length: a BIN chunk that claims more bytes than
+  // the file holds makes it copy past the end of the input (found by the fuzzer). Every chunk must fit in
+  // the file before tinygltf sees it; other container faults (lengths, headers) are left to its parser.
+  void check_glb_chunks(const std::vector<unsigned char>& bytes) {
+    auto u32 = [&](std::uint64_t at) {
+      std::uint32_t v = 0;
+      std::memcpy(&v, bytes.data() + at, 4);
+      return v;
+    };
+    const std::uint64_t end = bytes.size();  // a wrong header length is the parser's to report
+    std::uint64_t at = 12;
+    for (int chunk = 0; at + 8 <= end; ++chunk) {
+      const std::uint64_t length = u32(at);
+      char type[5] = {};
+      std::memcpy(type, bytes.data() + at + 4, 4);
+      for (char& c : type)
+        if (c != 0 && !std::isprint(static_cast<unsigned char>(c))) c = '?';
+      if (at + 8 + length > end)
+        fail("GLB container: chunk " + str(chunk) + " (" + type + ") declares " + str(length) + " bytes, but only " +
+             str(end - at - 8) + " remain in the file");
+      at += 8 + length;
+    }
+  }
+
   void parse() {
     std::error_code ec;
     if (!fs::exists(path_, ec)) fail("file not found");
@@ -276,6 +300,7 @@ class Loader {
       std::memcpy(&version, bytes.data() + 4, 4);
       if (version != 2) fail("GLB container version " + str(version) + " is not supported (glTF 2.0 uses version 2)");
     }
+    if (magic && size >= 12) check_glb_chunks(bytes);
 
     FolderSandbox box;
     const fs::path folder = fs::absolute(path_, ec).parent_path();

@@ -133,7 +133,7 @@ const std::map<std::string, Verdict>& invalid_file_verdicts() {
       {"glTF-Validator/glb/no_header.glb", {true, "parser", "no header"}},
       {"glTF-Validator/glb/only_bin_chunk.glb", {true, "parser", "first chunk is not JSON"}},
       {"glTF-Validator/glb/only_header.glb", {true, "parser", "header only"}},
-      {"glTF-Validator/glb/truncated_chunk_data.glb", {true, "parser", "truncated chunk"}},
+      {"glTF-Validator/glb/truncated_chunk_data.glb", {true, "chunk 0 (JSON) declares 28 bytes, but only 27 remain", "truncated chunk"}},
       {"glTF-Validator/glb/truncated_chunk_header.glb", {true, "parser", "truncated chunk header"}},
       {"glTF-Validator/glb/unaligned_chunk.glb", {true, "4-byte boundary", "unaligned chunk, reported by tinygltf"}},
       {"glTF-Validator/glb/zero_length.glb", {true, "parser", "declared length 0"}},
@@ -206,9 +206,9 @@ const std::map<std::string, Verdict>& invalid_file_verdicts() {
       {"glTF-SDK/glb/CubeMissingTextureRef.glb", {true, "GLB container version 1", "glTF 1.0 binary"}},
       {"glTF-SDK/glb/DuckMissingMaterialRef.glb", {true, "GLB container version 1", "glTF 1.0 binary"}},
       {"glTF-SDK/glb/CubeNoBuffer.glb", {false, "", "valid: a GLB whose buffer is a data: URI"}},
-      {"glTF-SDK/glb/WrongBinHeaderLength.glb", {true, "parser", "bad BIN chunk header"}},
-      {"glTF-SDK/glb/WrongJsonLength.glb", {true, "parser", "JSON chunk length wrong"}},
-      {"glTF-SDK/glb/WrongReportedLength.glb", {true, "parser", "header length wrong"}},
+      {"glTF-SDK/glb/WrongBinHeaderLength.glb", {true, "GLB container: chunk 1", "bad BIN chunk header: its length runs past the file"}},
+      {"glTF-SDK/glb/WrongJsonLength.glb", {true, "GLB container: chunk 0 (JSON)", "JSON chunk length runs past the file"}},
+      {"glTF-SDK/glb/WrongReportedLength.glb", {true, "GLB container: chunk 0 (JSON)", "header length wrong in a 32-byte file whose JSON chunk runs past it too"}},
       {"glTF-SDK/gltf/CameraInvalidPerspective.gltf",
        {true, "triangleWithoutIndices.bin", "cameras are not used, but the buffer file is not shipped"}},
       {"glTF-SDK/gltf/CameraInvalidProjection.gltf",
@@ -681,6 +681,30 @@ TEST_F(GltfHandMade, GlbWithItsBinChunkLoads) {
     write_bytes(dir_ / "cut.glb", std::vector<std::uint8_t>(glb.begin(), glb.begin() + static_cast<long>(size)));
     EXPECT_NE(load_error(dir_ / "cut.glb"), "") << size;
   }
+}
+
+// The fuzzer's finding (104 bytes): a BIN chunk that declares 20 bytes where 16 remain, and a buffer of 17
+// bytes. Debian's tinygltf trusts the chunk length and copies past the end of the input (ASan:
+// heap-buffer-overflow in LoadBinaryFromMemory); the loader refuses the chunk before tinygltf sees it.
+TEST_F(GltfHandMade, GlbChunkLongerThanTheFileIsRefusedBeforeParsing) {
+  std::string text = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":17}]})";
+  while (text.size() % 4 != 0) text += ' ';
+  std::vector<std::uint8_t> glb;
+  const auto u32 = [&](std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) glb.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
+  };
+  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+  u32(2);
+  u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + 16));  // the header's length is the file's
+  u32(static_cast<std::uint32_t>(text.size()));
+  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+  glb.insert(glb.end(), text.begin(), text.end());
+  u32(20);  // 4 more than follow
+  glb.insert(glb.end(), {'B', 'I', 'N', 0});
+  for (std::uint8_t b = 0; b < 16; ++b) glb.push_back(b);
+  write_bytes(dir_ / "bin_overrun.glb", glb);
+  EXPECT_EQ(load_error(dir_ / "bin_overrun.glb"),
+            (dir_ / "bin_overrun.glb").string() + ": GLB container: chunk 1 (BIN) declares 20 bytes, but only 16 remain in the file");
 }
 
 TEST_F(GltfHandMade, MissingFile) {
