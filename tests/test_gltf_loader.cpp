@@ -363,6 +363,26 @@ Doc triangle_doc(int index_type = 0) {
   return d;
 }
 
+// A GLB container: header, the JSON chunk (padded with spaces to 4 bytes), a BIN chunk holding `bin` whose
+// header declares `bin_declared` bytes (its true size unless a test lies), the header's length the file's.
+std::vector<std::uint8_t> make_glb(std::string text, const std::vector<std::uint8_t>& bin, std::size_t bin_declared) {
+  while (text.size() % 4 != 0) text += ' ';
+  std::vector<std::uint8_t> glb;
+  const auto u32 = [&](std::size_t v) {
+    for (int k = 0; k < 4; ++k) glb.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
+  };
+  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+  u32(2);
+  u32(12 + 8 + text.size() + 8 + bin.size());
+  u32(text.size());
+  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+  glb.insert(glb.end(), text.begin(), text.end());
+  u32(bin_declared);
+  glb.insert(glb.end(), {'B', 'I', 'N', 0});
+  glb.insert(glb.end(), bin.begin(), bin.end());
+  return glb;
+}
+
 class GltfHandMade : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -656,21 +676,7 @@ TEST_F(GltfHandMade, GlbWithItsBinChunkLoads) {
   // A GLB written by hand: header, JSON chunk, BIN chunk holding the triangle.
   Doc d = triangle_doc();
   d.j["buffers"] = json::array({{{"byteLength", d.bin.size()}}});
-  std::string text = d.j.dump();
-  while (text.size() % 4 != 0) text += ' ';
-  std::vector<std::uint8_t> glb;
-  const auto u32 = [&](std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) glb.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
-  };
-  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
-  u32(2);
-  u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + d.bin.size()));
-  u32(static_cast<std::uint32_t>(text.size()));
-  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
-  glb.insert(glb.end(), text.begin(), text.end());
-  u32(static_cast<std::uint32_t>(d.bin.size()));
-  glb.insert(glb.end(), {'B', 'I', 'N', 0});
-  glb.insert(glb.end(), d.bin.begin(), d.bin.end());
+  const std::vector<std::uint8_t> glb = make_glb(d.j.dump(), d.bin, d.bin.size());
   write_bytes(dir_ / "tri.glb", glb);
   const Scene scene = load_gltf(dir_ / "tri.glb");
   ASSERT_EQ(scene.triangle_count(), 1u);
@@ -687,21 +693,9 @@ TEST_F(GltfHandMade, GlbWithItsBinChunkLoads) {
 // bytes. Debian's tinygltf trusts the chunk length and copies past the end of the input (ASan:
 // heap-buffer-overflow in LoadBinaryFromMemory); the loader refuses the chunk before tinygltf sees it.
 TEST_F(GltfHandMade, GlbChunkLongerThanTheFileIsRefusedBeforeParsing) {
-  std::string text = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":17}]})";
-  while (text.size() % 4 != 0) text += ' ';
-  std::vector<std::uint8_t> glb;
-  const auto u32 = [&](std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) glb.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
-  };
-  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
-  u32(2);
-  u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + 16));  // the header's length is the file's
-  u32(static_cast<std::uint32_t>(text.size()));
-  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
-  glb.insert(glb.end(), text.begin(), text.end());
-  u32(20);  // 4 more than follow
-  glb.insert(glb.end(), {'B', 'I', 'N', 0});
-  for (std::uint8_t b = 0; b < 16; ++b) glb.push_back(b);
+  std::vector<std::uint8_t> bin(16);
+  for (std::size_t b = 0; b < bin.size(); ++b) bin[b] = static_cast<std::uint8_t>(b);
+  const auto glb = make_glb(R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":17}]})", bin, 20);  // 4 too many
   write_bytes(dir_ / "bin_overrun.glb", glb);
   EXPECT_EQ(load_error(dir_ / "bin_overrun.glb"),
             (dir_ / "bin_overrun.glb").string() + ": GLB container: chunk 1 (BIN) declares 20 bytes, but only 16 remain in the file");
