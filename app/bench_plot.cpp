@@ -62,7 +62,6 @@ BenchPlots load_bench_plots(const std::filesystem::path& file) {
   try {
     BenchPlots plots = bench_plots_from_json(nlohmann::json::parse(s.str()));
     if (plots.by_scene.empty()) throw std::runtime_error("no points to plot");
-    plots.source = file.string();
     return plots;
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + ")");

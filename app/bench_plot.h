@@ -17,7 +17,6 @@ namespace shadowlab {
 struct BenchPlots {
   std::vector<std::string> families;                        // colour groups, in order of first appearance
   std::map<std::string, std::vector<PlotPoint>> by_scene;   // each scene's points, in bench.json's order
-  std::string source;                                       // the file they came from (empty: built in memory)
 };
 
 // From bench.json's "points" (scene, technique, family, map_size, gpu_ms, error); marks each scene's

@@ -324,18 +324,23 @@ void MomentsPass::blur_fused_compute(int direction, int radius, float sigma) {
                            {}};
     it = fused_compute_.emplace(key, build_compute_program(desc, "shaders/vsm/fast_blur2d.comp")).first;
   }
-  const GLuint id = it->second.id();
-  const std::vector<float> weights = to_float(gaussian_weights(radius, sigma));
-  glUseProgram(id);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
-  glUniform1i(glGetUniformLocation(id, "u_moments"), 0);
-  glBindImageTexture(0, blur_texture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format_ == "RG16F" ? GL_RG16F : GL_RG32F);
-  glUniform1i(glGetUniformLocation(id, "u_out"), 0);
-  glUniform1fv(glGetUniformLocation(id, "u_weights"), static_cast<GLsizei>(weights.size()), weights.data());
   const int nx = (size_ + kFusedX - 1) / kFusedX, ny = (size_ + kFusedY - 1) / kFusedY;
-  glDispatchCompute(static_cast<GLuint>((nx + kFusedGroupX - 1) / kFusedGroupX),
-                    static_cast<GLuint>((ny + kFusedGroupY - 1) / kFusedGroupY), 1);
+  dispatch_blur(it->second.id(), moments_texture_.id(), blur_texture_.id(), radius, sigma,
+                (nx + kFusedGroupX - 1) / kFusedGroupX, (ny + kFusedGroupY - 1) / kFusedGroupY);
+}
+
+void MomentsPass::dispatch_blur(GLuint program, GLuint source, GLuint target, int radius, float sigma, int groups_x,
+                                int groups_y) {
+  const std::vector<float> weights = to_float(gaussian_weights(radius, sigma));
+  glUseProgram(program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, source);
+  glUniform1i(glGetUniformLocation(program, "u_moments"), 0);
+  glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, format_ == "RG16F" ? GL_RG16F : GL_RG32F);
+  glUniform1i(glGetUniformLocation(program, "u_out"), 0);
+  glUniform1fv(glGetUniformLocation(program, "u_weights"), static_cast<GLsizei>(weights.size()), weights.data());
+  glDispatchCompute(static_cast<GLuint>(groups_x), static_cast<GLuint>(groups_y), 1);
+  // The next pass samples what was stored; the lit pass, read-backs and blits read it too.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
                   GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
@@ -367,25 +372,13 @@ void MomentsPass::blur_fast_compute(int direction, int radius, float sigma) {
     }
     it = fast_compute_.emplace(key, std::move(c)).first;
   }
-  const GLuint id = direction == 0 ? it->second.x.id() : it->second.y.id();
-  const std::vector<float> weights = to_float(gaussian_weights(radius, sigma));
-  glUseProgram(id);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, direction == 0 ? moments_texture_.id() : blur_texture_.id());
-  glUniform1i(glGetUniformLocation(id, "u_moments"), 0);
-  // X reads A and writes B, Y reads B and writes A, as the taught passes do.
-  glBindImageTexture(0, direction == 0 ? blur_texture_.id() : moments_texture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                     format_ == "RG16F" ? GL_RG16F : GL_RG32F);
-  glUniform1i(glGetUniformLocation(id, "u_out"), 0);
-  glUniform1fv(glGetUniformLocation(id, "u_weights"), static_cast<GLsizei>(weights.size()), weights.data());
   const int chunks = (size_ + kFastOutputs - 1) / kFastOutputs;
   const int nx = direction == 0 ? chunks : size_, ny = direction == 0 ? size_ : chunks;
-  glDispatchCompute(static_cast<GLuint>((nx + kFastGroupX - 1) / kFastGroupX),
-                    static_cast<GLuint>((ny + kFastGroupY - 1) / kFastGroupY), 1);
-  // The next pass samples what was stored; the lit pass, read-backs and blits read it too.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                  GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+  // X reads A and writes B, Y reads B and writes A, as the taught passes do.
+  dispatch_blur(direction == 0 ? it->second.x.id() : it->second.y.id(),
+                direction == 0 ? moments_texture_.id() : blur_texture_.id(),
+                direction == 0 ? blur_texture_.id() : moments_texture_.id(), radius, sigma,
+                (nx + kFastGroupX - 1) / kFastGroupX, (ny + kFastGroupY - 1) / kFastGroupY);
 }
 
 void MomentsPass::blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao) {

@@ -150,6 +150,8 @@ class MomentsPass {
   ReloadableProgram brute_;  // built on first use
   void blur_fast_compute(int direction, int radius, float sigma);
   void blur_fused_compute(int direction, int radius, float sigma);
+  // Runs a blur compute program: samples `source`, stores into the image `target`, then the barrier.
+  void dispatch_blur(GLuint program, GLuint source, GLuint target, int radius, float sigma, int groups_x, int groups_y);
   void blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao);
 
   int size_ = 0;
