@@ -17,7 +17,7 @@
 #include "app/panel_lab.h"
 #include "app/bench_plot.h"
 #include "labs/check.h"
-#include "renderer/blur_bench.h"
+#include "app/bench_figures.h"
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"

@@ -11,6 +11,7 @@
 
 #include "app/panel.h"
 #include "app/settings_panel.h"
+#include "app/stats_text.h"
 #include "renderer/shader.h"
 
 namespace shadowlab {
@@ -175,7 +176,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
   ImGui::Begin("shadowlab");
   draw_nav(m, a);
   if (m.stats) {
-    const std::string warning = m.stats->precision_warning();
+    const std::string warning = precision_warning(*m.stats);
     if (!warning.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, m.stats->moments_negative_variance >= 0.5 ? kRed : ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
       ImGui::TextWrapped("%s", warning.c_str());

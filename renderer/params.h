@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -63,6 +64,9 @@ class ParamSet {
   nlohmann::json to_json() const;                      // {"key": value, ...} with choices by name
   // Applies what it can from JSON written by to_json(); returns one message per rejected entry.
   std::vector<std::string> apply_json(const nlohmann::json& values);
+  // Key and value of every parameter whose invalidation bits include any of `bits`, in declaration
+  // order: what the work those bits stand for depends on (the renderer compares them frame to frame).
+  std::vector<std::pair<std::string, double>> values_invalidating(unsigned bits) const;
 
  private:
   std::vector<ParamSpec> specs_;

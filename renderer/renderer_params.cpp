@@ -193,4 +193,10 @@ double vsm_param(const ParamSet& params, const std::string& key) {
   throw std::out_of_range("no vsm parameter " + key);
 }
 
+std::string vsm_choice(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get_choice(key);
+  const ParamSpec spec = vsm_param_specs({key}).at(0);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+}
+
 }  // namespace shadowlab

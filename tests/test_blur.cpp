@@ -10,7 +10,7 @@
 #include <map>
 #include <memory>
 
-#include "renderer/blur_bench.h"
+#include "app/bench_figures.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/renderer.h"

@@ -1,4 +1,4 @@
-#include "renderer/blur_bench.h"
+#include "app/bench_figures.h"
 
 #include <algorithm>
 #include <cmath>
