@@ -131,7 +131,7 @@ void DebugViews::light_volume(PassContext& ctx, LitPass& lit) {
 void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // the quads must not overwrite the G-buffer
   glDisable(GL_DEPTH_TEST);
-  // Squares along the bottom right (the panel sits on the left), view.debug_quad_size of the frame height.
+  // Squares along the bottom right (clear of an overlay on the left), view.debug_quad_size of the frame height.
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
   shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao});

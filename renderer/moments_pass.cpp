@@ -61,7 +61,7 @@ void MomentsPass::for_each_program(const std::function<void(ReloadableProgram&)>
 }
 
 bool MomentsPass::set_includes(const IncludeMap& includes) {
-  // Only the programs that include lab files; the fast and brute-force blurs include none.
+  // Only the programs with virtual includes ("lab/..."); the fast and brute-force blurs have none.
   bool ok = true;
   for (ReloadableProgram* p : {&moments_, &blur_x_, &blur_y_, &debug_}) {
     ProgramDesc d = p->desc();

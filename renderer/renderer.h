@@ -40,8 +40,8 @@ class PassTimer;
 struct MomentsTargetInfo;
 struct VolumeMeshReport;
 
-// The features a frame uses, beyond the parameters. (Named for the labs that set them; a feature set
-// needs no lab.)
+// The features a frame uses beyond the parameters: shader includes, a light fit, the shadow technique,
+// a fixed light type. (The name is historical: whatever sets these, the renderer sees only features.)
 struct LabHooks {
   // Virtual include name -> file, e.g. "lab/bias.glsl" -> an exercise's file. Names not given fall back
   // to the shadow technique's defaults in shaders/ (see Renderer::default_includes()).

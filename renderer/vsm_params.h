@@ -14,7 +14,7 @@ namespace shadowlab {
 std::vector<ParamSpec> vsm_param_specs();
 // The subset with these keys, in declaration order; throws std::out_of_range for an unknown key.
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys);
-// The value of a vsm.* key: the lab's when it declares the key, else the declared default.
+// The value of a vsm.* key when the set declares it, else the declared default.
 double vsm_param(const ParamSet& params, const std::string& key);
 // The same for a choice, by name.
 std::string vsm_choice(const ParamSet& params, const std::string& key);
