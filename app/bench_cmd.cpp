@@ -67,13 +67,6 @@ FrameRequest bench_request(const Bounds& view) {
   return request;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::vector<Technique> techniques(bool quick) {
   std::vector<Technique> out = {{"hard", "hard (lab 1)", 1, {}}};
   // PCF kernels, when the PCF lab exists (its parameter names the kernel sizes).
@@ -263,6 +256,69 @@ nlohmann::json blur_json(const std::vector<BlurTiming>& rows) {
   return out;
 }
 
+// Per method and radius: each direction's time, the total against the taught blur's, the moments' distance.
+void print_blur_methods(const std::vector<BlurTiming>& rows) {
+  for (const auto& b : rows) {
+    const auto taught = std::find_if(rows.begin(), rows.end(), [&](const BlurTiming& t) {
+      return t.method == "separable" && t.radius == b.radius && t.format == b.format;
+    });
+    std::printf("blur %s %4d r%-2d %-9s x %7.2f  y %7.2f  total %7.2f ms = %.2fx the taught blur, max |d| %.1e\n",
+                b.format.c_str(), b.map_size, b.radius, b.method.c_str(), b.ms_x, b.ms_y, b.ms_total,
+                taught->ms_total / b.ms_total, b.max_abs_diff_vs_separable);
+  }
+}
+
+void print_technique_passes(const std::vector<TechniquePasses>& rows) {
+  for (const auto& r : rows) {
+    std::printf("passes, %-24s", r.name.c_str());
+    for (const auto& [name, ms] : r.pass_ms) std::printf(" %s %.1f", name.c_str(), ms);
+    std::printf("  | sum %.1f ms\n", r.total_ms);
+  }
+}
+
+void print_oracle_cost(const OracleCost& c) {
+  std::printf("oracle: %zu triangles, BVH build %.2f ms\n", c.triangles, c.build_ms);
+  for (const auto& r : c.runs)
+    std::printf("oracle %dx%d %-30s %8.1f ms %9llu rays %6.2f Mrays/s (%ld edge px)\n", kWidth, kHeight, r.what.c_str(),
+                r.ms, static_cast<unsigned long long>(r.rays), r.mrays_per_s(), r.edge_pixels);
+}
+
+nlohmann::json technique_passes_json(const std::vector<TechniquePasses>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows) out.push_back({{"technique", r.name}, {"passes", r.pass_ms}, {"total_ms", r.total_ms}});
+  return out;
+}
+
+nlohmann::json oracle_cost_json(const OracleCost& cost) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& r : cost.runs)
+    runs.push_back({{"what", r.what}, {"ms", r.ms}, {"rays", r.rays}, {"mrays_per_s", r.mrays_per_s()},
+                    {"edge_pixels", r.edge_pixels}});
+  return {{"triangles", cost.triangles}, {"build_ms", cost.build_ms}, {"runs", runs}};
+}
+
+// The oracle's cost on the default scene's frame as the benchmark renders it (kWidth x kHeight), lit by
+// the default light and by a spot-like positional light at (-4, 9, 3) with 2048 texels over 1.2 rad.
+OracleCost measure_oracle(Renderer& renderer, const Scene& scene, int repeats) {
+  renderer.set_lab({});
+  renderer.set_scene(scene);
+  ParamSet params(renderer_param_specs());
+  params.set("view.debug_quad", 0.0);
+  FrameRequest request = bench_request(scene.bounds());
+  request.gbuffer = true;
+  renderer.render(params, request);
+  OracleLight directional;
+  directional.to_light = renderer.to_light();
+  directional.image_x = renderer.light_view().image_x;
+  directional.image_y = renderer.light_view().image_y;
+  directional.texel_world_size = renderer.light_view().world_size.x / static_cast<float>(renderer.shadow_map_size());
+  OracleLight positional;
+  positional.positional = true;
+  positional.position = {-4.0f, 9.0f, 3.0f};
+  positional.texel_angle = 1.2f / 2048.0f;
+  return measure_oracle_cost(scene, renderer.read_gbuffer(), directional, positional, repeats);
+}
+
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
 
 }  // namespace
@@ -287,6 +343,8 @@ int run_bench(const BenchOptions& options) {
     std::vector<BenchPoint> points;
     nlohmann::json skipping, overlays;
     std::vector<BlurTiming> blur_rows;
+    std::vector<TechniquePasses> technique_rows;
+    OracleCost oracle_cost;
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
@@ -317,6 +375,16 @@ int run_bench(const BenchOptions& options) {
       renderer.render(blur_params, request);
       const std::vector<int> radii = options.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16};
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
+      if (!options.quick) {  // half floats too: less bandwidth, the same passes
+        blur_params.set_from_string("vsm.format", "RG16F");
+        const auto rg16 = measure_blur_methods(renderer, blur_params, radii, 7);
+        blur_rows.insert(blur_rows.end(), rg16.begin(), rg16.end());
+      }
+      // Every technique pass by pass at the size the labs' texts quote (1024^2 maps, 1280 x 720), and
+      // the oracle's cost.
+      std::fprintf(stderr, "techniques pass by pass, oracle...\n");
+      technique_rows = measure_technique_passes(renderer, 1024, 1280, 720, options.quick ? 3 : 7);
+      oracle_cost = measure_oracle(renderer, bench_scenes.front().scene, options.quick ? 3 : 7);
     }
 
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
@@ -353,7 +421,9 @@ int run_bench(const BenchOptions& options) {
                              {"points", json_points},
                              {"skipping", skipping},
                              {"hidden_views", overlays},
-                             {"blur_methods", blur_json(blur_rows)}};
+                             {"blur_methods", blur_json(blur_rows)},
+                             {"technique_passes", technique_passes_json(technique_rows)},
+                             {"oracle_cost", oracle_cost_json(oracle_cost)}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     // The plot: one tile per scene, drawn by the code that draws it in the app's panel.
@@ -383,14 +453,9 @@ int run_bench(const BenchOptions& options) {
                 overlays["lit_pass_ms"].get<double>(), overlays["debug_quad_passes_hidden"].get<long>(),
                 overlays["light_volume_passes_hidden"].get<long>(), overlays["frames"].get<int>(),
                 overlays["panel_ui_ms"].get<double>(), overlays["no_panel_ui_ms"].get<double>());
-    for (const auto& b : blur_rows) {
-      if (b.method == "separable") continue;
-      const auto taught = std::find_if(blur_rows.begin(), blur_rows.end(), [&](const BlurTiming& t) {
-        return t.method == "separable" && t.radius == b.radius;
-      });
-      std::printf("blur r%-2d %-8s %7.2f ms = %.2fx the taught separable blur (%.2f ms), max |d| %.1e\n", b.radius,
-                  b.method.c_str(), b.ms_total, taught->ms_total / b.ms_total, taught->ms_total, b.max_abs_diff_vs_separable);
-    }
+    print_blur_methods(blur_rows);
+    print_technique_passes(technique_rows);
+    print_oracle_cost(oracle_cost);
     for (const auto& [name, plot] : plots.by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;

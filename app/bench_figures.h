@@ -1,15 +1,24 @@
-// The blur methods side by side (issue 6): GPU time per pass of the taught separable blur, the fast
-// separable blur and the brute-force 2D blur, and how far each one's moments are from the taught one's.
-// For `shadowlab bench`; prints nothing, returns data.
+// Figures `shadowlab bench` reports beside its sweep of technique x map size x scene. Each function
+// measures and returns data; it prints nothing.
+//   - the blur methods side by side: time per pass of the taught separable blur, the fast separable
+//     blur and the brute-force 2D blur, and how far each one's moments are from the taught one's;
+//   - every shadow technique and light type, pass by pass;
+//   - the oracle's cost: BVH build and shadow rays per second for each kind of edge band.
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "renderer/oracle.h"
 #include "renderer/params.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {
+
+// The median (the mean of the middle two for an even count); 0 for none.
+double median(std::vector<double> v);
 
 struct BlurTiming {
   std::string method;  // "separable", "fast", "brute2d" (the vsm.blur_method choices)
@@ -34,5 +43,39 @@ struct BlurTiming {
 // Leaves the renderer's shadow map invalidated.
 std::vector<BlurTiming> measure_blur_methods(Renderer& renderer, const ParamSet& params, const std::vector<int>& radii,
                                              int frames);
+
+// The median time of each pass of one technique's frame.
+struct TechniquePasses {
+  std::string name;                       // "pcf 3x3", "point 1 pass (GS)", "volumes z-fail", ...
+  std::map<std::string, double> pass_ms;  // pass name -> median ms over the timed frames
+  double total_ms = 0.0;                  // the medians' sum
+};
+
+// Every technique and light type the renderer has (the depth map with one tap and PCF, a spot, a point
+// light's cube in six passes and in one, the moments with and without a blur, shadow volumes z-fail and
+// z-pass, and the geometry-shader views): per case, the features are switched on (which makes every
+// pass run again), one warm-up frame compiles the shaders, then `frames` frames are timed, each
+// forced to redraw its shadow map. Maps are map_size^2, the view width x height. Needs a scene.
+std::vector<TechniquePasses> measure_technique_passes(Renderer& renderer, int map_size, int width, int height,
+                                                      int frames);
+
+// One oracle evaluation of a G-buffer.
+struct OracleRun {
+  std::string what;  // the light and edge band
+  double ms = 0.0;   // median wall time of `repeats` evaluations after a warm-up
+  std::uint64_t rays = 0;
+  long edge_pixels = 0;  // valid pixels on an edge (not interior)
+  double mrays_per_s() const { return ms > 0.0 ? 1e-3 * static_cast<double>(rays) / ms : 0.0; }
+};
+struct OracleCost {
+  std::size_t triangles = 0;
+  double build_ms = 0.0;  // median BVH build of `repeats` oracles of the scene
+  std::vector<OracleRun> runs;
+};
+
+// The oracle on `gbuffer` (a frame of `scene`): the directional light with the default band of 8
+// samples, a 3-pixel screen band and no band; `positional` with the default band.
+OracleCost measure_oracle_cost(const Scene& scene, const GBuffer& gbuffer, const OracleLight& directional,
+                               const OracleLight& positional, int repeats);
 
 }  // namespace shadowlab

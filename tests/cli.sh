@@ -260,6 +260,10 @@ v = j["hidden_views"]  # shown: one pass per frame; hidden: none
 assert v["debug_quad_passes_shown"] == v["frames"] and v["debug_quad_passes_hidden"] == 0, v
 assert v["light_volume_passes_shown"] == v["frames"] and v["light_volume_passes_hidden"] == 0, v
 assert v["panel_ui_ms"] > 0 and v["no_panel_ui_ms"] > 0, v
+t = j["technique_passes"]  # every technique pass by pass
+assert len(t) == 14 and all(r["total_ms"] > 0 and "lit" in r["passes"] for r in t), t
+o = j["oracle_cost"]
+assert o["build_ms"] > 0 and len(o["runs"]) == 4 and all(r["rays"] > 0 for r in o["runs"]), o
 PY
     echo "bench --quick: ${elapsed} s"
     ;;

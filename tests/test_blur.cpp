@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 
@@ -249,27 +248,6 @@ TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
     if (t.method == "separable") {
       EXPECT_EQ(t.max_abs_diff_vs_separable, 0.0);
     }
-  }
-}
-
-// Not a test: the timing table (run with --gtest_also_run_disabled_tests --gtest_filter=*PrintTimings*).
-TEST_F(BlurTest, DISABLED_PrintTimings) {
-  Renderer r;
-  r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
-  const char* format = std::getenv("BLUR_FORMAT");  // RG32F unless set
-  params.set_from_string("vsm.format", format ? format : "RG32F");
-  {
-    std::vector<int> radii = {1, 2, 4, 8, 16};
-    if (const char* list = std::getenv("BLUR_RADII")) {  // e.g. "1,2"
-      radii.clear();
-      for (const char* c = list; *c; ++c)
-        if (c == list || c[-1] == ',') radii.push_back(std::atoi(c));
-    }
-    const char* frames = std::getenv("BLUR_FRAMES");
-    for (const auto& t : measure_blur_methods(r, params, radii, frames ? std::atoi(frames) : 5))
-      std::printf("%s %4d %-9s r%-2d  x %8.2f  y %8.2f  total %8.2f ms  max|d| %.3g\n", t.format.c_str(), t.map_size,
-                  t.method.c_str(), t.radius, t.ms_x, t.ms_y, t.ms_total, t.max_abs_diff_vs_separable);
   }
 }
 

@@ -186,60 +186,6 @@ TEST_F(LightsTest, GeometryShaderDebugViewsDrawOnlyWhenOn) {
   }
 }
 
-// Not a pass/fail timing: prints the median GPU time of each pass per technique (default scene, 1024^2
-// maps, 1280x720), the figures the labs' READMEs quote, and checks that each technique ran its passes.
-TEST_F(LightsTest, PassTimesPerTechnique) {
-  Renderer r;
-  r.set_scene(scene);
-  struct Case {
-    const char* name;
-    LabHooks hooks;
-    std::vector<const char*> set;
-  };
-  LabHooks pcf;
-  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
-  LabHooks spot, point, volumes;
-  spot.light = LightType::Spot;
-  point.light = LightType::Point;
-  volumes.technique = ShadowTechnique::ShadowVolumes;
-  const Case cases[] = {
-      {"directional 1 tap", {}, {}},
-      {"pcf 3x3", pcf, {"pcf.kernel=3"}},
-      {"pcf 9x9", pcf, {"pcf.kernel=9"}},
-      {"pcf hw 3x3", pcf, {"pcf.kernel=3", "pcf.hardware=true"}},
-      {"spot", spot, {"light.position_x=5", "light.position_y=7", "light.position_z=4", "light.cone_deg=40"}},
-      {"point 6 passes", point, {}},
-      {"point 1 pass (GS)", point, {"point.single_pass=true"}},
-      {"volumes z-fail", volumes, {}},
-      {"volumes z-pass", volumes, {"volume.method=z-pass"}},
-      {"volumes z-fail, point", volumes, {"light.type=point"}},
-      {"normals view", {}, {"view.normals=true"}},
-      {"volumes wireframe", volumes, {"view.volumes=true"}},
-  };
-  FrameRequest req = request(OrbitCamera::framing(scene.bounds()), 1280, 720);
-  req.gbuffer = false;
-  for (const auto& c : cases) {
-    ParamSet p = lab_set({"shadow.map_size=1024"});
-    for (const char* a : c.set) p.apply_assignment(a);
-    std::map<std::string, std::vector<double>> ms;
-    for (int frame = 0; frame < 5; ++frame) {
-      ASSERT_TRUE(r.set_lab(c.hooks)) << r.shader_error();  // forces the shadow pass to run again
-      r.render(p, req);
-      if (frame == 0) continue;  // shaders compile during the first frame
-      for (const auto& pass : r.stats().passes) ms[pass.name].push_back(pass.gpu_ms);
-    }
-    std::printf("  %-24s", c.name);
-    double total = 0.0;
-    for (auto& [name, v] : ms) {
-      std::sort(v.begin(), v.end());
-      std::printf(" %s %.1f", name.c_str(), v[v.size() / 2]);
-      total += v[v.size() / 2];
-    }
-    std::printf("  | sum %.1f ms\n", total);
-    EXPECT_TRUE(ms.count("lit")) << c.name;
-  }
-}
-
 TEST_F(LightsTest, EveryNewLabBuildsItsExerciseAndSolution) {
   Renderer r;
   r.set_scene(scene);
