@@ -179,16 +179,11 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
 }
 
 std::vector<float> CubeShadowPass::read_face(int face) const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
   GlFramebuffer read = GlFramebuffer::create();
   glBindFramebuffer(GL_READ_FRAMEBUFFER, read.id());
   glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face),
                          distance_.id(), 0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_RED, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(read.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RED, 1);
 }
 
 }  // namespace shadowlab

@@ -28,7 +28,6 @@ class CubeShadowPass final : public ShadowPass {
   CubeShadowPass();
   static std::map<std::string, std::string> default_includes(LightType light);
 
-  Shape shape() const override { return {true, false, LitVariant::Lit, {LitVariant::Lit}}; }
   bool set_includes(const IncludeMap& includes) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet& params) override;

@@ -118,12 +118,7 @@ void DepthMapPass::draw_debug_quads(const DebugQuadArea& area) {
 
 std::vector<float> DepthMapPass::read_depth(int* size) const {
   *size = size_;
-  std::vector<float> depth(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return depth;
+  return read_pixels(fbo_.id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
 }
 
 std::vector<std::uint8_t> DepthMapPass::image(int* size) const { return depth_map_image(read_depth(size), *size); }

@@ -51,16 +51,6 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_light_view_proj")};
 }
 
-std::vector<float> read_float_attachment(GLuint fbo, GLenum attachment, int w, int h, GLenum format, int channels) {
-  std::vector<float> data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(channels));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-  glReadBuffer(attachment);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, format, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
-}
-
 }  // namespace
 
 bool LitPass::build(const IncludeMap& includes, LightType light, const std::vector<LitVariant>& variants) {
@@ -225,13 +215,13 @@ std::vector<std::uint8_t> LitPass::read_color() const {
 
 std::vector<float> LitPass::read_visibility() const {
   if (!gbuffer_) throw std::logic_error("read_visibility needs a frame rendered with gbuffer = true");
-  return read_float_attachment(fbo_.id(), GL_COLOR_ATTACHMENT1, width_, height_, GL_RED, 1);
+  return read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT1, width_, height_, GL_RED, 1);
 }
 
 GBuffer LitPass::read_gbuffer() const {
   if (!gbuffer_) throw std::logic_error("read_gbuffer needs a frame rendered with gbuffer = true");
-  const auto pos = read_float_attachment(fbo_.id(), GL_COLOR_ATTACHMENT2, width_, height_, GL_RGBA, 4);
-  const auto nrm = read_float_attachment(fbo_.id(), GL_COLOR_ATTACHMENT3, width_, height_, GL_RGBA, 4);
+  const auto pos = read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT2, width_, height_, GL_RGBA, 4);
+  const auto nrm = read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT3, width_, height_, GL_RGBA, 4);
   GBuffer g;
   g.width = width_;
   g.height = height_;

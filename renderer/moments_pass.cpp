@@ -215,23 +215,12 @@ double MomentsPass::negative_variance_share(const std::vector<float>& moments) {
 }
 
 std::vector<float> MomentsPass::read_moments() const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 2);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, moments_fbo_.id());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_RG, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(moments_fbo_.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RG, 2);
 }
 
 std::vector<float> MomentsPass::read_depth(int* size) const {
   *size = size_;
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, moments_fbo_.id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_DEPTH_COMPONENT, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(moments_fbo_.id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
 }
 
 MomentsTargetInfo MomentsPass::query_targets() const {

@@ -92,14 +92,15 @@ class ShadowPass {
  public:
   virtual ~ShadowPass() = default;
 
-  // How the technique shapes the frame around it.
+  // How the technique shapes the frame around it (by default: a map, read by the plain lit pass).
   struct Shape {
     bool has_map = true;        // false: no map to draw, skip or show (shadow volumes)
     bool view_stencil = false;  // the view needs a stencil buffer and a camera far plane at infinity
-    LitVariant lit = LitVariant::Lit;      // what the lit pass draws
-    std::vector<LitVariant> lit_variants;  // every variant the pass uses (lit included), built with its includes
+    LitVariant lit = LitVariant::Lit;  // what the lit pass draws
+    // Every variant the pass uses (lit included), built with its includes.
+    std::vector<LitVariant> lit_variants{LitVariant::Lit};
   };
-  virtual Shape shape() const = 0;
+  virtual Shape shape() const { return {}; }
 
   // Points the pass's programs at these includes (the technique's defaults, a feature's on top) and
   // builds them; false keeps the old programs (the error is in them).
