@@ -37,7 +37,7 @@ std::map<std::string, std::string> CubeShadowPass::default_includes(LightType) {
   return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"}, {"lab/visibility.glsl", "shaders/shadow/cube.glsl"}};
 }
 
-bool CubeShadowPass::set_includes(const IncludeMap&) {
+bool CubeShadowPass::set_includes(const IncludeMap&, const IncludeRules&) {
   // The distance programs include no feature files (built in the constructor).
   return face_quad_.rebuild();
 }

@@ -28,7 +28,7 @@ class CubeShadowPass final : public ShadowPass {
   CubeShadowPass();
   static std::map<std::string, std::string> default_includes(LightType light);
 
-  bool set_includes(const IncludeMap& includes) override;
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet& params) override;
   // The six faces (point.single_pass: in one draw through the layering geometry shader).

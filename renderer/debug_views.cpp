@@ -20,8 +20,9 @@ void DebugViews::for_each_program(const std::function<void(ReloadableProgram&)>&
   if (wireframe_volumes_) wireframe_volumes_->for_each_program(f);
 }
 
-void DebugViews::set_includes(const IncludeMap& includes) {
+void DebugViews::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
   includes_ = includes;
+  rules_ = rules;
   wireframe_volumes_.reset();
 }
 
@@ -68,7 +69,7 @@ void DebugViews::volumes_wireframe(PassContext& ctx, ShadowPass& shadow, LitPass
   if (!volumes) {
     if (!wireframe_volumes_) {
       wireframe_volumes_ = std::make_unique<ShadowVolumePass>();
-      wireframe_volumes_->set_includes(includes_);
+      wireframe_volumes_->set_includes(includes_, rules_);
       wireframe_scene_stale_ = true;
     }
     if (wireframe_scene_stale_) {

@@ -19,7 +19,7 @@ class DebugViews {
 
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
   // The includes the shadow-volume wireframe is built with; drops the volumes (rebuilt on use).
-  void set_includes(const IncludeMap& includes);
+  void set_includes(const IncludeMap& includes, const IncludeRules& rules);
   void set_scene() { wireframe_scene_stale_ = true; }
 
   // The views the parameters (view.*) switch on, in order, over the lit pass's colour.
@@ -47,6 +47,7 @@ class DebugViews {
   // The volumes the wireframe shows when the shadow technique is not shadow volumes (which has its own).
   std::unique_ptr<ShadowVolumePass> wireframe_volumes_;
   IncludeMap includes_;
+  IncludeRules rules_;
   bool wireframe_scene_stale_ = true;
 };
 

@@ -35,7 +35,7 @@ std::map<std::string, std::string> DepthMapPass::default_includes(LightType ligh
           {"lab/visibility.glsl", light == LightType::Spot ? "shaders/shadow/spot.glsl" : "shaders/shadow/hard.glsl"}};
 }
 
-bool DepthMapPass::set_includes(const IncludeMap&) {
+bool DepthMapPass::set_includes(const IncludeMap&, const IncludeRules&) {
   // Its programs include no feature files; built here so that errors show when a feature is switched on.
   const bool depth_ok = depth_.rebuild();
   return quad_.rebuild() && depth_ok;

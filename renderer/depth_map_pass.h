@@ -18,7 +18,7 @@ class DepthMapPass final : public ShadowPass {
   DepthMapPass();
   static std::map<std::string, std::string> default_includes(LightType light);
 
-  bool set_includes(const IncludeMap& includes) override;
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet& params) override;
   void draw_map(PassContext& ctx) override;

@@ -14,9 +14,10 @@ namespace {
 // shader; it is never written into the G-buffer.
 bool writes_gbuffer(LitVariant variant, bool gbuffer) { return gbuffer && variant != LitVariant::RemapView; }
 
-ProgramDesc lit_desc(const IncludeMap& includes, bool gbuffer, LightType light, LitVariant variant) {
+ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
+                     LitVariant variant) {
   const bool remap = variant == LitVariant::RemapView;
-  ProgramDesc d{"shaders/lit.vert", {}, remap ? "shaders/vsm/remap_view.frag" : "shaders/lit.frag", {}, includes};
+  ProgramDesc d{"shaders/lit.vert", {}, remap ? "shaders/vsm/remap_view.frag" : "shaders/lit.frag", {}, includes, rules};
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
@@ -53,13 +54,14 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
 
 }  // namespace
 
-bool LitPass::build(const IncludeMap& includes, LightType light, const std::vector<LitVariant>& variants) {
+bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
+                    const std::vector<LitVariant>& variants) {
   bool ok = true;
   for (LitVariant variant : variants)
     for (bool gbuffer : {false, true}) {
       if (gbuffer && !writes_gbuffer(variant, true)) continue;
       Program& p = programs_[{variant, gbuffer}];
-      p.program.set_desc(lit_desc(includes, gbuffer, light, variant));
+      p.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant));
       ok = p.program.rebuild() && ok;
     }
   return ok;

@@ -19,7 +19,8 @@ class LitPass {
  public:
   // Builds these variants' programs (plain and G-buffer); false keeps the old programs (the error is in
   // them). Programs of other variants stay until keep_only().
-  bool build(const IncludeMap& includes, LightType light, const std::vector<LitVariant>& variants);
+  bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
+             const std::vector<LitVariant>& variants);
   void keep_only(const std::vector<LitVariant>& variants);
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
 

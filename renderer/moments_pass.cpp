@@ -60,12 +60,13 @@ void MomentsPass::for_each_program(const std::function<void(ReloadableProgram&)>
   if (brute_.valid()) f(brute_);
 }
 
-bool MomentsPass::set_includes(const IncludeMap& includes) {
+bool MomentsPass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
   // Only the programs with virtual includes ("lab/..."); the fast and brute-force blurs have none.
   bool ok = true;
   for (ReloadableProgram* p : {&moments_, &blur_x_, &blur_y_, &debug_}) {
     ProgramDesc d = p->desc();
     d.includes = includes;
+    d.rules = rules;
     p->set_desc(std::move(d));
     ok = p->rebuild() && ok;
   }

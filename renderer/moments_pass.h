@@ -72,7 +72,7 @@ class MomentsPass final : public ShadowPass {
   Shape shape() const override { return {true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}}; }
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
   // them; false (old programs kept) on a compile error.
-  bool set_includes(const IncludeMap& includes) override;
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
   // Every program built so far (the fast and brute-force blur programs are built on first use).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   // vsm.format, and the ping-pong texture while vsm.blur_radius > 0.

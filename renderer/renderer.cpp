@@ -71,15 +71,15 @@ bool Renderer::build_programs(const LabHooks& hooks, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, light, variants);
-  ok = pass.set_includes(includes) && ok;
+  bool ok = lit_->build(includes, hooks.include_rules, light, variants);
+  ok = pass.set_includes(includes, hooks.include_rules) && ok;
   if (!ok) return false;
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
   }
   lit_->keep_only(variants);
-  views_->set_includes(includes);
+  views_->set_includes(includes, hooks.include_rules);
   hooks_ = hooks;
   programs_light_ = light;
   return true;
@@ -102,6 +102,14 @@ std::string Renderer::shader_error() const {
   std::string out;
   for_each_program([&](ReloadableProgram& program) {
     if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
+  });
+  return out;
+}
+
+std::string Renderer::shader_warnings() const {
+  std::string out;
+  for_each_program([&](ReloadableProgram& program) {
+    if (!program.warnings().empty() && out.find(program.warnings()) == std::string::npos) out += program.warnings();
   });
   return out;
 }

@@ -46,6 +46,8 @@ struct LabHooks {
   // Virtual include name -> file, e.g. "lab/bias.glsl" -> an exercise's file. Names not given fall back
   // to the shadow technique's defaults in shaders/ (see Renderer::default_includes()).
   std::map<std::string, std::string> includes;
+  // Which of those files are a student's, and what they may include (see IncludeRules).
+  IncludeRules include_rules;
   LightFit light_fit;  // a directional light's view and projection; empty: fit_light_ortho
   // Front-, back- or no culling in the shadow pass (0, 1, 2), when something other than the shadow.cull
   // parameter decides it (e.g. a directive in an included file).
@@ -83,6 +85,8 @@ class Renderer {
   bool poll_shader_files();
   // The last shader error, "file:line: message" with the line quoted; empty when all programs built.
   std::string shader_error() const;
+  // The compilers' warnings for the current programs, in the same form (empty when there are none).
+  std::string shader_warnings() const;
 
   const FrameStats& render(const ParamSet& params, const FrameRequest& request);
   // Makes the next frame re-run the shadow (moments, blur) passes even if nothing they read changed:

@@ -102,9 +102,10 @@ class ShadowPass {
   };
   virtual Shape shape() const { return {}; }
 
-  // Points the pass's programs at these includes (the technique's defaults, a feature's on top) and
-  // builds them; false keeps the old programs (the error is in them).
-  virtual bool set_includes(const IncludeMap& includes) = 0;
+  // Points the pass's programs at these includes (the technique's defaults, a feature's on top) under
+  // these rules (which files are confined, see IncludeRules) and builds them; false keeps the old
+  // programs (the error is in them).
+  virtual bool set_includes(const IncludeMap& includes, const IncludeRules& rules) = 0;
   virtual void for_each_program(const std::function<void(ReloadableProgram&)>& f) = 0;
   virtual void set_scene(const Scene&) {}
 

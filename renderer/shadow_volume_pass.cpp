@@ -48,9 +48,10 @@ std::vector<std::uint8_t> ShadowVolumePass::image(int* size) const {
   return std::vector<std::uint8_t>(16 * 16 * 4, 128);
 }
 
-bool ShadowVolumePass::set_includes(const IncludeMap& includes) {
+bool ShadowVolumePass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
   ProgramDesc d = program_.desc();
   d.includes = includes;
+  d.rules = rules;
   if (!d.includes.count("lab/volume.glsl")) d.includes["lab/volume.glsl"] = "shaders/volume/volume.glsl";
   program_.set_desc(std::move(d));
   return program_.rebuild();

@@ -46,7 +46,7 @@ class ShadowVolumePass final : public ShadowPass {
   }
   // Points "lab/volume.glsl" at a file (default shaders/volume/volume.glsl) and rebuilds; false (old
   // program kept) on a compile error.
-  bool set_includes(const IncludeMap& includes) override;
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet&) override { return false; }
   // The ambient pass, then the volumes into the stencil buffer (volume.method: z-fail or z-pass).
