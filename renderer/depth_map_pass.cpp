@@ -121,6 +121,9 @@ std::vector<float> DepthMapPass::read_depth(int* size) const {
   return read_pixels(fbo_.id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
 }
 
-std::vector<std::uint8_t> DepthMapPass::image(int* size) const { return depth_map_image(read_depth(size), *size); }
+std::vector<std::uint8_t> DepthMapPass::image(int* size) const {
+  const std::vector<float> depth = read_depth(size);  // sets *size
+  return depth_map_image(depth, *size);
+}
 
 }  // namespace shadowlab

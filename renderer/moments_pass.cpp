@@ -185,7 +185,10 @@ void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {
   }
 }
 
-std::vector<std::uint8_t> MomentsPass::image(int* size) const { return depth_map_image(read_depth(size), *size); }
+std::vector<std::uint8_t> MomentsPass::image(int* size) const {
+  const std::vector<float> depth = read_depth(size);  // sets *size
+  return depth_map_image(depth, *size);
+}
 
 void MomentsPass::set_fast_path(FastPath path) {
   if (path == FastPath::Compute && !has_compute_shaders())
