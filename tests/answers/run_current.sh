@@ -3,7 +3,7 @@
 # with today's checks and prints one row per answer: lab, expected, answer, today's verdict, and the
 # criteria that failed. It measures the checks; it does not change them.
 #
-#   tests/answers/run_current.sh [--lab N[,M...]] [--no-lab2] [--markdown FILE] [--strict]
+#   tests/answers/run_current.sh [--lab N[,M...]] [--answer NAME] [--no-lab2] [--markdown FILE] [--strict]
 #
 # GLSL labs: each answer is graded in a temporary data folder (a copy of shaders/ and labs/) where the
 # answer's files replace the exercise files and the exercise files it does not give are the solution's
@@ -18,14 +18,15 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 answers="$root/tests/answers"
 build="${SHADOWLAB_BUILD_DIR:-$root/build}"
 bin="$build/app/shadowlab"
-only_labs="" skip_lab2=0 markdown="" strict=0
+only_labs="" only_answer="" skip_lab2=0 markdown="" strict=0
 while (($#)); do
   case "$1" in
     --lab) only_labs=",$2,"; shift 2 ;;
+    --answer) only_answer="$2"; shift 2 ;;
     --no-lab2) skip_lab2=1; shift ;;
     --markdown) markdown="$2"; shift 2 ;;
     --strict) strict=1; shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "run_current.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -133,6 +134,7 @@ for lab_dir in "$answers"/[0-9][0-9]_*/; do
     [[ -d "$lab_dir/$kind" ]] || continue
     # Answers: the distinct <answer> prefixes; each may give several exercise files.
     for answer in $(ls "$lab_dir/$kind" | sed -n 's/__.*//p' | sort -u); do
+      [[ -z "$only_answer" || "$answer" == "$only_answer" ]] || continue
       grade "$n" "$kind" "$answer" "$lab_dir/$kind/${answer}__"*
     done
   done
