@@ -3,14 +3,18 @@
 # with today's checks and prints one row per answer: lab, expected, answer, today's verdict, and the
 # criteria that failed. It measures the checks; it does not change them.
 #
-#   tests/answers/run_current.sh [--lab N[,M...]] [--answer NAME] [--no-lab2] [--markdown FILE] [--strict]
+#   tests/answers/run_current.sh [--lab N[,M...]] [--answer NAME] [--set key=value]... [--no-lab2]
+#                                [--markdown FILE] [--keep DIR] [--strict]
 #
 # GLSL labs: each answer is graded in a temporary data folder (a copy of shaders/ and labs/) where the
 # answer's files replace the exercise files and the exercise files it does not give are the solution's
 # (so an answer can be wrong in one part only), through SHADOWLAB_DATA_DIR=<tmp> shadowlab check.
 # Lab 2 (C++ compiled into the binary): the answer is copied over labs/02_ortho_fit/exercise.cpp, the
-# shadowlab target rebuilt, graded, and exercise.cpp restored (and rebuilt) on exit, whatever happens.
+# shadowlab target rebuilt, graded, and exercise.cpp restored (and rebuilt) after lab 2's last answer,
+# or on exit, whatever happens.
 # Checks run one at a time (the machine is shared).
+# --set: passed to every check (held-out conditions: another light elevation, map size...).
+# --keep: keep each check's JSON as DIR/<lab>_<expected>_<answer>.json (all metrics, not only the graded).
 # --strict: exit 1 when a wrong answer passes or a right one fails (today it does: that is the point).
 set -uo pipefail
 
@@ -18,15 +22,17 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 answers="$root/tests/answers"
 build="${SHADOWLAB_BUILD_DIR:-$root/build}"
 bin="$build/app/shadowlab"
-only_labs="" only_answer="" skip_lab2=0 markdown="" strict=0
+only_labs="" only_answer="" skip_lab2=0 sets=() markdown="" keep="" strict=0
 while (($#)); do
   case "$1" in
     --lab) only_labs=",$2,"; shift 2 ;;
     --answer) only_answer="$2"; shift 2 ;;
+    --set) sets+=(--set "$2"); shift 2 ;;
     --no-lab2) skip_lab2=1; shift ;;
     --markdown) markdown="$2"; shift 2 ;;
+    --keep) keep="$2"; shift 2 ;;
     --strict) strict=1; shift ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "run_current.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -56,11 +62,14 @@ rebuild_shadowlab() {
   if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
   CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1 cmake --build "$build" --target shadowlab -j 2 >"$tmp/build.log" 2>&1
 }
+restore_lab2() {  # puts the student's exercise.cpp back and rebuilds the binary with it
+  ((lab2_touched)) || return 0
+  cp "$lab2_saved" "$lab2_src"
+  lab2_touched=0
+  rebuild_shadowlab || echo "run_current.sh: rebuilding with the restored exercise.cpp failed: see $tmp/build.log" >&2
+}
 cleanup() {
-  if ((lab2_touched)); then
-    cp "$lab2_saved" "$lab2_src"
-    rebuild_shadowlab || echo "run_current.sh: rebuilding with the restored exercise.cpp failed: see $tmp/build.log" >&2
-  fi
+  restore_lab2
   rm -rf "$tmp"
 }
 trap cleanup EXIT
@@ -106,7 +115,7 @@ grade() {  # grade <lab number> <kind> <answer> <file>...
       line="ERROR	build failed: $(grep -m1 -E 'error' "$tmp/build.log" | cut -c1-140)"
       printf '%s\t%s\t%s\t%s\n' "$n" "$kind" "$answer" "$line" >>"$rows"; return
     fi
-    "$bin" check --lab 2 --impl exercise --json "$json" >"$log" 2>&1; rc=$?
+    "$bin" check --lab 2 --impl exercise --json "$json" "${sets[@]}" >"$log" 2>&1; rc=$?
   else
     local data="$tmp/data"
     rm -rf "$data"; mkdir -p "$data"
@@ -119,8 +128,9 @@ grade() {  # grade <lab number> <kind> <answer> <file>...
       for f in "$@"; do [[ "$(basename "$f")" == "${answer}__$(basename "$exercise")" ]] && given="$f"; done
       if [[ -n "$given" ]]; then cp "$given" "$data/$exercise"; else cp "$root/${solution_of[$exercise]}" "$data/$exercise"; fi
     done
-    SHADOWLAB_DATA_DIR="$data" "$bin" check --lab "$n" --impl exercise --json "$json" >"$log" 2>&1; rc=$?
+    SHADOWLAB_DATA_DIR="$data" "$bin" check --lab "$n" --impl exercise --json "$json" "${sets[@]}" >"$log" 2>&1; rc=$?
   fi
+  if [[ -n "$keep" && -f "$json" ]]; then mkdir -p "$keep" && cp "$json" "$keep/${n}_${kind}_${answer}.json"; fi
   line="$(verdict "$json" "$rc" "$log")"
   printf '%s\t%s\t%s\t%s\n' "$n" "$kind" "$answer" "$line" >>"$rows"
   printf '%-3s %-6s %-44s %s\n' "$n" "$kind" "$answer" "${line//	/  }"
@@ -138,6 +148,7 @@ for lab_dir in "$answers"/[0-9][0-9]_*/; do
       grade "$n" "$kind" "$answer" "$lab_dir/$kind/${answer}__"*
     done
   done
+  ((n == 2)) && restore_lab2
 done
 
 # Summary: per lab, right accepted and wrong rejected, and the answers today's checks grade wrongly.
