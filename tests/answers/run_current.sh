@@ -5,6 +5,7 @@
 #
 #   tests/answers/run_current.sh [--lab N[,M...]] [--answer NAME] [--set key=value]... [--no-lab2]
 #                                [--markdown FILE] [--keep DIR] [--strict]
+#   tests/answers/run_current.sh --lint    (only checks the corpus's layout and header lines; no build needed)
 #
 # GLSL labs: each answer is graded in a temporary data folder (a copy of shaders/ and labs/) where the
 # answer's files replace the exercise files and the exercise files it does not give are the solution's
@@ -22,7 +23,7 @@ root="$(cd "$(dirname "$0")/../.." && pwd)"
 answers="$root/tests/answers"
 build="${SHADOWLAB_BUILD_DIR:-$root/build}"
 bin="$build/app/shadowlab"
-only_labs="" only_answer="" skip_lab2=0 sets=() markdown="" keep="" strict=0
+only_labs="" only_answer="" skip_lab2=0 sets=() markdown="" keep="" strict=0 lint=0
 while (($#)); do
   case "$1" in
     --lab) only_labs=",$2,"; shift 2 ;;
@@ -32,10 +33,49 @@ while (($#)); do
     --markdown) markdown="$2"; shift 2 ;;
     --keep) keep="$2"; shift 2 ;;
     --strict) strict=1; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    --lint) lint=1; shift ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "run_current.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
+if ((lint)); then
+  # Every file: <answer>__<one of the lab's exercise files>, first line "// wrong: ..." or "// right: ..." as
+  # its folder says, second line "// expect: <category>"; at least 4 wrong and 1 right answer per lab,
+  # 60 wrong and 20 right in all.
+  python3 - "$answers" "$root" <<'PY'
+import os, re, sys
+answers, root = sys.argv[1], sys.argv[2]
+problems, totals = [], {"wrong": 0, "right": 0}
+labs = sorted(d for d in os.listdir(os.path.join(root, "labs")) if re.match(r"\d\d_", d))
+for lab in labs:
+    exercise = {f for f in os.listdir(os.path.join(root, "labs", lab)) if f.startswith("exercise")}
+    for kind in ("wrong", "right"):
+        folder = os.path.join(answers, lab, kind)
+        names = sorted(os.listdir(folder)) if os.path.isdir(folder) else []
+        prefixes = set()
+        for name in names:
+            path = f"{lab}/{kind}/{name}"
+            answer, sep, file = name.partition("__")
+            if not sep or file not in exercise or not re.fullmatch(r"[a-z0-9_]+", answer):
+                problems.append(f"{path}: not <answer>__<exercise file of {lab}> ({', '.join(sorted(exercise))})"); continue
+            lines = open(os.path.join(folder, name), errors="replace").read().splitlines()
+            if len(lines) < 2 or not lines[0].startswith(f"// {kind}: ") or len(lines[0]) < len(f"// {kind}: ") + 10:
+                problems.append(f"{path}:1: the first line must be '// {kind}: <what it models>'")
+            if len(lines) < 2 or not re.fullmatch(r"// expect: [a-z][a-z-]+", lines[1]):
+                problems.append(f"{path}:2: the second line must be '// expect: <category>'")
+            prefixes.add(answer)
+        totals[kind] += len(prefixes)
+        least = 4 if kind == "wrong" else 1
+        if len(prefixes) < least:
+            problems.append(f"{lab}/{kind}: {len(prefixes)} answers, at least {least} wanted")
+for kind, least in (("wrong", 60), ("right", 20)):
+    if totals[kind] < least:
+        problems.append(f"{totals[kind]} {kind} answers in all, at least {least} wanted")
+print("\n".join(problems) if problems else f"corpus ok: {totals['wrong']} wrong and {totals['right']} right answers over {len(labs)} labs")
+sys.exit(1 if problems else 0)
+PY
+  exit $?
+fi
 [[ -x "$bin" ]] || { echo "run_current.sh: $bin not found: build first (bash scripts/build)" >&2; exit 2; }
 
 # Exercise file -> the solution file given in its place when an answer does not give it. The same
