@@ -125,16 +125,23 @@ try:
 except Exception:
     msg = open(log, errors="replace").read().strip().splitlines()
     print("ERROR\t" + (msg[0] if msg else f"no JSON, exit {rc}")[:160]); sys.exit()
-if lab.get("error"):
-    print("ERROR\t" + lab["error"].strip().splitlines()[0][:160]); sys.exit()
+status = lab.get("status")  # passed / failed / compile_error / grader_error (older binaries: none)
+if lab.get("error") or status in ("compile_error", "grader_error"):
+    msg = (lab.get("error") or status).strip().splitlines()
+    print("ERROR\t" + (status + ": " if status and status != "failed" else "") + (msg[0] if msg else "")[:160]); sys.exit()
 failed = []
-for name, t in lab.get("thresholds", {}).items():
-    v = lab.get("metrics", {}).get(name)
-    if v is None or (isinstance(v, float) and math.isnan(v)):
-        failed.append(f"{name}=?"); continue
-    bad = ("max" in t and v > t["max"]) or ("min" in t and v < t["min"])
-    if bad:
-        failed.append(f"{name}={v:.4g}")
+if isinstance(lab.get("criteria"), list):  # one entry per graded criterion, with its own verdict
+    for c in lab["criteria"]:
+        if not c.get("passed", False):
+            v = c.get("value")
+            failed.append(f"{c.get('metric', '?')}=" + (f"{v:.4g}" if isinstance(v, (int, float)) else "?"))
+else:
+    for name, t in lab.get("thresholds", {}).items():
+        v = lab.get("metrics", {}).get(name)
+        if v is None or (isinstance(v, float) and math.isnan(v)):
+            failed.append(f"{name}=?"); continue
+        if ("max" in t and v > t["max"]) or ("min" in t and v < t["min"]):
+            failed.append(f"{name}={v:.4g}")
 if lab.get("passed") and rc == 0:
     print("PASS\t")
 else:
