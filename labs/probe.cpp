@@ -36,6 +36,17 @@ GlTexture make_probe_depth_texture(const std::vector<float>& depths, int size) {
   return t;
 }
 
+GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int width, int height) {
+  std::vector<glm::vec2> padded(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), glm::vec2(1.0f));
+  if (moments.size() > padded.size()) throw std::invalid_argument("probe: more moments than texels");
+  std::copy(moments.begin(), moments.end(), padded.begin());
+  GlTexture t = make_texture_2d(GL_RG32F, width, height, GL_RG, GL_FLOAT, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RG, GL_FLOAT, padded.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
 GlSampler make_compare_sampler() {
   GlSampler s = GlSampler::create();
   glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);

@@ -33,6 +33,10 @@ std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequ
 // A depth texture for probes: size x size texels, row 0 at v = 0 (GL's order), nearest filtering,
 // clamped to the edge, no comparison (as the renderer's shadow map reads through u_shadow_map).
 GlTexture make_probe_depth_texture(const std::vector<float>& depths, int size);
+// A two-channel float texture for probes (a moments map: E[z], E[z^2] per texel), width x height texels,
+// row 0 at v = 0, nearest filtering, clamped to the edge.
+GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int width, int height);
+
 // Binds `depth` as u_shadow_map (unit 0) and, through a comparing, bilinear sampler, as
 // u_shadow_map_compare (unit 1), as the lit pass does. The sampler must outlive the draw.
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare);
