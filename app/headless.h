@@ -39,6 +39,6 @@ std::string one_line_error(const std::string& message);
 void apply_set_option(ParamSet& params, const std::string& assignment);
 
 int run_render(const RenderOptions& options);
-int run_list_labs(bool show_params);
+int run_list_labs(bool show_params, bool json = false);
 
 }  // namespace shadowlab

@@ -235,8 +235,10 @@ struct Oracle::Impl::Band {
   std::vector<float> cos_a, sin_a;
   float radius_world = 0.0f;  // directional
   float tan_angle = 0.0f;     // positional
+  float grazing_n_dot_l = 0.0f;  // pixels lit at n . l below this are in the band whatever their neighbours
 
-  Band(const BandSpec& band, const OracleLight& light) : screen(band.fixed_screen_pixels > 0) {
+  Band(const BandSpec& band, const OracleLight& light)
+      : screen(band.fixed_screen_pixels > 0), grazing_n_dot_l(band.grazing_n_dot_l) {
     const int samples = screen ? 0 : std::max(band.samples, 0);
     cos_a.resize(static_cast<std::size_t>(samples));
     sin_a.resize(static_cast<std::size_t>(samples));
@@ -262,6 +264,7 @@ struct Oracle::Impl::Job {
   glm::vec3 to_light_dir;
   const Band& band;
   Truth& truth;
+  std::vector<std::uint8_t>& grazing;  // per pixel, when band.grazing_n_dot_l > 0: lit at a grazing angle
 
   // Shadow ray from a point on the surface (offset along its normal) toward the light.
   bool shadowed_from(const glm::vec3& q, const glm::vec3& n) const {
@@ -299,6 +302,10 @@ struct Oracle::Impl::Job {
     const bool shadowed = shadowed_from(p, n);
     truth.lit[i] = shadowed ? 0 : 1;
     std::uint64_t rays = 1;
+    if (n_dot_l < band.grazing_n_dot_l) {
+      grazing[i] = 1;
+      return rays;  // in the band whatever its neighbours
+    }
     if (band.screen) return rays;      // classified once every pixel is known
     if (band.everything) return rays;  // interior stays 0
     if (band.point || band.cos_a.empty()) {
@@ -380,9 +387,9 @@ struct Oracle::Impl::Job {
 namespace {
 
 // A screen band of k pixels: interior where no valid pixel of the other truth lies within the
-// (2k+1)^2 square. Summed-area tables of valid-lit and valid-shadowed pixels answer each square in
-// constant time.
-void classify_screen_band(Truth& truth, std::size_t k) {
+// (2k+1)^2 square (and the pixel is not lit at a grazing angle). Summed-area tables of valid-lit and
+// valid-shadowed pixels answer each square in constant time.
+void classify_screen_band(Truth& truth, std::size_t k, const std::vector<std::uint8_t>& grazing) {
   const auto width = static_cast<std::size_t>(truth.width), height = static_cast<std::size_t>(truth.height);
   const std::size_t stride = width + 1;
   std::vector<std::uint32_t> lit_sum(stride * (height + 1), 0), shadow_sum(stride * (height + 1), 0);
@@ -407,7 +414,7 @@ void classify_screen_band(Truth& truth, std::size_t k) {
       if (!truth.valid[i]) continue;
       const std::size_t x0 = x > k ? x - k : 0, x1 = std::min(width - 1, x + k);
       const std::uint32_t others = box(truth.lit[i] ? shadow_sum : lit_sum, x0, y0, x1, y1);
-      truth.interior[i] = others == 0 ? 1 : 0;
+      truth.interior[i] = others == 0 && (grazing.empty() || !grazing[i]) ? 1 : 0;
     }
   }
 }
@@ -424,9 +431,10 @@ Truth Oracle::evaluate(const GBuffer& gbuffer, const OracleLight& light, const B
   truth.valid.assign(count, 0);
   truth.lit.assign(count, 0);
   truth.interior.assign(count, 0);
+  std::vector<std::uint8_t> grazing(band.grazing_n_dot_l > 0.0f ? count : 0, 0);
   const Impl::Band circle(band, light);
-  truth.rays = Impl::Job{*impl_, gbuffer, light, to_light_dir, circle, truth}.all_pixels();
-  if (circle.screen) classify_screen_band(truth, static_cast<std::size_t>(band.fixed_screen_pixels));
+  truth.rays = Impl::Job{*impl_, gbuffer, light, to_light_dir, circle, truth, grazing}.all_pixels();
+  if (circle.screen) classify_screen_band(truth, static_cast<std::size_t>(band.fixed_screen_pixels), grazing);
   truth.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return truth;
 }
