@@ -47,17 +47,6 @@ GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int 
   return t;
 }
 
-GlSampler make_compare_sampler() {
-  GlSampler s = GlSampler::create();
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return s;
-}
-
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, depth.id());

@@ -40,7 +40,7 @@ GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int 
 // Binds `depth` as u_shadow_map (unit 0) and, through a comparing, bilinear sampler, as
 // u_shadow_map_compare (unit 1), as the lit pass does. The sampler must outlive the draw.
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare);
-GlSampler make_compare_sampler();
+// (The sampler: make_compare_sampler(), renderer/gl_objects.h.)
 
 // Sets a uniform by name on the bound program; a uniform the student's code does not use is optimised
 // away, which is fine (setting it is then a no-op).

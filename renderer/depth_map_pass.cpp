@@ -12,17 +12,6 @@ GLenum depth_internal_format(const std::string& name) {
   return GL_DEPTH_COMPONENT24;
 }
 
-GlSampler make_compare_sampler() {
-  GlSampler s = GlSampler::create();
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return s;
-}
-
 }  // namespace
 
 DepthMapPass::DepthMapPass()

@@ -46,6 +46,17 @@ std::vector<float> read_pixels(GLuint framebuffer, GLenum attachment, int width,
   return data;
 }
 
+GlSampler make_compare_sampler() {
+  GlSampler s = GlSampler::create();
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return s;
+}
+
 void bind_color_target(GLuint framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   const GLenum color = GL_COLOR_ATTACHMENT0;

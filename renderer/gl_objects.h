@@ -71,6 +71,10 @@ inline GlShader make_shader(GLenum type) { return GlShader::adopt(glCreateShader
 // A 2D texture with storage, one filter for min and mag, clamped to the edge.
 GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum format, GLenum type, GLenum filter);
 
+// A sampler for sampler2DShadow reads: GL_COMPARE_REF_TO_TEXTURE (LEQUAL), linear (the four nearest
+// comparisons filtered bilinearly), clamped to the edge.
+GlSampler make_compare_sampler();
+
 // Throws "<what> framebuffer is incomplete (status 0x...)" unless the bound framebuffer is complete.
 void check_framebuffer(const char* what);
 // Reads a width x height block of floats (`channels` per pixel, GL's `format`) from a framebuffer's
