@@ -137,6 +137,16 @@ class CheckContext {
   int uploaded_generation_ = -1;  // the generation the renderer holds now
   std::unique_ptr<Scene> owned_scene_;
   std::unique_ptr<Oracle> oracle_;
+  // The last truth and what it was computed from: a measurement that sees the same pixels under the same
+  // light (a sweep of a shading parameter) reuses it instead of casting every ray again.
+  struct LastTruth {
+    int scene_generation = -1;
+    GBuffer gbuffer;
+    OracleLight light;
+    BandSpec band;
+    Truth truth;
+  };
+  LastTruth last_;
 };
 
 // The least number of interior lit and of interior shadowed pixels a measurement must see to grade

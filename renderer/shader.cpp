@@ -107,7 +107,8 @@ struct Expander {
     }
     const int index = static_cast<int>(files.size());
     files.push_back(path);
-    static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    // A trailing // comment is allowed after the name, as on any other line.
+    static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
     const auto lines = split_lines(text);
     if (lines.size() >= static_cast<std::size_t>(kShaderLineStride)) {

@@ -182,6 +182,13 @@ TEST_F(IncludeConfinementTest, OnlyOfferedNamesAreFollowed) {
   EXPECT_TRUE(ok.program) << ok.error;
 }
 
+TEST_F(IncludeConfinementTest, AnIncludeMayEndInAComment) {
+  write("helper.glsl", "float helper(float x) { return x; }\n");
+  write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"  // the helper\nfloat student(float x) { return helper(x); }\n");
+  const ProgramBuild ok = build(dir / "exercise.glsl", "helper.glsl");
+  EXPECT_TRUE(ok.program) << ok.error;
+}
+
 // Through a real lab: lab 6's exercise, as a submission's file that includes the renderer's own PCF.
 TEST_F(IncludeConfinementTest, AnExerciseCannotIncludeTheSolution) {
   const Lab& pcf = *find_lab(6);
