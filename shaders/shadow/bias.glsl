@@ -6,5 +6,5 @@ uniform float u_texel_depth;  // one shadow-map texel's world size, in depth uni
 #include "shadow/slope.glsl"
 
 float shadow_bias(float n_dot_l) {
-  return max(u_bias_constant, u_bias_slope * u_texel_depth * tan_incidence(n_dot_l));
+  return max(u_bias_constant, u_bias_slope * u_texel_depth * shadow_tan_incidence(n_dot_l));
 }

@@ -15,6 +15,6 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   float distance_to_light = length(from_light);
   float stored = texture(u_shadow_cube, from_light).r;
   float texel_world = distance_to_light * u_texel_angle;  // a texel's footprint at this distance
-  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * tan_incidence(n_dot_l));
+  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * shadow_tan_incidence(n_dot_l));
   return distance_to_light - bias > stored ? 0.0 : 1.0;
 }

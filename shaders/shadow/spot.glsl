@@ -24,6 +24,6 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   float stored = linear_depth(texture(u_shadow_map, s.xy).r);
   float mine = linear_depth(s.z);
   float texel_world = mine * u_texel_angle;
-  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * tan_incidence(n_dot_l));
+  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * shadow_tan_incidence(n_dot_l));
   return mine - bias > stored ? 0.0 : 1.0;
 }
