@@ -35,14 +35,17 @@ std::string too_large(std::uint64_t size, std::uint64_t max_bytes) {
   return "is " + std::to_string(size) + " bytes, above the limit of " + std::to_string(max_bytes) + " bytes";
 }
 
-// A name for a temporary file beside `name`: hidden, unique per process and per call.
+int process_id();
+
+// A name for a temporary file beside `name`: hidden, unique per process (its id) and per call (64
+// random bits from a generator of each thread's own).
 std::string temporary_name(const std::string& name) {
-  static std::mt19937_64 random{std::random_device{}()};
+  thread_local std::mt19937_64 random{std::random_device{}()};
   const std::uint64_t r = random();
   char hex[17];
   for (int i = 0; i < 16; ++i) hex[i] = "0123456789abcdef"[(r >> (4 * i)) & 15u];
   hex[16] = 0;
-  return "." + name + ".tmp-" + hex;
+  return "." + name + ".tmp-" + std::to_string(process_id()) + "-" + hex;
 }
 
 // '/'-separated components, empty ones and '.' dropped.
@@ -63,6 +66,8 @@ std::deque<std::string> components(std::string_view path) {
 #if SHADOWLAB_POSIX
 
 namespace {
+
+int process_id() { return static_cast<int>(::getpid()); }
 
 std::string errno_text(int e) { return std::strerror(e); }
 
@@ -257,7 +262,8 @@ std::string Folder::read(std::string_view relative, std::uint64_t max_bytes) con
   throw FileError(FileProblem::NotRegular, "names a folder, not a file");
 }
 
-void write_file_atomic(const fs::path& target, std::string_view bytes, bool durable) {
+void write_file_atomic(const fs::path& target, std::string_view bytes, bool durable,
+                       const std::function<void()>& before_rename) {
   const fs::path folder = target.parent_path();
   const std::string name = target.filename().string();
   if (name.empty() || name == "." || name == "..") throw FileError(FileProblem::NotRegular, "names a folder, not a file");
@@ -267,6 +273,7 @@ void write_file_atomic(const fs::path& target, std::string_view bytes, bool dura
     write_all(file.get(), bytes);
     if (durable && ::fsync(file.get()) != 0) fail_errno(errno, "fsync failed");
     if (::close(file.release()) != 0) fail_errno(errno, "close failed");
+    if (before_rename) before_rename();
     if (::renameat(dir.get(), tmp.c_str(), dir.get(), name.c_str()) != 0) fail_errno(errno, "cannot replace it");
   } catch (...) {
     ::unlinkat(dir.get(), tmp.c_str(), 0);
@@ -292,10 +299,7 @@ bool write_new_file(const fs::path& path, std::string_view bytes) {
   return true;
 }
 
-void make_writable_folder(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw FileError(problem_of(ec.value()), "cannot create it: " + ec.message());
+void probe_writable(const fs::path& dir) {
   const Fd folder = open_folder(dir);
   auto [probe, name] = create_temporary(folder.get(), "shadowlab-write-test");
   probe.reset();
@@ -354,6 +358,8 @@ bool rename_no_replace(const fs::path& from, const fs::path& to) {
 
 namespace {
 
+int process_id() { return 0; }  // the random part alone keeps names apart
+
 [[noreturn]] void fail_ec(const std::error_code& ec) {
   throw FileError(ec == std::errc::no_such_file_or_directory ? FileProblem::NotFound
                   : ec == std::errc::permission_denied       ? FileProblem::Denied
@@ -411,7 +417,8 @@ std::string Folder::read(std::string_view relative, std::uint64_t max_bytes) con
   return read_by_path(target, max_bytes);
 }
 
-void write_file_atomic(const fs::path& target, std::string_view bytes, bool) {
+void write_file_atomic(const fs::path& target, std::string_view bytes, bool,
+                       const std::function<void()>& before_rename) {
   const std::string name = target.filename().string();
   if (name.empty() || name == "." || name == "..") throw FileError(FileProblem::NotRegular, "names a folder, not a file");
   const fs::path tmp = target.parent_path() / temporary_name(name);
@@ -425,6 +432,7 @@ void write_file_atomic(const fs::path& target, std::string_view bytes, bool) {
       throw FileError(FileProblem::Io, "write failed");
     }
   }
+  if (before_rename) before_rename();
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
@@ -446,12 +454,10 @@ bool write_new_file(const fs::path& path, std::string_view bytes) {
   return true;
 }
 
-void make_writable_folder(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw FileError(FileProblem::Io, "cannot create it: " + ec.message());
+void probe_writable(const fs::path& dir) {
   const fs::path probe = dir / temporary_name("shadowlab-write-test");
   if (!write_new_file(probe, "")) throw FileError(FileProblem::Io, "cannot create a file in it");
+  std::error_code ec;
   fs::remove(probe, ec);
 }
 

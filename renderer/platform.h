@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -67,11 +68,13 @@ class Folder {
 // old file or the new one; two writers never share a temporary file; a failure leaves the old file and
 // no temporary one. With `durable` the data and the rename are flushed to disk first (fsync).
 // Throws FileError.
-void write_file_atomic(const std::filesystem::path& target, std::string_view bytes, bool durable = false);
+// `before_rename` (tests only) runs after the temporary file is written, before the rename.
+void write_file_atomic(const std::filesystem::path& target, std::string_view bytes, bool durable = false,
+                       const std::function<void()>& before_rename = {});
 
-// Creates `dir` (and its parents) if missing and proves it writable by creating and removing a file
-// with a unique name. Throws FileError.
-void make_writable_folder(const std::filesystem::path& dir);
+// Proves `dir` writable by creating a file with a unique name there (exclusively: never through a
+// planted link) and removing it. Throws FileError.
+void probe_writable(const std::filesystem::path& dir);
 
 // Takes an exclusive lock on `dir` for the rest of this process (a lock file, .shadowlab.lock, holds
 // the owner's process id). Returns false, with the other owner's id in `holder` when known, when
