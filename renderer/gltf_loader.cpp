@@ -361,12 +361,30 @@ class Loader {
         if (total > limits_.max_buffer_bytes)
           fail("its buffers declare " + (i + 1 < buffers->size() ? "at least " : std::string()) + str(total) +
                " bytes, above the limit of " + str(limits_.max_buffer_bytes) + " bytes for a scene (LoadLimits::max_buffer_bytes)");
-        if (b.contains("uri")) {
-          const std::string uri = url_decode(b["uri"].get<std::string>());
-          if (!uri.starts_with("data:")) box.buffer_uris[uri] = std::max(box.buffer_uris[uri], length);
+        if (!b.contains("uri")) continue;
+        const std::string& raw = b["uri"].get_ref<const std::string&>();
+        if (raw.starts_with("data:")) {
+          check_data_uri(raw, length, i);
+        } else {
+          const std::string uri = url_decode(raw);
+          box.buffer_uris[uri] = std::max(box.buffer_uris[uri], length);
         }
       }
     }
+  }
+
+  // A base64 data: URI's decoded size follows from its length: one that disagrees with the buffer's
+  // byteLength is refused before tinygltf decodes it (60 MB of it took seconds, to fail anyway).
+  void check_data_uri(const std::string& uri, std::uint64_t byte_length, std::size_t buffer) const {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos) return;  // tinygltf refuses it
+    const std::size_t chars = uri.size() - comma - 1;
+    std::size_t padding = 0;
+    for (std::size_t k = uri.size(); k > comma + 1 && uri[k - 1] == '=' && padding < 2; --k) ++padding;
+    const std::uint64_t decoded = chars / 4 * 3 + (chars % 4 == 0 ? 0 : chars % 4 - 1) - (chars % 4 == 0 ? padding : 0);
+    if (decoded != byte_length)
+      fail("buffers[" + str(buffer) + "] has a data: URI holding " + str(decoded) + " bytes, but its byteLength is " +
+           str(byte_length) + " (URI " + quote(uri, 60) + ")");
   }
 
   void parse() {

@@ -29,7 +29,7 @@ class LoadError : public std::runtime_error {
 // worst accepted file within about 1 GB of memory and a few seconds of loading.
 struct LoadLimits {
   std::uint64_t max_file_bytes = 256ull << 20;    // the .gltf or .glb itself
-  std::uint64_t max_json_bytes = 64ull << 20;     // its JSON (the whole .gltf, a .glb's JSON chunk)
+  std::uint64_t max_json_bytes = 32ull << 20;     // its JSON (the whole .gltf, a .glb's JSON chunk)
   int max_json_depth = 64;                        // nested arrays and objects
   std::uint64_t max_json_values = 1'000'000;      // JSON values of any kind
   std::uint64_t max_buffer_bytes = 256ull << 20;  // all buffers together (external, embedded, GLB)
