@@ -66,10 +66,19 @@ struct Doc {
         {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}});
     return static_cast<int>(j["accessors"].size()) - 1;
   }
+  // With min and max, which the specification requires of POSITION (the validator checks them).
   int vec3s(const std::vector<glm::vec3>& v) {
     std::vector<float> floats;
-    for (const glm::vec3& p : v) floats.insert(floats.end(), {p.x, p.y, p.z});
-    return accessor(view(floats.data(), floats.size() * sizeof(float)), kFloat, v.size(), "VEC3");
+    glm::vec3 lo(v.empty() ? glm::vec3(0) : v[0]), hi = lo;
+    for (const glm::vec3& p : v) {
+      floats.insert(floats.end(), {p.x, p.y, p.z});
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const int a = accessor(view(floats.data(), floats.size() * sizeof(float)), kFloat, v.size(), "VEC3");
+    j["accessors"][static_cast<std::size_t>(a)]["min"] = {lo.x, lo.y, lo.z};
+    j["accessors"][static_cast<std::size_t>(a)]["max"] = {hi.x, hi.y, hi.z};
+    return a;
   }
   template <class T>
   int indices(const std::vector<T>& v, int component_type) {
