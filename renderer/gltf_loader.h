@@ -37,8 +37,8 @@ struct LoadLimits {
   std::uint64_t max_materials = 10'000;
   std::uint64_t max_objects = 100'000;            // any other top-level array (accessors, meshes...)
   std::uint64_t max_instances = 10'000;           // drawn primitives, one per node instance of a mesh
-  std::uint64_t max_total_vertices = 10'000'000;  // baked: summed over all instances
-  std::uint64_t max_total_triangles = 10'000'000;
+  std::uint64_t max_total_vertices = 4'000'000;   // baked: summed over all instances
+  std::uint64_t max_total_triangles = 4'000'000;
   int max_node_depth = 256;
   double max_coordinate = 1e9;                    // world-space |x|, |y|, |z| after the node transforms
 };

@@ -101,7 +101,7 @@ std::vector<HostileCase> write_hostile_cases(const fs::path& dir) {
     write_bytes(dir / "million.bin", d.bin);
     d.buffer("million.bin");
     d.write(dir / "triangles_11m.gltf");
-    add("triangles_11m", dir / "triangles_11m.gltf", "above the limit of 10000000 (LoadLimits::max_total_triangles",
+    add("triangles_11m", dir / "triangles_11m.gltf", "above the limit of 4000000 (LoadLimits::max_total_triangles",
         "2: a 1M-triangle mesh instanced 11 times");
   }
   // 3. FIFOs: as the model, as a buffer in the model's folder.

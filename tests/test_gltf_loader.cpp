@@ -402,13 +402,13 @@ TEST_F(GltfHandMade, MemoryBombIsRefusedForItsLimit) {
   Doc d = triangle_doc(kUnsignedShort);
   d.j["accessors"][0]["count"] = 4'000'000'000ull;  // 48 GB of positions declared, 36 bytes present
   const std::string message = load_error(d.write(dir_ / "bomb.gltf"));
-  EXPECT_NE(message.find("4000000000 vertices, above the limit of 10000000 (LoadLimits::max_total_vertices"),
+  EXPECT_NE(message.find("4000000000 vertices, above the limit of 4000000 (LoadLimits::max_total_vertices"),
             std::string::npos)
       << message;
   // The same for indices.
   Doc e = triangle_doc(kUnsignedInt);
   e.j["accessors"][1]["count"] = 3'000'000'000ull;
-  EXPECT_NE(load_error(e.write(dir_ / "bomb2.gltf")).find("1000000000 triangles, above the limit of 10000000 (LoadLimits::max_total_triangles"),
+  EXPECT_NE(load_error(e.write(dir_ / "bomb2.gltf")).find("1000000000 triangles, above the limit of 4000000 (LoadLimits::max_total_triangles"),
             std::string::npos);
 }
 
