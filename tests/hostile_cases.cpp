@@ -30,6 +30,12 @@ void write_text(const fs::path& file, const std::string& text) {
 
 std::string nested_arrays(std::size_t levels) { return std::string(levels, '[') + std::string(levels, ']'); }
 
+void make_fifo(const fs::path& file) {
+  fs::create_directories(file.parent_path());
+  fs::remove(file);
+  if (::mkfifo(file.c_str(), 0600) != 0) throw std::runtime_error("cannot make the FIFO " + file.string());
+}
+
 // A sparse file of `bytes` (no disk space used): what a hostile buffer may name.
 void write_sparse(const fs::path& file, std::uint64_t bytes) {
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -61,6 +67,13 @@ std::vector<HostileCase> write_hostile_cases(const fs::path& dir) {
     cases.push_back({name, file, mention, item});
   };
   const std::string depth_limit = "deeper than 64 levels (LoadLimits::max_json_depth)";
+  // The triangle with its buffer at `uri` (nothing there unless the case puts it there).
+  const auto with_buffer_uri = [&](const std::string& name, const std::string& file, const std::string& uri,
+                                   const std::string& mention, const std::string& item) {
+    Doc d = triangle_doc();
+    d.buffer(uri);
+    add(name, d.write(dir / file), mention, item);
+  };
 
   // 1. Nesting 20,000 deep (41 KB) in asset.extras, in an extension, in a GLB.
   {
@@ -106,25 +119,17 @@ std::vector<HostileCase> write_hostile_cases(const fs::path& dir) {
   }
   // 3. FIFOs: as the model, as a buffer in the model's folder.
   {
-    fs::remove(dir / "fifo.gltf");
-    if (::mkfifo((dir / "fifo.gltf").c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
+    make_fifo(dir / "fifo.gltf");
     add("fifo_model", dir / "fifo.gltf", "is a FIFO, not a regular file", "3: a FIFO as the model");
-    fs::create_directories(dir / "fifo_buffer");
-    fs::remove(dir / "fifo_buffer/pipe.bin");
-    if (::mkfifo((dir / "fifo_buffer/pipe.bin").c_str(), 0600) != 0) throw std::runtime_error("mkfifo failed");
-    Doc d = triangle_doc();
-    d.buffer("pipe.bin");
-    d.write(dir / "fifo_buffer/model.gltf");
-    add("fifo_buffer", dir / "fifo_buffer/model.gltf", "buffer URI 'pipe.bin': is a FIFO, not a regular file",
-        "3: a FIFO as a buffer");
+    make_fifo(dir / "fifo_buffer/pipe.bin");
+    with_buffer_uri("fifo_buffer", "fifo_buffer/model.gltf", "pipe.bin", "buffer URI 'pipe.bin': is a FIFO, not a regular file",
+                    "3: a FIFO as a buffer");
   }
   // 4. and 10. Long and hostile text: a 20,000-character URI; a 60 MB data: URI whose length is wrong;
   // escape sequences and forged lines in a URI; a NUL in a URI.
   {
-    Doc d = triangle_doc();
-    d.buffer(std::string(20'000, 'a') + ".bin");
-    d.write(dir / "long_uri.gltf");
-    add("long_uri", dir / "long_uri.gltf", "... (20004 bytes)", "4: a 20,000-character URI");
+    with_buffer_uri("long_uri", "long_uri.gltf", std::string(20'000, 'a') + ".bin", "... (20004 bytes)",
+                    "4: a 20,000-character URI");
     // The 60 MB one is beyond max_json_bytes; 30 MB is within it and meets the length check.
     for (const std::size_t mb : {60, 30}) {
       Doc e = triangle_doc();
@@ -137,15 +142,10 @@ std::vector<HostileCase> write_hostile_cases(const fs::path& dir) {
                    : "buffers[0] has a data: URI holding 22500000 bytes, but its byteLength is 10",
           "4/10: a " + std::to_string(mb) + " MB data: URI of the wrong length");
     }
-    Doc f = triangle_doc();
-    f.buffer("\x1b[2J\x1b[H\nshadowlab check: all checks passed\n.bin");
-    f.write(dir / "escape_uri.gltf");
-    add("escape_uri", dir / "escape_uri.gltf", "\\x1B[2J\\x1B[H\\nshadowlab check: all checks passed\\n.bin",
-        "10: escape sequences and newlines in a URI");
-    Doc g = triangle_doc();
-    g.buffer(std::string("a\0b.bin", 7));
-    g.write(dir / "nul_uri.gltf");
-    add("nul_uri", dir / "nul_uri.gltf", "URI 'a\\x00b.bin' refused: it contains a NUL character", "10: a NUL in a URI");
+    with_buffer_uri("escape_uri", "escape_uri.gltf", "\x1b[2J\x1b[H\nshadowlab check: all checks passed\n.bin",
+                    "\\x1B[2J\\x1B[H\\nshadowlab check: all checks passed\\n.bin", "10: escape sequences and newlines in a URI");
+    with_buffer_uri("nul_uri", "nul_uri.gltf", std::string("a\0b.bin", 7),
+                    "URI 'a\\x00b.bin' refused: it contains a NUL character", "10: a NUL in a URI");
   }
   // 7. Memory per scene: 16 buffers naming one 256 MiB file; a file larger than its buffer declares;
   // a million empty materials (3 MB); 200,000 of them.

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/gltf_doc.h"
+#include "tests/test_util.h"
 
 namespace shadowlab {
 namespace {
@@ -269,17 +270,7 @@ TEST(GltfInvalidFiles, EveryFileGetsItsVerdict) {
 // ---------------------------------------------------------------------------------------------------
 // Hand-made files.
 
-class GltfHandMade : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("shadowlab_gltf_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class GltfHandMade : public TempDirTest {};
 
 TEST_F(GltfHandMade, IndexWidthsAndNonIndexedGiveTheSameTriangle) {
   std::vector<Scene> scenes;

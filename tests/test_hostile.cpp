@@ -23,6 +23,7 @@
 #include "renderer/untrusted.h"
 #include "tests/gltf_doc.h"
 #include "tests/hostile_cases.h"
+#include "tests/test_util.h"
 
 namespace shadowlab {
 namespace {
@@ -30,26 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace shadowlab::test;
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_all(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
-
-class Hostile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("shadowlab_hostile_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class Hostile : public TempDirTest {};
 
 // No byte a terminal acts on: control characters, DEL, C1 controls (as UTF-8), NUL.
 bool printable_line(const std::string& s) {

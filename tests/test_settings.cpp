@@ -16,20 +16,15 @@
 
 #include "app/settings.h"
 #include "renderer/params.h"
+#include "tests/test_util.h"
 
 namespace shadowlab {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_all(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+using test::read_all;
+using test::write_all;
 
 std::vector<fs::path> backups_of(const fs::path& file) {
   std::vector<fs::path> found;
