@@ -62,7 +62,14 @@ constexpr const char* kExercise = "labs/02_ortho_fit/exercise.cpp";
 constexpr int kBandPixels = 2;
 constexpr const char* kPalmTree = "models/PalmTree/PalmTree.gltf";
 
-LightFit fit_for(Impl impl) { return impl == Impl::Exercise ? LightFit(ortho_fit_exercise) : LightFit(fit_light_ortho); }
+constexpr const char* kSolution = "renderer/light.cpp";  // fit_light_ortho, which every other lab uses
+
+// The fit in a slot: the exercise and the solution are compiled into the program.
+LightFit fit_for_file(const std::filesystem::path& file) {
+  if (file == kExercise) return ortho_fit_exercise;
+  if (file == kSolution) return fit_light_ortho;
+  throw std::runtime_error(file.generic_string() + ": grading a C++ exercise from another folder is not supported yet");
+}
 
 // shared/ sits beside the project (and beside CI's fresh clone); SHADOWLAB_ASSETS overrides it.
 std::filesystem::path assets_dir() {
@@ -75,7 +82,7 @@ std::filesystem::path assets_dir() {
 // (so the stock exercise, which is the fixed box, cannot pass); reported cases are measured only.
 void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::string& tag, const ParamSet& params,
                         const Bounds* view, bool graded) {
-  LabHooks fitted = ctx.lab.hooks(ctx.impl);
+  LabHooks fitted = ctx.hooks();
   LabHooks fixed = fitted;
   fixed.light_fit = [](const Bounds&, const glm::vec3& to_light) { return fixed_tutorial_ortho(to_light); };
   BandSpec band;
@@ -92,7 +99,7 @@ void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::strin
 }
 
 void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
-  const LightFit fit = fit_for(ctx.impl);
+  const LightFit fit = ctx.hooks().light_fit;
   // 1. Matrix properties over 10,006 directions, for the default scene's box and the PalmTree's.
   const auto palm_path = assets_dir() / kPalmTree;
   if (!std::filesystem::exists(palm_path))
@@ -150,7 +157,7 @@ Lab make_lab_ortho_fit() {
   lab.title = "Ortho light matrix fitted to the scene";
   lab.summary = "Replace the tutorials' fixed ortho box with one fitted to the bounding box, for any light direction.";
   lab.exercise_files = {kExercise};
-  lab.solution_files = {"renderer/light.cpp"};
+  lab.solution_files = {kSolution};
   // Lab 1's lesson: a bias in texels, so the fitted and the fixed box are compared at the same bias in
   // world units (a constant in depth units would scale with each box's depth range).
   ParamSet base(renderer_param_specs());
@@ -164,9 +171,9 @@ Lab make_lab_ortho_fit() {
       {"aliasing", "A 256^2 map: blocky, jagged edges; a loose box wastes the few texels there are.", {{"shadow.map_size", "256"}}},
       {"sharp", "A 2048^2 map with the fitted box: fine edges.", {{"shadow.map_size", "2048"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
-    hooks.light_fit = fit_for(impl);
+    hooks.light_fit = fit_for_file(files.at(0));
     return hooks;
   };
   lab.check = check_ortho_fit;
