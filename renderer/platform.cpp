@@ -48,6 +48,14 @@ std::string temporary_name(const std::string& name) {
   return "." + name + ".tmp-" + std::to_string(process_id()) + "-" + hex;
 }
 
+}  // namespace
+
+#if SHADOWLAB_POSIX
+
+namespace {
+
+int process_id() { return static_cast<int>(::getpid()); }
+
 // '/'-separated components, empty ones and '.' dropped.
 std::deque<std::string> components(std::string_view path) {
   std::deque<std::string> out;
@@ -60,14 +68,6 @@ std::deque<std::string> components(std::string_view path) {
   }
   return out;
 }
-
-}  // namespace
-
-#if SHADOWLAB_POSIX
-
-namespace {
-
-int process_id() { return static_cast<int>(::getpid()); }
 
 std::string errno_text(int e) { return std::strerror(e); }
 
@@ -372,10 +372,10 @@ std::string read_by_path(const fs::path& path, std::uint64_t max_bytes) {
   const fs::file_status status = fs::status(path, ec);
   if (ec) fail_ec(ec);
   if (status.type() != fs::file_type::regular) throw FileError(FileProblem::NotRegular, "not a regular file");
+  if (max_bytes == 0) return {};  // checked, not read (Folder::read)
   const std::uint64_t size = fs::file_size(path, ec);
   if (ec) fail_ec(ec);
   if (size > max_bytes) throw FileError(FileProblem::TooLarge, too_large(size, max_bytes));
-  if (max_bytes == 0) return {};
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(FileProblem::Io, "cannot open it");
   std::ostringstream s;
