@@ -65,13 +65,12 @@ BenchPlots load_bench_plots(const std::filesystem::path& file) {
     throw std::runtime_error(file.string() + ": cannot open the file: " + e.what());
   }
   try {
-    check_json_shape(text, JsonLimits{});  // nesting bounded before a DOM is built
-    BenchPlots plots = bench_plots_from_json(nlohmann::json::parse(text));
+    BenchPlots plots = bench_plots_from_json(parse_json_bounded(text, JsonLimits{}));  // nesting bounded
     if (plots.by_scene.empty()) throw std::runtime_error("no points to plot");
     return plots;
-  } catch (const JsonShapeError& e) {
+  } catch (const JsonShapeError& e) {  // not JSON, or nested too deep
     throw std::runtime_error(file.string() + ": not valid JSON (" + std::string(e.what()) + ")");
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const nlohmann::json::exception& e) {  // a field of the wrong type
     throw std::runtime_error(file.string() + ": not valid JSON (" + printable(e.what(), 240) + ")");
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(file.string() + ": " + printable(e.what(), 400));

@@ -323,31 +323,33 @@ class Loader {
     if (text.size() > limits_.max_json_bytes)
       fail("its JSON is " + str(text.size()) + " bytes, above the limit of " + str(limits_.max_json_bytes) +
            " bytes (LoadLimits::max_json_bytes; put large buffers in a .bin file or a .glb)");
-    JsonShape shape;
+    // One parse, stopped at the first value past the depth or value limit (tinygltf's parser of extras
+    // recurses: 20,000 nested arrays overflowed its stack).
+    nlohmann::json doc;
     try {
-      shape = check_json_shape(text, {limits_.max_json_depth, static_cast<std::size_t>(limits_.max_json_values)});
+      doc = parse_json_bounded(text, {limits_.max_json_depth, static_cast<std::size_t>(limits_.max_json_values)});
     } catch (const JsonShapeError& e) {
       const std::string what = e.what();
       const char* limit = what.find("deeper") != std::string::npos ? " (LoadLimits::max_json_depth)"
-                          : what.find("values") != std::string::npos ? " (LoadLimits::max_json_values)"
-                                                                     : "";
+                          : what.find("more than") != std::string::npos ? " (LoadLimits::max_json_values)"
+                                                                        : "";
       fail("glTF parser error: " + what + limit);
     }
-    for (const auto& [name, count] : shape.root_arrays) {
-      const bool nodes = name == "nodes", materials = name == "materials";
-      const std::uint64_t limit = nodes ? limits_.max_nodes : materials ? limits_.max_materials : limits_.max_objects;
-      if (count > limit)
-        fail("the file has " + str(count) + " " + printable(name, 40) + ", above the limit of " + str(limit) +
-             " (LoadLimits::" + (nodes ? "max_nodes" : materials ? "max_materials" : "max_objects") + ")");
+    // The top-level arrays, before tinygltf turns each element into a structure of up to ~2 KB.
+    if (doc.is_object()) {
+      for (const auto& [name, value] : doc.items()) {
+        if (!value.is_array()) continue;
+        const bool nodes = name == "nodes", materials = name == "materials";
+        const std::uint64_t limit = nodes ? limits_.max_nodes : materials ? limits_.max_materials : limits_.max_objects;
+        if (value.size() > limit)
+          fail("the file has " + str(value.size()) + " " + printable(name, 40) + ", above the limit of " + str(limit) +
+               " (LoadLimits::" + (nodes ? "max_nodes" : materials ? "max_materials" : "max_objects") + ")");
+      }
     }
-    nlohmann::json doc;
     try {
-      doc = nlohmann::json::parse(text);  // depth and size are known to be bounded now
       warnings_ = check_gltf_schema(doc);
     } catch (const GltfSchemaError& e) {
       fail(e.what());
-    } catch (const std::exception& e) {
-      fail("glTF parser error: " + printable(e.what(), 240));
     }
     // Every buffer's declared size counts against the scene's budget, before any byte is read or decoded.
     std::uint64_t total = 0;

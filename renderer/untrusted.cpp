@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -91,79 +90,72 @@ std::string shortened(std::string_view message, std::size_t max_bytes) {
 
 namespace {
 
-// Counts depth and values as nlohmann's parser reports them; stops it (returns false) at a limit.
-class ShapeSax {
+// nlohmann's own tree builder (the one json::parse uses), fed through a gate that counts depth and
+// values and stops the parse at the first value past a limit. One linear pass; nlohmann's parse
+// callbacks are no substitute: on every object's end they scan the whole enclosing array for discarded
+// values, which made a million-element array take minutes.
+class BoundedDom {
  public:
   using json = nlohmann::json;
-  explicit ShapeSax(const JsonLimits& limits) : limits_(limits) {}
+  BoundedDom(json& result, const JsonLimits& limits) : dom_(result, /*allow_exceptions=*/false), limits_(limits) {}
 
-  bool null() { return value(); }
-  bool boolean(bool) { return value(); }
-  bool number_integer(json::number_integer_t) { return value(); }
-  bool number_unsigned(json::number_unsigned_t) { return value(); }
-  bool number_float(json::number_float_t, const json::string_t&) { return value(); }
-  bool string(json::string_t&) { return value(); }
-  bool binary(json::binary_t&) { return value(); }
-  bool start_object(std::size_t) { return open(false); }
-  bool start_array(std::size_t) { return open(true); }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
-  bool key(json::string_t& k) {
-    if (stack_.size() == 1) key_ = k;
-    return true;
+  bool null() { return value() && dom_.null(); }
+  bool boolean(bool v) { return value() && dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return value() && dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return value() && dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t v, const json::string_t& s) { return value() && dom_.number_float(v, s); }
+  bool string(json::string_t& v) { return value() && dom_.string(v); }
+  bool binary(json::binary_t& v) { return value() && dom_.binary(v); }
+  bool start_object(std::size_t n) { return open() && dom_.start_object(n); }
+  bool start_array(std::size_t n) { return open() && dom_.start_array(n); }
+  bool key(json::string_t& k) { return dom_.key(k); }
+  bool end_object() {
+    --depth_;
+    return dom_.end_object();
+  }
+  bool end_array() {
+    --depth_;
+    return dom_.end_array();
   }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
     problem_ = printable(e.what(), 240);
     return false;
   }
-
   const std::string& problem() const { return problem_; }
-  JsonShape shape;
 
  private:
   bool value() {
-    if (++shape.values > limits_.max_values) {
-      problem_ = "the JSON holds more than " + std::to_string(limits_.max_values) + " values";
-      return false;
-    }
-    // An element of an array member of the root object: counted for that member.
-    if (stack_.size() == 2 && stack_[1] && !stack_[0]) ++shape.root_arrays[key_];
-    return true;
+    if (++values_ <= limits_.max_values) return true;
+    problem_ = "the JSON holds more than " + std::to_string(limits_.max_values) + " values";
+    return false;
   }
-  bool open(bool array) {
+  bool open() {
     if (!value()) return false;
-    stack_.push_back(array);
-    if (stack_.size() == 2 && array && !stack_[0]) shape.root_arrays[key_] += 0;  // an empty array is listed too
-    shape.depth = std::max(shape.depth, static_cast<int>(stack_.size()));
-    if (static_cast<int>(stack_.size()) > limits_.max_depth) {
-      problem_ = "the JSON nests arrays and objects deeper than " + std::to_string(limits_.max_depth) + " levels";
-      return false;
-    }
-    return true;
-  }
-  bool close() {
-    stack_.pop_back();
-    return true;
+    if (++depth_ <= limits_.max_depth) return true;
+    problem_ = "the JSON nests arrays and objects deeper than " + std::to_string(limits_.max_depth) + " levels";
+    return false;
   }
 
+  nlohmann::detail::json_sax_dom_parser<json> dom_;
   const JsonLimits& limits_;
-  std::vector<bool> stack_;  // per open container: true for an array
-  std::string key_;          // the root object's key being read
+  int depth_ = 0;
+  std::size_t values_ = 0;
   std::string problem_;
 };
 
 }  // namespace
 
-JsonShape check_json_shape(std::string_view text, const JsonLimits& limits) {
-  ShapeSax sax(limits);
+nlohmann::json parse_json_bounded(std::string_view text, const JsonLimits& limits) {
+  nlohmann::json result;
+  BoundedDom sax(result, limits);
   bool ok = false;
   try {
     ok = nlohmann::json::sax_parse(text.begin(), text.end(), &sax);
-  } catch (const std::exception& e) {  // the SAX interface reports through parse_error; be sure anyway
+  } catch (const nlohmann::json::exception& e) {  // the SAX interface reports through parse_error; be sure
     throw JsonShapeError(printable(e.what(), 240));
   }
   if (!ok) throw JsonShapeError(sax.problem().empty() ? "the JSON does not parse" : sax.problem());
-  return sax.shape;
+  return result;
 }
 
 }  // namespace shadowlab

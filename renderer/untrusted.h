@@ -6,16 +6,17 @@
 // ESC sequences, C1 controls, bidirectional overrides, a NUL that would cut a C string, bytes that
 // are not UTF-8) and cuts it to a bounded length, saying how long it was.
 //
-// JSON: check_json_shape() walks a JSON text with nlohmann's SAX parser, which keeps its own stack
-// (no recursion), and refuses it as soon as it nests deeper or holds more values than allowed; only
-// then may a DOM be built and handed to code that recurses (tinygltf's extras, nlohmann's copies).
+// JSON: parse_json_bounded() parses with nlohmann's parser, which keeps its own stack (no recursion),
+// and stops it as soon as the text nests deeper or holds more values than allowed; only a tree within
+// the limits is ever built and handed to code that recurses (tinygltf's extras, nlohmann's copies).
 #pragma once
 
 #include <cstddef>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
 
 namespace shadowlab {
 
@@ -35,20 +36,16 @@ struct JsonLimits {
   std::size_t max_values = 1'000'000;  // every value, key-value pairs' values and array elements alike
 };
 
-struct JsonShape {
-  int depth = 0;                                   // deepest nesting met
-  std::size_t values = 0;                          // values met
-  std::map<std::string, std::size_t> root_arrays;  // for a root object: its array members' sizes
-};
-
 class JsonShapeError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-// Measures `text` without building it. Throws JsonShapeError with one printable line (no file name)
-// when it is not JSON, nests deeper than limits.max_depth or holds more than limits.max_values values;
-// the message names the limit and the byte offset where it was crossed.
-JsonShape check_json_shape(std::string_view text, const JsonLimits& limits);
+// Parses `text` into a tree, refusing it as soon as it nests deeper or holds more values than
+// allowed: the parser (nlohmann's, which keeps its own stack) is stopped at the first value past a
+// limit, so no more than the limits allow is ever built, and what is returned is safe for code that
+// recurses. Throws JsonShapeError with one printable line (no file name) when the text is not JSON or
+// breaks a limit; the message names the limit.
+nlohmann::json parse_json_bounded(std::string_view text, const JsonLimits& limits);
 
 }  // namespace shadowlab

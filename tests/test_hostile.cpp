@@ -291,23 +291,27 @@ TEST(UntrustedText, EscapesWhatTerminalsActOnAndCuts) {
       << "never cuts inside a character";
 }
 
-TEST(UntrustedText, JsonShapeIsMeasuredWithoutRecursion) {
+TEST(UntrustedText, JsonIsParsedWithinItsLimits) {
   const JsonLimits limits{.max_depth = 64, .max_values = 1000};
-  EXPECT_EQ(check_json_shape(std::string(64, '[') + std::string(64, ']'), limits).depth, 64);
-  EXPECT_THROW(check_json_shape(std::string(65, '[') + std::string(65, ']'), limits), JsonShapeError);
-  EXPECT_THROW(check_json_shape(std::string(1'000'000, '['), limits), JsonShapeError);  // also unterminated
-  const JsonShape shape = check_json_shape(R"({"nodes": [{}, {}, {"children": [1]}], "materials": [], "asset": {}})", limits);
-  EXPECT_EQ(shape.root_arrays.at("nodes"), 3u);
-  EXPECT_EQ(shape.root_arrays.at("materials"), 0u);
-  EXPECT_EQ(shape.root_arrays.count("asset"), 0u);
+  const auto error = [&](const std::string& text) -> std::string {
+    try {
+      parse_json_bounded(text, limits);
+    } catch (const JsonShapeError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(parse_json_bounded(std::string(64, '[') + std::string(64, ']'), limits).dump().size(), 128u);
+  EXPECT_EQ(error(std::string(65, '[') + std::string(65, ']')), "the JSON nests arrays and objects deeper than 64 levels");
+  EXPECT_EQ(error(std::string(1'000'000, '[')), "the JSON nests arrays and objects deeper than 64 levels");
+  EXPECT_EQ(error("{\"a\":" + std::string(100, '[') + std::string(100, ']') + "}"),
+            "the JSON nests arrays and objects deeper than 64 levels");
   std::string many = "[0";
-  for (int i = 0; i < 1000; ++i) many += ",0";
-  try {
-    check_json_shape(many + "]", limits);
-    ADD_FAILURE() << "1001 values accepted";
-  } catch (const JsonShapeError& e) {
-    EXPECT_STREQ(e.what(), "the JSON holds more than 1000 values");
-  }
+  for (int i = 0; i < 998; ++i) many += ",0";
+  EXPECT_EQ(parse_json_bounded(many + "]", limits).size(), 999u) << "999 numbers and their array: 1000 values";
+  EXPECT_EQ(error(many + ",0]"), "the JSON holds more than 1000 values");
+  EXPECT_NE(error("{\"a\": [1, 2"), "") << "not JSON";
+  EXPECT_NE(error("{\"a\": [1, 2").find("parse error"), std::string::npos);
 }
 
 }  // namespace
