@@ -1,8 +1,12 @@
 #include "labs/probe.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
 #include <stdexcept>
 
+#include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/gl_objects.h"
 #include "renderer/shader.h"
@@ -25,6 +29,129 @@ GlTexture input_texture(const std::vector<glm::vec4>& values, int width, int hei
 
 }  // namespace
 
+GlTexture make_probe_depth_texture(const std::vector<float>& depths, int size) {
+  if (depths.size() != static_cast<std::size_t>(size) * static_cast<std::size_t>(size))
+    throw std::invalid_argument("probe: depth texture of the wrong size");
+  GlTexture t = make_texture_2d(GL_DEPTH_COMPONENT32F, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int width, int height) {
+  std::vector<glm::vec2> padded(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), glm::vec2(1.0f));
+  if (moments.size() > padded.size()) throw std::invalid_argument("probe: more moments than texels");
+  std::copy(moments.begin(), moments.end(), padded.begin());
+  GlTexture t = make_texture_2d(GL_RG32F, width, height, GL_RG, GL_FLOAT, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RG, GL_FLOAT, padded.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+GlSampler make_compare_sampler() {
+  GlSampler s = GlSampler::create();
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return s;
+}
+
+void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare) {
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  set_uniform(program, "u_shadow_map", 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  glBindSampler(1, compare.id());
+  set_uniform(program, "u_shadow_map_compare", 1);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep) {
+  constexpr int kSteps = 600;
+  constexpr double kNdotL[] = {1.0, 0.5};
+  std::vector<double> offsets;
+  for (int j = 0; j < kSteps; ++j) offsets.push_back(sweep.distance * std::pow(10.0, -5.0 + 5.0 * j / (kSteps - 1)));
+  ProbeRequest request;
+  request.fragment = "shaders/probe/visibility.frag";
+  for (double c : kNdotL) {
+    // A normal at the wanted angle to the light: tilted from the direction toward the light.
+    const glm::vec3 to_light = -sweep.direction;
+    glm::vec3 side = glm::cross(to_light, std::abs(to_light.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
+    side = glm::normalize(side);
+    const glm::vec3 n = static_cast<float>(c) * to_light + static_cast<float>(std::sqrt(1.0 - c * c)) * side;
+    for (double x : offsets) {
+      const glm::vec3 p = sweep.direction * static_cast<float>(sweep.distance + x);
+      request.in0.push_back({p, static_cast<float>(c)});
+      request.in1.push_back({n, 0.0f});
+    }
+  }
+  for (float angle : sweep.texel_angles)
+    request.passes.push_back([&sweep, angle](GLuint program) { sweep.setup(program, sweep.distance, angle); });
+  const auto v = run_probe(hooks, request);
+  std::vector<BiasThreshold> out;
+  for (std::size_t pass = 0; pass < v.size(); ++pass)
+    for (std::size_t k = 0; k < std::size(kNdotL); ++k) {
+      double bias = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < kSteps; ++j)
+        if (!(v[pass][k * kSteps + static_cast<std::size_t>(j)] >= 0.5f)) {
+          bias = j == 0 ? 0.0 : offsets[static_cast<std::size_t>(j)];
+          break;
+        }
+      out.push_back({sweep.distance, kNdotL[k], sweep.texel_angles[pass], bias});
+    }
+  return out;
+}
+
+void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>& thresholds, double slope) {
+  double least = std::numeric_limits<double>::infinity(), most = 0.0;
+  std::map<double, std::pair<double, double>> per_slope;  // n.l -> (least, most) ratio
+  std::map<double, std::vector<double>> by_n_dot_l;
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& t : thresholds) {
+    const double tan_a = std::sqrt(1.0 - t.n_dot_l * t.n_dot_l) / t.n_dot_l;
+    const double footprint = t.distance * t.texel_angle * (1.0 + slope * tan_a);
+    const double ratio = t.bias / footprint;
+    least = std::min(least, ratio);
+    most = std::max(most, std::isfinite(ratio) ? ratio : 1e30);
+    auto& [lo, hi] = per_slope.try_emplace(t.n_dot_l, std::numeric_limits<double>::infinity(), 0.0).first->second;
+    lo = std::min(lo, ratio);
+    hi = std::max(hi, std::isfinite(ratio) ? ratio : 1e30);
+    by_n_dot_l[t.n_dot_l].push_back(t.bias);
+    list.push_back({{"distance", t.distance}, {"n_dot_l", t.n_dot_l}, {"texel_angle", t.texel_angle},
+                    {"bias", std::isfinite(t.bias) ? t.bias : -1.0}, {"footprint_bias", footprint}});
+  }
+  double spread = 1.0;
+  for (const auto& [c, range] : per_slope) spread = std::max(spread, range.first > 0 ? range.second / range.first : 1e30);
+  // The bias's growth with the slope: median over the cases of bias(n.l = 0.5) / bias(n.l = 1).
+  std::vector<double> growth;
+  const auto& at_one = by_n_dot_l[1.0];
+  const auto& at_half = by_n_dot_l[0.5];
+  for (std::size_t i = 0; i < std::min(at_one.size(), at_half.size()); ++i)
+    growth.push_back(at_one[i] > 0 ? at_half[i] / at_one[i] : 0.0);
+  std::sort(growth.begin(), growth.end());
+  const double slope_growth = growth.empty() ? 0.0 : growth[growth.size() / 2];
+  result.metrics["bias_probe"] = list;
+  const std::string why = "probe: the offset at which a point behind a stored occluder turns shadowed, against "
+                          "distance x texel angle x (1 + slope x tan)";
+  result.criteria.push_back({"bias.too_small", least, Criterion::kAtLeast, 0.5, why,
+                             "the bias must cover a texel's footprint at the fragment's distance (distance x "
+                             "u_texel_angle), or surfaces shadow themselves (acne)."});
+  result.criteria.push_back({"bias.too_large", most, Criterion::kAtMost, 4.0, why,
+                             "the bias is several texels' footprints too large: shadows detach (peter-panning)."});
+  result.criteria.push_back({"bias.not_proportional", spread, Criterion::kAtMost, 1.4, why,
+                             "the bias must grow in proportion to the distance from the light and to u_texel_angle "
+                             "(a texel's footprint), not be a constant tuned to one place or map size."});
+  result.criteria.push_back({"bias.slope_growth", slope_growth, Criterion::kAtLeast, 1.5, why,
+                             "the bias must grow with the slope (u_bias_slope x tan of the angle of incidence)."});
+}
+
 void set_uniform(GLuint program, const char* name, float value) { glUniform1f(glGetUniformLocation(program, name), value); }
 void set_uniform(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
 void set_uniform(GLuint program, const char* name, const glm::mat4& value) {
@@ -34,9 +161,10 @@ void set_uniform(GLuint program, const char* name, const glm::vec3& value) {
   glUniform3f(glGetUniformLocation(program, name), value.x, value.y, value.z);
 }
 
-std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
+std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
   const std::size_t cases = request.in0.size();
-  if (cases == 0) return {};
+  const std::size_t passes = std::max<std::size_t>(request.passes.size(), 1);
+  if (cases == 0) return std::vector<std::vector<float>>(passes);
   if (!request.in1.empty() && request.in1.size() != cases) throw std::invalid_argument("probe: in0 and in1 differ in size");
   ProgramDesc desc{"shaders/fullscreen.vert", {}, request.fragment, {}, {}, hooks.include_rules};
   for (const auto& [name, file] : Renderer::default_includes(hooks.technique, hooks.light.value_or(LightType::Directional)))
@@ -65,15 +193,18 @@ std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request)
   glBindTexture(GL_TEXTURE_2D, in1.id());
   set_uniform(program, "u_probe_in1", kInputUnit1);
   glActiveTexture(GL_TEXTURE0);
-  if (request.set_uniforms) request.set_uniforms(program);
-
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glBindVertexArray(vao.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  std::vector<std::vector<float>> values(passes, std::vector<float>(cases));
   std::vector<glm::vec4> result(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, result.data());
+  for (std::size_t pass = 0; pass < passes; ++pass) {
+    if (pass < request.passes.size() && request.passes[pass]) request.passes[pass](program);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, result.data());
+    for (std::size_t i = 0; i < cases; ++i) values[pass][i] = result[i].x;
+  }
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);
@@ -83,9 +214,6 @@ std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request)
     glBindSampler(static_cast<GLuint>(unit), 0);
   }
   glActiveTexture(GL_TEXTURE0);
-
-  std::vector<float> values(cases);
-  for (std::size_t i = 0; i < cases; ++i) values[i] = result[i].x;
   return values;
 }
 
