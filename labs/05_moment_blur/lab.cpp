@@ -24,7 +24,7 @@ namespace {
 constexpr const char* kExercise = "labs/05_moment_blur/exercise.glsl";
 constexpr const char* kSolution = "shaders/vsm/gaussian_blur.glsl";  // the renderer's own blur
 
-// The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
+// The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
 // about 33 * 2^-24 = 2e-6 at worst; a kernel that is not normalised, not clamped at the edge or one
 // texel off is off by 1e-3 and more near every depth edge.
 constexpr double kMaxTexelError = 1e-4;
