@@ -28,13 +28,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A technique is a lab's solution with some parameters set: the benchmark composes what the labs teach.
+// A technique is a lab's solution with some parameters set (each lab declares its own, Lab::bench): the
+// benchmark composes what the labs teach.
 struct Technique {
-  std::string name;   // "hard", "vsm r4", "pcf 5x5", ...
-  std::string family; // colour group in the plot
-  int lab = 1;
-  std::vector<std::pair<std::string, std::string>> sets;
-  bool uses_map = true;  // false: no shadow map (shadow volumes), measured once per scene, map size 0
+  const Lab* lab = nullptr;
+  BenchTechnique entry;
+  std::string family;  // colour group in the plot: the entry's, with the lab's number
 };
 
 struct BenchScene {
@@ -68,20 +67,20 @@ FrameRequest bench_request(const Bounds& view) {
 }
 
 std::vector<Technique> techniques(bool quick) {
-  std::vector<Technique> out = {{"hard", "hard (lab 1)", 1, {}}};
-  // PCF kernels, when the PCF lab exists (its parameter names the kernel sizes).
-  if (const Lab* pcf = find_lab(6)) {
-    const ParamSet p = lab_params(*pcf);
-    if (const ParamSpec* k = p.find("pcf.kernel")) {
-      for (const auto& choice : k->choices) out.push_back({"pcf " + choice, "PCF (lab 6)", 6, {{"pcf.kernel", choice}}});
-    }
-  }
-  const std::vector<int> radii = quick ? std::vector<int>{0, 2, 4} : std::vector<int>{0, 1, 2, 4, 8};
-  for (int r : radii)
-    out.push_back({"vsm r" + std::to_string(r), "VSM (lab 4/5)", 4, {{"vsm.blur_radius", std::to_string(r)}}});
-  // Stencil shadow volumes: exact hard shadows on closed meshes, the GPU reference (no map to size).
-  if (find_lab(9)) out.push_back({"volumes", "shadow volumes (lab 9)", 9, {{"volume.method", "z-fail"}}, false});
+  std::vector<Technique> out;
+  for (const auto& lab : all_labs())
+    for (const auto& entry : lab.bench)
+      if (entry.quick || !quick) out.push_back({&lab, entry, entry.family + " (lab " + std::to_string(lab.number) + ")"});
   return out;
+}
+
+// The lab the skipping, overlay and blur figures use: the first whose solution stores moments and
+// declares a blur (the most a skipped shadow update saves).
+const Lab& blurred_moments_lab() {
+  for (const auto& lab : all_labs())
+    if (lab.hooks(Impl::Solution).technique == ShadowTechnique::Moments && lab_params(lab).find("vsm.blur_radius"))
+      return lab;
+  throw std::runtime_error("no lab stores blurred moments: the bench's skipping, overlay and blur figures need one");
 }
 
 std::vector<BenchScene> scenes(const std::string& scene_file) {
@@ -104,16 +103,16 @@ std::vector<BenchScene> scenes(const std::string& scene_file) {
 
 BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t, const BenchScene& s, int map_size,
                    int frames) {
-  const Lab& lab = *find_lab(t.lab);
+  const Lab& lab = *t.lab;
   ParamSet params = lab_params(lab);
   for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
-  for (const auto& [k, v] : t.sets) params.set_from_string(k, v);
+  for (const auto& [k, v] : t.entry.sets) params.set_from_string(k, v);
   if (map_size > 0) params.set_from_string("shadow.map_size", std::to_string(map_size));
   params.set("view.debug_quad", 0.0);
-  if (!renderer.set_lab(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
+  if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
   FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
 
-  BenchPoint point{t.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
+  BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<double> cpu_ms;
   for (int frame = -1; frame < frames; ++frame) {  // frame -1 warms up (shader variants, allocations)
@@ -147,11 +146,11 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
 // wall time of the whole render() call (every pass is finished inside it), so the skipping's own
 // bookkeeping counts too.
 nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int frames) {
-  const Lab& lab = *find_lab(4);  // VSM with a blur: the most a skipped shadow update saves
+  const Lab& lab = blurred_moments_lab();
   ParamSet params = lab_params(lab);
   params.set_from_string("vsm.blur_radius", "4");
   params.set("view.debug_quad", 0.0);
-  renderer.set_lab(lab.hooks(Impl::Solution));
+  renderer.set_features(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
   FrameRequest request = bench_request(scene.bounds());
   auto run = [&](bool force) {
@@ -184,8 +183,8 @@ nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int fram
 // offscreen building and drawing it (3 layout frames + 1 draw + a read-back per call, as `render --panel`
 // does) against the same call with no window in it.
 nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int frames) {
-  const Lab& lab = *find_lab(4);
-  renderer.set_lab(lab.hooks(Impl::Solution));
+  const Lab& lab = blurred_moments_lab();
+  renderer.set_features(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
   FrameRequest request = bench_request(scene.bounds());
   auto pass_median = [&](ParamSet params, const char* name, long* present) {
@@ -300,7 +299,7 @@ nlohmann::json oracle_cost_json(const OracleCost& cost) {
 // The oracle's cost on the default scene's frame as the benchmark renders it (kWidth x kHeight), lit by
 // the default light and by a spot-like positional light at (-4, 9, 3) with 2048 texels over 1.2 rad.
 OracleCost measure_oracle(Renderer& renderer, const Scene& scene, int repeats) {
-  renderer.set_lab({});
+  renderer.set_features({});
   renderer.set_scene(scene);
   ParamSet params(renderer_param_specs());
   params.set("view.debug_quad", 0.0);
@@ -335,7 +334,7 @@ int run_bench(const BenchOptions& options) {
     const int frames = options.quick ? 3 : 7;
     const auto techs = techniques(options.quick);
     std::size_t per_scene = 0;
-    for (const auto& t : techs) per_scene += t.uses_map ? sizes.size() : 1;
+    for (const auto& t : techs) per_scene += t.entry.uses_map ? sizes.size() : 1;
     const std::size_t total = bench_scenes.size() * per_scene;
     std::vector<BenchPoint> points;
     nlohmann::json skipping, overlays;
@@ -350,9 +349,9 @@ int run_bench(const BenchOptions& options) {
         renderer.set_scene(s.scene);
         const Oracle oracle(s.scene);
         for (const auto& t : techs) {
-          for (int size : t.uses_map ? sizes : std::vector<int>{0}) {
+          for (int size : t.entry.uses_map ? sizes : std::vector<int>{0}) {
             ++done;
-            std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.name.c_str(), size,
+            std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.entry.name.c_str(), size,
                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
             points.push_back(measure(renderer, oracle, t, s, size, frames));
           }
@@ -363,10 +362,10 @@ int run_bench(const BenchOptions& options) {
       overlays = measure_overlays(renderer, bench_scenes.front().scene, options.quick ? 5 : 15);
       // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
       std::fprintf(stderr, "blur methods...\n");
-      const Lab& vsm = *find_lab(4);
+      const Lab& vsm = blurred_moments_lab();
       ParamSet blur_params = lab_params(vsm);
       blur_params.set_from_string("shadow.map_size", "1024");
-      renderer.set_lab(vsm.hooks(Impl::Solution));
+      renderer.set_features(vsm.hooks(Impl::Solution));
       renderer.set_scene(bench_scenes.front().scene);
       const FrameRequest request = bench_request(bench_scenes.front().scene.bounds());
       renderer.render(blur_params, request);

@@ -102,12 +102,12 @@ namespace {
 
 struct TechniqueCase {
   const char* name;
-  LabHooks features;
+  Features features;
   std::vector<const char*> assignments;
 };
 
 std::vector<TechniqueCase> technique_cases() {
-  LabHooks pcf, spot, point, moments, volumes;
+  Features pcf, spot, point, moments, volumes;
   pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
   spot.light = LightType::Spot;
   point.light = LightType::Point;
@@ -153,7 +153,7 @@ std::vector<TechniquePasses> measure_technique_passes(Renderer& renderer, int ma
     ParamSet params = every_parameter();
     params.set_from_string("shadow.map_size", std::to_string(map_size));
     for (const char* a : c.assignments) params.apply_assignment(a);
-    if (!renderer.set_lab(c.features)) throw std::runtime_error(renderer.shader_error());
+    if (!renderer.set_features(c.features)) throw std::runtime_error(renderer.shader_error());
     renderer.render(params, request);  // warm-up: shaders compile during the first frame
     std::map<std::string, std::vector<double>> ms;
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {

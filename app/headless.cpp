@@ -110,7 +110,7 @@ int run_render(const RenderOptions& options) {
       std::optional<CheckResult> check;
       if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene);
       Renderer renderer;
-      if (!renderer.set_lab(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
+      if (!renderer.set_features(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
       FrameRequest request;
       request.camera = OrbitCamera::framing(scene.bounds());

@@ -37,7 +37,7 @@ void draw_nav(PanelModel& m, PanelActions& a) {
   ImGui::SameLine();
   if (ImGui::ArrowButton("##next", ImGuiDir_Right)) a.open_lab = neighbour_lab(*m.lab, +1);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Next lab (N)");
-  ImGui::TextDisabled("keys: 0-9 lab, N/P next/previous, S split, M magnifier, F11 fullscreen, F12 screenshot");
+  ImGui::TextDisabled("keys: 0-9 lab (two digits: 10-99), N/P next/previous, S split, M magnifier, F11 fullscreen, F12 screenshot");
 }
 
 void draw_task(PanelModel& m, PanelActions& a) {

@@ -62,7 +62,7 @@ void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampl
   glActiveTexture(GL_TEXTURE0);
 }
 
-std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep) {
+std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sweep) {
   constexpr int kSteps = 600;
   constexpr double kNdotL[] = {1.0, 0.5};
   std::vector<double> offsets;
@@ -150,7 +150,7 @@ void set_uniform(GLuint program, const char* name, const glm::vec3& value) {
   glUniform3f(glGetUniformLocation(program, name), value.x, value.y, value.z);
 }
 
-std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
+std::vector<std::vector<float>> run_probe(const Features& hooks, const ProbeRequest& request) {
   const std::size_t cases = request.in0.size();
   const std::size_t passes = std::max<std::size_t>(request.passes.size(), 1);
   if (cases == 0) return std::vector<std::vector<float>>(passes);

@@ -37,7 +37,7 @@ Renderer::Renderer()
       views_(std::make_unique<DebugViews>()),
       timer_(std::make_unique<PassTimer>()),
       empty_vao_(GlVertexArray::create()) {
-  if (!set_lab({})) throw std::runtime_error("cannot build the renderer's shaders:\n" + shader_error());
+  if (!set_features({})) throw std::runtime_error("cannot build the renderer's shaders:\n" + shader_error());
 }
 
 Renderer::~Renderer() = default;
@@ -50,19 +50,19 @@ void Renderer::set_scene(const Scene& scene) {
   views_->set_scene();
 }
 
-bool Renderer::set_lab(const LabHooks& hooks) {
-  const LightType light = hooks.light ? *hooks.light : programs_light_;
-  const bool ok = build_programs(hooks, light);
+bool Renderer::set_features(const Features& features) {
+  const LightType light = features.light ? *features.light : programs_light_;
+  const bool ok = build_programs(features, light);
   shadow_inputs_.reset();
   stats_.moments_negative_variance = -1.0;
   return ok;
 }
 
-bool Renderer::build_programs(const LabHooks& hooks, LightType light) {
-  const ShadowPassEntry& entry = shadow_pass_entry(hooks.technique, light);
+bool Renderer::build_programs(const Features& features, LightType light) {
+  const ShadowPassEntry& entry = shadow_pass_entry(features.technique, light);
   IncludeMap includes;
   for (const auto& [name, file] : entry.default_includes(light)) includes[name] = file;
-  for (const auto& [name, file] : hooks.includes) includes[name] = file;
+  for (const auto& [name, file] : features.includes) includes[name] = file;
   // The same technique keeps its pass (and targets); another gets a new one, kept only if it builds.
   std::unique_ptr<ShadowPass> fresh;
   if (shadow_entry_ != &entry) {
@@ -71,16 +71,16 @@ bool Renderer::build_programs(const LabHooks& hooks, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, hooks.include_rules, light, variants);
-  ok = pass.set_includes(includes, hooks.include_rules) && ok;
+  bool ok = lit_->build(includes, features.include_rules, light, variants);
+  ok = pass.set_includes(includes, features.include_rules) && ok;
   if (!ok) return false;
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
   }
   lit_->keep_only(variants);
-  views_->set_includes(includes, hooks.include_rules);
-  hooks_ = hooks;
+  views_->set_includes(includes, features.include_rules);
+  features_ = features;
   programs_light_ = light;
   return true;
 }
@@ -124,8 +124,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
 
   // 1. The light: its type, direction or position from the sliders, its view and projection from the
   // features' fit (directional), the spot's cone or the point light's six faces.
-  light_.update(params, scene_.bounds(), hooks_.light, hooks_.light_fit);
-  if (light_.type != programs_light_) build_programs(hooks_, light_.type);  // on failure the error shows
+  light_.update(params, scene_.bounds(), features_.light, features_.light_fit);
+  if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape shape = shadow.shape();
   if (shadow.ensure_targets(params)) ++targets_generation_;
@@ -157,7 +157,7 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
   camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(request.camera.fov_y_deg), aspect,
                                                                      request.camera.near_plane)
                                           : request.camera.projection(aspect);
-  const int cull = hooks_.shadow_cull_override ? hooks_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
+  const int cull = features_.shadow_cull_override ? features_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
   return {scene_,        *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
           camera_view_, camera_projection_, infinite_far_plane, request.gbuffer};
 }

@@ -1,7 +1,7 @@
 // The one renderer, shared by the window and headless runs. A frame is, in order:
 //   scene -> light -> shadow pass(es) -> lit pass -> debug views
 // Features switch shader includes, the light's fit, the light type and the shadow technique on
-// (LabHooks); they never fork this. The shadow technique is a pass (renderer/shadow_pass.h) chosen once
+// (Features); they never fork this. The shadow technique is a pass (renderer/shadow_pass.h) chosen once
 // per feature set and light type (renderer/shadow_passes.cpp): the depth map (renderer/depth_map_pass.h),
 // a point light's cube of distances (renderer/cube_shadow_pass.h), the moments with their blur
 // (renderer/moments_pass.h), or stencil shadow volumes with no map at all
@@ -41,8 +41,8 @@ struct MomentsTargetInfo;
 struct VolumeMeshReport;
 
 // The features a frame uses beyond the parameters: shader includes, a light fit, the shadow technique,
-// a fixed light type. (The name is historical: whatever sets these, the renderer sees only features.)
-struct LabHooks {
+// a fixed light type. Whoever sets them (a lab, a benchmark, a test), the renderer sees only these.
+struct Features {
   // Virtual include name -> file, e.g. "lab/bias.glsl" -> an exercise's file. Names not given fall back
   // to the shadow technique's defaults in shaders/ (see Renderer::default_includes()).
   std::map<std::string, std::string> includes;
@@ -80,7 +80,7 @@ class Renderer {
   const Scene& scene() const { return scene_; }
   // Switches to these features: rebuilds the programs with their includes (and the shadow pass, when
   // the technique or light type changes); returns false and keeps the old features on error.
-  bool set_lab(const LabHooks& hooks);
+  bool set_features(const Features& features);
   // Recompiles programs whose files changed on disk (live reload). Returns true when one was swapped.
   bool poll_shader_files();
   // The last shader error, "file:line: message" with the line quoted; empty when all programs built.
@@ -140,7 +140,7 @@ class Renderer {
 
  private:
   struct ShadowMapInputs;
-  bool build_programs(const LabHooks& hooks, LightType light);
+  bool build_programs(const Features& features, LightType light);
   PassContext frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane);
   // Draws the shadow map unless everything it was last drawn from is unchanged.
   void update_shadow_map(PassContext& ctx);
@@ -151,7 +151,7 @@ class Renderer {
   Scene scene_;
   std::unique_ptr<GpuScene> gpu_scene_;
   long scene_generation_ = 0;  // bumps with every set_scene
-  LabHooks hooks_;
+  Features features_;
   LightType programs_light_ = LightType::Directional;  // the light type the programs were built for
   const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique shadow_ is
   std::unique_ptr<ShadowPass> shadow_;

@@ -56,8 +56,8 @@ class BlurTest : public GlTest {
     for (const auto& spec : vsm_param_specs()) params.declare(spec);
     params.apply_assignment("view.debug_quad=false");
   }
-  static LabHooks moments_hooks() {
-    LabHooks hooks;
+  static Features moments_hooks() {
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     return hooks;
   }
@@ -89,7 +89,7 @@ TEST_F(BlurTest, MethodIsDeclaredOnceAndInvalidatesTheShadowMap) {
 TEST_F(BlurTest, AllMethodsMatchTheTaughtBlurAndTheCpuReference) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.apply_assignment("shadow.map_size=512");
   for (const char* format : {"RG32F", "RG16F"}) {
     params.set_from_string("vsm.format", format);
@@ -189,7 +189,7 @@ TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
 TEST_F(BlurTest, RadiusZeroRunsNoBlurPassWhateverTheMethod) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.set("vsm.blur_radius", 0);
   for (const char* method : kMethods) {
     params.set_from_string("vsm.blur_method", method);
@@ -207,7 +207,7 @@ TEST_F(BlurTest, PassesAndCountersPerMethod) {
   auto renderer = std::make_unique<Renderer>();
   Renderer& r = *renderer;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.set("vsm.blur_radius", 3);
   const std::map<std::string, std::vector<std::string>> expected = {
       {"separable", {"blur_x", "blur_y"}}, {"fast", {"blur_x", "blur_y"}}, {"brute2d", {"blur_2d"}}};
@@ -233,7 +233,7 @@ TEST_F(BlurTest, PassesAndCountersPerMethod) {
 TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.apply_assignment("shadow.map_size=256");
   const std::vector<BlurTiming> rows = measure_blur_methods(r, params, {0, 1, 4}, 1);
   ASSERT_EQ(rows.size(), 6u) << "radius 0 is skipped; three methods per radius";

@@ -312,9 +312,9 @@ TEST_F(RendererTest, ShadowMapImageIsTheMapTopRowFirst) {
   for (ShadowTechnique technique : {ShadowTechnique::Depth, ShadowTechnique::Moments}) {
     Renderer r;
     r.set_scene(scene);
-    LabHooks hooks;
+    Features hooks;
     hooks.technique = technique;
-    ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+    ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
     params.apply_assignment("shadow.map_size=256");
     params.apply_assignment("light.elevation=30");  // the ground's far corners stay empty in the map
     r.render(params, request(false));

@@ -250,7 +250,7 @@ TEST_F(StressGlTest, EmptySceneAndSinglePointRenderWithoutNaN) {
     for (int lab : {1, 4}) {
       Renderer r;
       r.set_scene(*s);
-      ASSERT_TRUE(r.set_lab(find_lab(lab)->hooks(Impl::Solution)));
+      ASSERT_TRUE(r.set_features(find_lab(lab)->hooks(Impl::Solution)));
       FrameRequest req;
       req.camera = OrbitCamera::framing(s->bounds());
       req.width = 64;

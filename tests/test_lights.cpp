@@ -53,9 +53,9 @@ class LightsTest : public GlTest {
 TEST_F(LightsTest, ZFailStaysRightInsideAVolumeWhereZPassFails) {
   Renderer r;
   r.set_scene(scene);
-  LabHooks hooks;
+  Features hooks;
   hooks.technique = ShadowTechnique::ShadowVolumes;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   const Oracle oracle(scene);
   // The eye 0.3 above the ground in the big box's shadow (light at azimuth 35, elevation 50).
   const glm::vec3 eye(-3.67f, 0.3f, -0.68f);
@@ -84,9 +84,9 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
   s.meshes.push_back(open_box);
   Renderer r;
   r.set_scene(s);
-  LabHooks hooks;
+  Features hooks;
   hooks.technique = ShadowTechnique::ShadowVolumes;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   r.render(lab_set({}), request(OrbitCamera::framing(s.bounds())));
   bool saw_ground = false, saw_open_box = false;
   for (const auto& m : r.volume_report()) {
@@ -108,9 +108,9 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
 TEST_F(LightsTest, CubeMapSixPassesAndOnePassStoreTheSameDistances) {
   Renderer r;
   r.set_scene(scene);
-  LabHooks hooks;
+  Features hooks;
   hooks.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   const OrbitCamera camera = OrbitCamera::framing(scene.bounds(), 30.0f, 60.0f);
   r.render(lab_set({"point.single_pass=false"}), request(camera));
   EXPECT_EQ(r.stats().cube_faces, 6);
@@ -142,19 +142,19 @@ TEST_F(LightsTest, TargetsExistOnlyWhileALabUsesThem) {
   const int textures_depth_lab = live_gl_objects(GlKind::Texture) - textures_before;
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 0) << "no comparison sampler without hardware PCF";
   // Hardware PCF: one sampler object, no extra texture.
-  LabHooks pcf;
+  Features pcf;
   pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
-  ASSERT_TRUE(r.set_lab(pcf)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(pcf)) << r.shader_error();
   r.render(lab_set({"pcf.hardware=true", "pcf.kernel=3"}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 1);
   // A point light: two cube maps (distance, depth) replace the 2D depth map.
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(point)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(point)) << r.shader_error();
   r.render(lab_set({}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab + 1);
   // Back to a directional light: the cube maps are freed.
-  ASSERT_TRUE(r.set_lab({})) << r.shader_error();
+  ASSERT_TRUE(r.set_features({})) << r.shader_error();
   r.render(lab_set({}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab);
   EXPECT_THROW(r.read_cube_face(0, nullptr), std::logic_error);
@@ -193,7 +193,7 @@ TEST_F(LightsTest, EveryNewLabBuildsItsExerciseAndSolution) {
     const Lab* lab = find_lab(number);
     ASSERT_NE(lab, nullptr) << number;
     for (Impl impl : {Impl::Exercise, Impl::Solution}) {
-      EXPECT_TRUE(r.set_lab(lab->hooks(impl))) << "lab " << number << " " << impl_name(impl) << ": " << r.shader_error();
+      EXPECT_TRUE(r.set_features(lab->hooks(impl))) << "lab " << number << " " << impl_name(impl) << ": " << r.shader_error();
       r.render(lab_params(*lab), request(OrbitCamera::framing(scene.bounds()), 64, 36));
       EXPECT_TRUE(r.shader_error().empty()) << r.shader_error();
     }

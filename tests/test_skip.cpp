@@ -51,10 +51,10 @@ class SkipTest : public GlTest {
                                      ShadowTechnique technique = ShadowTechnique::Depth) {
     auto r = std::make_unique<Renderer>();
     r->set_scene(scene);
-    LabHooks hooks;
+    Features hooks;
     hooks.light = light;
     hooks.technique = technique;
-    EXPECT_TRUE(r->set_lab(hooks)) << r->shader_error();
+    EXPECT_TRUE(r->set_features(hooks)) << r->shader_error();
     return r;
   }
   Scene scene = spread_scene();
@@ -161,14 +161,14 @@ TEST_F(SkipTest, LightVolumeWireframeDrawsOnlyWhenShown) {
   EXPECT_GT(changed, 0.003);
   EXPECT_LT(changed, 0.1);
   // A spot light's frustum too; a point light has nothing to draw (no pass).
-  LabHooks spot;
+  Features spot;
   spot.light = LightType::Spot;
-  ASSERT_TRUE(r->set_lab(spot));
+  ASSERT_TRUE(r->set_features(spot));
   r->render(params({"view.light_volume=true", "light.position_y=10", "light.cone_deg=20"}), req);
   EXPECT_TRUE(has_pass(r->stats(), "light_volume_view"));
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r->set_lab(point));
+  ASSERT_TRUE(r->set_features(point));
   r->render(params({"view.light_volume=true", "light.position_y=4"}), req);
   EXPECT_FALSE(has_pass(r->stats(), "light_volume_view"));
 }
@@ -191,9 +191,9 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
 
   // Moments: "all" draws E[z], E[z^2] and the variance side by side; one channel draws one quad, and the
   // three channels differ.
-  LabHooks vsm;
+  Features vsm;
   vsm.technique = ShadowTechnique::Moments;
-  ASSERT_TRUE(r->set_lab(vsm));
+  ASSERT_TRUE(r->set_features(vsm));
   r->render(params({"view.debug_quad=false"}), req);
   const auto vsm_none = r->read_color();
   auto vsm_covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, vsm_none, w, 0, 0, w, h); };
@@ -213,9 +213,9 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
   EXPECT_GT(differing(channel[0], channel[1], w, x0, y0, x0 + side, y0 + side), 0.2) << "E[z^2] looks like E[z]";
 
   // A point light's six cube faces, in the window as in the PNG.
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r->set_lab(point));
+  ASSERT_TRUE(r->set_features(point));
   r->render(params({"view.debug_quad=false", "light.position_y=4"}), req);
   const auto point_none = r->read_color();
   r->render(params({"view.debug_quad=true", "light.position_y=4"}), req);
