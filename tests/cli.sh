@@ -166,7 +166,7 @@ shot = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("lab10", "lab0", "keys10"
 title = (20, 20, 430, 60)  # the panel's lab title
 d = {"lab10/lab0": differing(shot["lab10"], shot["lab0"], *title), "lab10/keys10": differing(shot["lab10"], shot["keys10"], *title)}
 print(d)
-assert d["lab10/lab0"] > 0.01, "lab 10's title looks like lab 0's"
+assert d["lab10/lab0"] > 0.005, "lab 10's title looks like lab 0's"
 assert d["lab10/keys10"] < 0.001, "keys 1, 0 did not open lab 10"
 PY
     ;;

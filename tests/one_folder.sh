@@ -19,7 +19,11 @@ copy="$work/src"
 rm -rf "$copy"
 mkdir -p "$copy"
 # The working tree as it is: tracked files and new ones git does not ignore.
-(cd "$src" && git ls-files -co --exclude-standard -z | tar --null --ignore-failed-read -T - -cf -) | tar -xf - -C "$copy"
+if git -C "$src" rev-parse --show-toplevel >/dev/null 2>&1; then
+  (cd "$src" && git ls-files -co --exclude-standard -z | tar --null --ignore-failed-read -T - -cf -) | tar -xf - -C "$copy"
+else  # not a git checkout: everything but the build folder
+  tar -C "$src" --exclude=./build -cf - . | tar -xf - -C "$copy"
+fi
 cp -r "$copy/labs/00_basic_shadow_map" "$copy/labs/10_throwaway"
 sed -i 's/lab.title = "Basic shadow map";/lab.title = "Throwaway copy";/' "$copy/labs/10_throwaway/lab.cpp"
 grep -q '"Throwaway copy"' "$copy/labs/10_throwaway/lab.cpp" || { echo "one_folder: lab 0's title line moved" >&2; exit 1; }
@@ -29,8 +33,9 @@ if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR="$copy" CCACHE_NOHASHDIR=1
 fi
-cmake -S "$copy" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_TESTS=OFF \
+# The build folder inside the copy, as scripts/build has it: the same relative paths, the same ccache keys.
+cmake -S "$copy" -B "$copy/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_TESTS=OFF \
   -DSHADOWLAB_DATA_DIR="$src" "${launcher[@]}" >/dev/null
-cmake --build "$work/build" --target shadowlab -j "$(nproc)" >"$work/build.log" 2>&1 \
+cmake --build "$copy/build" --target shadowlab -j "$(nproc)" >"$work/build.log" 2>&1 \
   || { tail -30 "$work/build.log" >&2; echo "one_folder: the copy with labs/10_throwaway does not build" >&2; exit 1; }
-SHADOWLAB_DATA_DIR="$copy" bash "$copy/tests/cli.sh" "$work/build/app/shadowlab" "$src/../shared" one_folder_lab
+SHADOWLAB_DATA_DIR="$copy" bash "$copy/tests/cli.sh" "$copy/build/app/shadowlab" "$src/../shared" one_folder_lab
