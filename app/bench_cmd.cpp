@@ -220,7 +220,7 @@ nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int fram
     for (const auto& p : renderer.render(hidden, request).passes)
       if (p.name == "lit") lit_ms.push_back(p.gpu_ms);
 
-  const std::string text = load_lab_text(lab);
+  const LabText text = load_lab_text(lab);
   PanelModel model;
   model.lab = &lab;
   model.params = &shown;
