@@ -93,6 +93,7 @@ using Block = MarkdownDocument::Block;
 
 // md4c's callbacks build the list of blocks: lists and quotes become indentation of their blocks.
 struct Builder {
+  explicit Builder(std::vector<std::unique_ptr<Block>>& out) : blocks(out) {}
   std::vector<std::unique_ptr<Block>>& blocks;
   struct List {
     bool ordered;
@@ -362,7 +363,7 @@ void draw_table(const Block& b, const InlineContext& body, const UiFonts* fonts,
 }  // namespace
 
 MarkdownDocument::MarkdownDocument(const std::string& markdown) {
-  Builder builder{blocks_};
+  Builder builder(blocks_);
   MD_PARSER parser{};
   parser.abi_version = 0;
   parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_PERMISSIVEAUTOLINKS | MD_FLAG_NOHTMLSPANS;

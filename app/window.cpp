@@ -33,6 +33,7 @@
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
+#include "renderer/platform.h"
 #include "renderer/renderer.h"
 #include "renderer/shader.h"
 #include "renderer/untrusted.h"
@@ -350,8 +351,8 @@ void save_screenshot(App& app, int width, int height) {
   std::string path = app.screenshot_path;
   if (path.empty()) {
     char name[64];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    const std::tm now = platform::local_time(std::time(nullptr));
+    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", &now);
     path = name;
   }
   try {
@@ -422,6 +423,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     }
     if (!app.panel_hidden) draw_panel(app);
     else draw_hidden_hint();
+    if (script.take_check_request()) app.check_requested = true;
     if (app.check_requested) {
       std::string error;
       if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), &error)) app.status = error;

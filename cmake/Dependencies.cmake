@@ -128,16 +128,18 @@ else()
 endif()
 
 # --- md4c ------------------------------------------------------------------------------------------------
-# Exports md4c::md4c (Debian's libmd4c-dev, vcpkg, Homebrew); pkg-config as the fallback.
+# pkg-config first here: Debian 12's md4cConfig.cmake (libmd4c-dev) stops configuring with a fatal error
+# unless libmd4c-html0-dev is installed too (it checks for libmd4c-html's file). Then the CMake package
+# md4c::md4c (vcpkg, Homebrew, or Debian with both packages).
 shadowlab_interface(md4c)
-find_package(md4c CONFIG QUIET)
-if(TARGET md4c::md4c)
-  target_link_libraries(shadowlab_dep_md4c INTERFACE md4c::md4c)
-elseif(PkgConfig_FOUND)
-  pkg_check_modules(MD4C REQUIRED IMPORTED_TARGET md4c)
+if(PkgConfig_FOUND)
+  pkg_check_modules(MD4C QUIET IMPORTED_TARGET md4c)
+endif()
+if(TARGET PkgConfig::MD4C)
   target_link_libraries(shadowlab_dep_md4c INTERFACE PkgConfig::MD4C)
 else()
-  message(FATAL_ERROR "md4c not found: install vcpkg's md4c, Homebrew's md4c or Debian's libmd4c-dev")
+  find_package(md4c CONFIG REQUIRED)
+  target_link_libraries(shadowlab_dep_md4c INTERFACE md4c::md4c)
 endif()
 
 # --- EGL (headless GL without a display; Linux) ----------------------------------------------------------
