@@ -291,8 +291,8 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       const ImVec2 at = ImGui::GetCursorScreenPos();
       ImDrawList* draw = ImGui::GetWindowDrawList();
       if (run.style & kCode) {
-        // The background under the text, not its trailing space.
-        const std::string_view word = token.substr(0, token.find_last_not_of(' ') + 1);
+        // One background for the whole span: under its inner spaces too, not after its last word.
+        const std::string_view word = pos < t.size() ? token : token.substr(0, token.find_last_not_of(' ') + 1);
         const float w = ImGui::CalcTextSize(word.data(), word.data() + word.size()).x;
         draw->AddRectFilled(ImVec2(at.x - 2.0f, at.y), ImVec2(at.x + w + 2.0f, at.y + size.y), markdown_colors::kCodeBackground,
                             3.0f);

@@ -132,7 +132,7 @@ void draw_check(PanelModel& m, PanelActions& a) {
     ImGui::TextDisabled("The previous result, until this one is ready:");
   }
   if (!m.check) {
-    ImGui::TextDisabled("Not checked yet: press Check to grade against the ray-cast truth.");
+    hint_wrapped("Not checked yet: press Check to grade against the ray-cast truth.");
     return;
   }
   const CheckResult& r = *m.check;
@@ -225,7 +225,8 @@ PanelActions draw_lab_panel(PanelModel& m) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(10, 10), cond);
   ImGui::SetNextWindowSize(ImVec2(std::min(430.0f * m.ui_scale, std::max(display.x * 0.6f, 300.0f)),
-                                  std::min(display.y - 20.0f, 840.0f * m.ui_scale)),
+                                  // Pictures (not interactive) use the whole height.
+                                  m.interactive ? std::min(display.y - 20.0f, 840.0f * m.ui_scale) : display.y - 20.0f),
                            cond);
   ImGui::Begin("shadowlab");
   draw_nav(m, a);

@@ -463,7 +463,7 @@ assert stats["bar before"] == 0 and stats["bar done"] == 0, "a progress bar outs
 assert stats["bar running"] > 20 and stats["bar running2"] > 20, "no progress bar while the check runs"
 # Two frames while lab 5's check (about 4 s) runs take far less than the check: the loop is not blocked.
 assert stats["seconds running->running2"] < 2.0, "frames stalled during the check"
-assert stats["red done"] > stats["red before"] + 100, "the result (the stock exercise's FAILs) is not shown"
+assert stats["red done"] > stats["red before"] + 20, "the result (the stock exercise's FAILs) is not shown"
 PY
     ;;
   window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size
@@ -503,21 +503,21 @@ assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
 PY
     ;;
   window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
-  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words
+  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words (as tall as the window)
     png_reader
-    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 600 >/dev/null || fail "render failed"
-    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 600 >/dev/null || fail "render --panel failed"
+    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 900 >/dev/null || fail "render failed"
+    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 900 >/dev/null || fail "render --panel failed"
     python3 - "$tmp" <<'PY' || fail "panel not in final.png"
 import sys
 sys.path.insert(0, sys.argv[1])
 from png_read import load, differing
 w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
 w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
-assert (w, h) == (w2, h2) == (960, 600)
-inside = differing(plain, panel, 20, 40, 420, 560)
-outside = differing(plain, panel, 460, 60, 940, 560)
+assert (w, h) == (w2, h2) == (960, 900)
+inside = differing(plain, panel, 20, 40, 420, 860)
+outside = differing(plain, panel, 460, 60, 940, 860)
 # The failed check's FAIL lines are red text.
-red = sum(1 for y in range(20, 580) for x in range(20, 430)
+red = sum(1 for y in range(20, 880) for x in range(20, 430)
           if panel[y][4 * x] > 200 and panel[y][4 * x + 1] < 150 and panel[y][4 * x + 2] < 140)
 print("panel region differs:", inside, "view region:", outside, "red pixels:", red)
 assert inside > 0.3 and outside < 0.02 and red > 100
