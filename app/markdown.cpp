@@ -279,13 +279,28 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       while (end != std::string::npos && end == pos) end = t.find(' ', end + 1);
       end = end == std::string::npos ? t.size() : t.find_first_not_of(' ', end);
       if (end == std::string::npos) end = t.size();
-      const std::string_view token(t.data() + pos, end - pos);
+      std::string_view token(t.data() + pos, end - pos);
       pos = end;
       if (line_start && token.find_first_not_of(' ') == std::string_view::npos) continue;  // no space at a line's start
-      const ImVec2 size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
+      ImVec2 size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
       if (!line_start) {
         ImGui::SameLine(0.0f, 0.0f);
         if (ImGui::GetCursorScreenPos().x + size.x > right) ImGui::NewLine();
+      }
+      // A word wider than a whole line (a narrow table column) is cut where the line ends; the rest
+      // starts the next line.
+      const float room = right - ImGui::GetCursorScreenPos().x;
+      if (size.x > room && room > 0.0f) {
+        std::size_t cut = token.size();
+        while (cut > 1 && ImGui::CalcTextSize(token.data(), token.data() + cut).x > room) {
+          --cut;
+          while (cut > 1 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
+        }
+        if (cut < token.size()) {
+          pos -= token.size() - cut;
+          token = token.substr(0, cut);
+          size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
+        }
       }
       line_start = false;
       const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -471,7 +486,7 @@ std::vector<std::string> MarkdownDocument::outline() const {
   return out;
 }
 
-std::string markdown_section(const std::string& markdown, const std::vector<std::string>& headings) {
+std::pair<std::size_t, std::size_t> markdown_section_range(const std::string& markdown, const std::vector<std::string>& headings) {
   // A heading is a line starting with '#' outside fenced code; the section runs to the next heading of
   // the same or a higher level.
   std::size_t pos = 0;
@@ -485,16 +500,22 @@ std::string markdown_section(const std::string& markdown, const std::vector<std:
     if (line.rfind("```", 0) == 0 || line.rfind("~~~", 0) == 0) fenced = !fenced;
     if (!fenced && !line.empty() && line[0] == '#') {
       const int l = static_cast<int>(line.find_first_not_of('#'));
-      if (begin != std::string::npos && l > 0 && l <= level) return markdown.substr(begin, pos - begin);
+      if (begin != std::string::npos && l > 0 && l <= level) return {begin, pos};
       if (begin == std::string::npos &&
           std::any_of(headings.begin(), headings.end(), [&](const std::string& h) { return line.find(h) != std::string_view::npos; })) {
         level = l;
-        begin = eol + 1;
+        begin = std::min(eol + 1, markdown.size());
       }
     }
     pos = eol + 1;
   }
-  return begin == std::string::npos || begin > markdown.size() ? std::string() : markdown.substr(begin);
+  if (begin == std::string::npos) return {std::string::npos, std::string::npos};
+  return {begin, markdown.size()};
+}
+
+std::string markdown_section(const std::string& markdown, const std::vector<std::string>& headings) {
+  const auto [begin, end] = markdown_section_range(markdown, headings);
+  return begin == std::string::npos ? std::string() : markdown.substr(begin, end - begin);
 }
 
 }  // namespace shadowlab

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/ui_fonts.h"
@@ -44,5 +45,7 @@ constexpr unsigned kLink = 0xFFF5B466u;            // IM_COL32(102, 180, 245, 25
 // The section headed "Your task" / "Your part" of a lab text (without its heading), as Markdown; empty
 // when the text has none.
 std::string markdown_section(const std::string& markdown, const std::vector<std::string>& headings);
+// Where that section's body is in `markdown`: [first, second); both npos when there is none.
+std::pair<std::size_t, std::size_t> markdown_section_range(const std::string& markdown, const std::vector<std::string>& headings);
 
 }  // namespace shadowlab

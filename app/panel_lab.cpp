@@ -298,7 +298,11 @@ LabText make_lab_text(std::string markdown) {
   LabText t;
   t.task_markdown = task_section(markdown);
   t.task = MarkdownDocument(t.task_markdown);
-  t.document = MarkdownDocument(markdown);
+  // The lab text without the task's body, which the panel shows at its top.
+  const auto [begin, end] = markdown_section_range(markdown, {"Your task", "Your part"});
+  t.document = MarkdownDocument(t.task_markdown.empty() ? markdown
+                                                        : markdown.substr(0, begin) + "*At the top of the panel, under Your task.*\n\n" +
+                                                              markdown.substr(end));
   t.markdown = std::move(markdown);
   return t;
 }
