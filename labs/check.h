@@ -185,8 +185,8 @@ struct HeldOutRange {
   std::vector<std::string> map_sizes;
   std::vector<std::string> scenes;
 };
-// One case per range (so low and high lights are always both there), azimuth uniform, the rest picked
-// from the range's lists, all drawn from the seed.
+// One case per range (so low and high lights are always both there), azimuth within 75 degrees of the
+// lab's, the rest picked from the range's lists, all drawn from the seed.
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.

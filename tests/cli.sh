@@ -301,6 +301,28 @@ PY
     SHADOWLAB_DATA_DIR="$tmp/data" "$bin" check --lab 1 --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 3 ] || fail "a broken grader: exit $rc, expected 3 ($(cat "$tmp/out" "$tmp/err"))"
     ;;
+  check_not_measurable)  # a scene with nothing to grade (one degenerate triangle) fails as not measurable
+    python3 - "$tmp/degenerate.gltf" <<'PY'
+import base64, json, struct, sys
+points = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 2, 0, 0)  # three points on a line: no area
+gltf = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [2, 0, 0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(points)}],
+        "buffers": [{"byteLength": len(points),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(points).decode()}]}
+json.dump(gltf, open(sys.argv[1], "w"))
+PY
+    "$bin" check --lab 0,1,7 --impl solution --scene "$tmp/degenerate.gltf" --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "nothing to grade: exit $rc, expected 1 ($(cat "$tmp/out" "$tmp/err"))"
+    python3 -c "
+import json, sys
+for r in json.load(open(sys.argv[1]))['labs']:
+    failed = [c['metric'] for c in r['criteria'] if not c['passed']]
+    assert r['status'] == 'failed' and any(m.endswith('graded_pixels') for m in failed), (r['lab'], r['status'], failed)
+" "$tmp/check.json" || fail "a lab passed, or failed otherwise than as not measurable"
+    ;;
   check_bad_lab) expect_error "valid: all," "$bin" check --lab 99 ;;
   bad_choices)  # a bad value names the valid ones, in both commands
     expect_error "valid: 0, 1" "$bin" render --out "$tmp/out" --lab 42
