@@ -19,6 +19,19 @@ function(shadowlab_interface name)
   add_library(shadowlab::${name} ALIAS shadowlab_dep_${name})
 endfunction()
 
+# Links shadowlab::<name> to pkg-config's <module> when pkg-config finds it; <found_var> says whether.
+function(shadowlab_link_pkg name module found_var)
+  set(found FALSE)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(SHADOWLAB_PKG_${name} QUIET IMPORTED_TARGET ${module})
+    if(TARGET PkgConfig::SHADOWLAB_PKG_${name})
+      target_link_libraries(shadowlab_dep_${name} INTERFACE PkgConfig::SHADOWLAB_PKG_${name})
+      set(found TRUE)
+    endif()
+  endif()
+  set(${found_var} ${found} PARENT_SCOPE)
+endfunction()
+
 # A library that ships headers only needs its implementation compiled once: renderer/third_party.cpp
 # does it for the ones listed here (compile definitions SHADOWLAB_<NAME>_IMPLEMENTATION).
 set(SHADOWLAB_THIRD_PARTY_DEFS "")
@@ -52,11 +65,8 @@ endif()
 # --- stb_image_write -------------------------------------------------------------------------------------
 # Debian: pkg-config `stb`, a library holding the implementations. vcpkg: headers only (find_package(Stb)).
 shadowlab_interface(stb)
-if(PkgConfig_FOUND)
-  pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
-endif()
-if(TARGET PkgConfig::STB)
-  target_link_libraries(shadowlab_dep_stb INTERFACE PkgConfig::STB)
+shadowlab_link_pkg(stb stb _found)
+if(_found)
   set(SHADOWLAB_STB_FROM "pkg-config stb")
 else()
   find_package(Stb QUIET)
@@ -112,12 +122,8 @@ target_compile_definitions(shadowlab_dep_embree INTERFACE SHADOWLAB_EMBREE_MAJOR
 # pkg-config everywhere it is packaged (Debian, Homebrew, vcpkg's pkgconf); a plain header and library
 # search otherwise.
 shadowlab_interface(epoxy)
-if(PkgConfig_FOUND)
-  pkg_check_modules(EPOXY QUIET IMPORTED_TARGET epoxy)
-endif()
-if(TARGET PkgConfig::EPOXY)
-  target_link_libraries(shadowlab_dep_epoxy INTERFACE PkgConfig::EPOXY)
-else()
+shadowlab_link_pkg(epoxy epoxy _found)
+if(NOT _found)
   find_path(SHADOWLAB_EPOXY_INCLUDE_DIR epoxy/gl.h)
   find_library(SHADOWLAB_EPOXY_LIBRARY NAMES epoxy epoxy-0)
   if(NOT SHADOWLAB_EPOXY_INCLUDE_DIR OR NOT SHADOWLAB_EPOXY_LIBRARY)
@@ -132,12 +138,8 @@ endif()
 # unless libmd4c-html0-dev is installed too (it checks for libmd4c-html's file). Then the CMake package
 # md4c::md4c (vcpkg, Homebrew, or Debian with both packages).
 shadowlab_interface(md4c)
-if(PkgConfig_FOUND)
-  pkg_check_modules(MD4C QUIET IMPORTED_TARGET md4c)
-endif()
-if(TARGET PkgConfig::MD4C)
-  target_link_libraries(shadowlab_dep_md4c INTERFACE PkgConfig::MD4C)
-else()
+shadowlab_link_pkg(md4c md4c _found)
+if(NOT _found)
   find_package(md4c CONFIG REQUIRED)
   target_link_libraries(shadowlab_dep_md4c INTERFACE md4c::md4c)
 endif()

@@ -12,6 +12,7 @@
 
 #include "app/markdown.h"
 #include "app/ui_fonts.h"
+#include "tests/imgui_fixture.h"
 
 namespace shadowlab {
 namespace {
@@ -73,18 +74,14 @@ struct Drawn {
   std::vector<ImU32> has_colour;
 };
 
-class MarkdownDraw : public ::testing::Test {
+class MarkdownDraw : public BareImGuiTest {
  protected:
   void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1280, 1400);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
+    BareImGuiTest::SetUp();
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 1400);
     // Lines as plain shapes, not textured quads: every textured quad drawn is then a glyph.
     ImGui::GetStyle().AntiAliasedLinesUseTex = false;
   }
-  void TearDown() override { ImGui::DestroyContext(); }
 
   UiFonts fonts(float scale) {
     std::string warning;
