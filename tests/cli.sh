@@ -610,7 +610,8 @@ PY
       timeout 60 /usr/bin/time -f "%e %M" -o "$tmp/time" "$bin" render --out "$tmp/o" --width 64 --height 64 \
         --scene "$file" >"$tmp/out" 2>"$tmp/err" </dev/null
       rc=$?
-      [ "$rc" -eq 1 ] || fail "$name: exit $rc (1 expected): $(head -c 600 "$tmp/err")"
+      # Exit 2: a file named on the command line that is invalid is a usage error (app/exit_codes.h).
+      [ "$rc" -eq 2 ] || fail "$name: exit $rc (2 expected): $(head -c 600 "$tmp/err")"
       grep -qF -- "$mention" "$tmp/err" || fail "$name: stderr lacks '$mention': $(head -c 600 "$tmp/err")"
       grep -qF -- "$file" "$tmp/err" || fail "$name: the file is not named: $(head -c 600 "$tmp/err")"
       one_line
@@ -654,11 +655,11 @@ PY
   bench_fifo)  # issue 18: --bench given a FIFO waited forever (render --panel and the window)
     mkfifo "$tmp/bench.json"
     timeout 30 "$bin" render --panel --bench "$tmp/bench.json" --out "$tmp/o" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    [ "$rc" -eq 1 ] || fail "render --panel --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    [ "$rc" -eq 2 ] || fail "render --panel --bench FIFO: exit $rc (2, usage, expected): $(cat "$tmp/err")"
     grep -qF "bench.json: cannot open the file: is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
     command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
     timeout 60 xvfb-run -a "$bin" --bench "$tmp/bench.json" --frames 2 >"$tmp/out" 2>"$tmp/err"; rc=$?
-    [ "$rc" -eq 1 ] || fail "window --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    [ "$rc" -eq 2 ] || fail "window --bench FIFO: exit $rc (2, usage, expected): $(cat "$tmp/err")"
     grep -qF "is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
     ;;
   window_drop_hostile)  # issue 18: a dropped model with a huge or hostile error text: no abort, bounded panel text
