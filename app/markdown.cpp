@@ -285,7 +285,12 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       ImVec2 size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
       if (!line_start) {
         ImGui::SameLine(0.0f, 0.0f);
-        if (ImGui::GetCursorScreenPos().x + size.x > right) ImGui::NewLine();
+        if (ImGui::GetCursorScreenPos().x + size.x > right) {
+          ImGui::NewLine();
+          // The spaces a run starts with (" (the defaults)" after a bold word) do not indent the new line.
+          token.remove_prefix(std::min(token.find_first_not_of(' '), token.size()));
+          size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
+        }
       }
       // A word wider than a whole line (a narrow table column) is cut where the line ends; the rest
       // starts the next line.

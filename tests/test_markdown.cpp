@@ -240,6 +240,23 @@ TEST_F(MarkdownDraw, LongParagraphsWrapAtTheWindowsEdge) {
   EXPECT_GT(bottom - top, 5.0f * f.body->FontSize) << "several lines";
 }
 
+// A run that starts with a space (the text after bold or code) and wraps starts its new line flush with
+// the margin, not one space in.
+TEST_F(MarkdownDraw, WrappedLinesStartAtTheMargin) {
+  const UiFonts f = fonts(1.0f);
+  std::string text;
+  for (int i = 0; i < 40; ++i) text += "**b** `c` d ";
+  const Drawn d = draw(text, &f, 300.0f);
+  ASSERT_FALSE(d.glyphs[0].empty());
+  // The first glyph of each line: a glyph to the left of the one before it starts a line.
+  std::vector<float> starts = {d.glyphs[0][0].min.x};
+  for (std::size_t k = 1; k < d.glyphs[0].size(); ++k)
+    if (d.glyphs[0][k].min.x < d.glyphs[0][k - 1].min.x) starts.push_back(d.glyphs[0][k].min.x);
+  ASSERT_GE(starts.size(), 4u) << "several lines";
+  // 'b', 'c' and 'd' differ in their left bearing by about a pixel; a space is about 5.
+  for (std::size_t line = 1; line < starts.size(); ++line) EXPECT_NEAR(starts[line], starts[0], 2.0f) << "line " << line;
+}
+
 TEST_F(MarkdownDraw, LinksAreColouredAndUnderlined) {
   const UiFonts f = fonts(1.0f);
   const Drawn d = draw("see [the docs](https://example.org)\n", &f);
