@@ -257,11 +257,30 @@ ImFont* font_for(const InlineContext& c, unsigned style) {
   return c.base;
 }
 
+// The width of what the runs after `after` add to a word that ends run `after` with no space: "(" then
+// `code` then ")." wrap as one word, as no space parts them.
+float glued_width(const Runs& runs, std::size_t after, const InlineContext& c) {
+  float width = 0.0f;
+  for (std::size_t r = after + 1; r < runs.size(); ++r) {
+    const std::string& t = runs[r].text;
+    if (t == "\n") break;
+    const std::size_t space = t.find(' ');
+    ImFont* font = font_for(c, runs[r].style);
+    if (font) ImGui::PushFont(font);
+    width += ImGui::CalcTextSize(t.data(), t.data() + (space == std::string::npos ? t.size() : space)).x;
+    if (font) ImGui::PopFont();
+    if (space != std::string::npos) break;
+  }
+  return width;
+}
+
 void draw_runs(const Runs& runs, const InlineContext& c) {
   const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+  const float line_width = ImGui::GetContentRegionAvail().x;
   bool line_start = true;
   if (c.base) ImGui::PushFont(c.base);
-  for (const Run& run : runs) {
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const Run& run = runs[r];
     if (run.text == "\n") {
       if (line_start) ImGui::NewLine();
       line_start = true;
@@ -285,7 +304,13 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       ImVec2 size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
       if (!line_start) {
         ImGui::SameLine(0.0f, 0.0f);
-        if (ImGui::GetCursorScreenPos().x + size.x > right) {
+        // The last word of a run with no space after it wraps together with what follows it.
+        float glue = pos == t.size() && token.back() != ' ' ? glued_width(runs, r, c) : 0.0f;
+        if (size.x + glue > line_width) glue = 0.0f;  // longer than a line anyway: cut where it ends
+        // Trailing spaces may pass the edge: only the word has to fit.
+        const std::string_view word = token.substr(0, token.find_last_not_of(' ') + 1);
+        const float word_width = ImGui::CalcTextSize(word.data(), word.data() + word.size()).x;
+        if (ImGui::GetCursorScreenPos().x + word_width + glue > right) {
           ImGui::NewLine();
           // The spaces a run starts with (" (the defaults)" after a bold word) do not indent the new line.
           token.remove_prefix(std::min(token.find_first_not_of(' '), token.size()));
@@ -295,7 +320,8 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       // A word wider than a whole line (a narrow table column) is cut where the line ends; the rest
       // starts the next line.
       const float room = right - ImGui::GetCursorScreenPos().x;
-      if (size.x > room && room > 0.0f) {
+      const std::string_view bare = token.substr(0, token.find_last_not_of(' ') + 1);  // without trailing spaces
+      if (ImGui::CalcTextSize(bare.data(), bare.data() + bare.size()).x > room && room > 0.0f) {
         std::size_t cut = token.size();
         while (cut > 1 && ImGui::CalcTextSize(token.data(), token.data() + cut).x > room) {
           --cut;
@@ -360,10 +386,78 @@ void draw_code(const Block& b, const UiFonts* fonts, int id) {
   if (fonts && fonts->mono) ImGui::PopFont();
 }
 
+// A cell's widths unwrapped: its whole text on one line, and its longest word (what no wrap can split).
+struct CellWidths {
+  float line = 0.0f, word = 0.0f;
+};
+
+CellWidths measure_cell(const Runs& runs, const InlineContext& c) {
+  CellWidths w;
+  float word = 0.0f;  // the word being measured, which may span runs ("(" `code` ")")
+  for (const Run& run : runs) {
+    if (run.text == "\n") {
+      word = 0.0f;
+      continue;
+    }
+    ImFont* font = font_for(c, run.style);
+    if (font) ImGui::PushFont(font);
+    const std::string& t = run.text;
+    w.line += ImGui::CalcTextSize(t.data(), t.data() + t.size()).x;
+    for (std::size_t pos = 0; pos <= t.size();) {
+      const std::size_t space = std::min(t.find(' ', pos), t.size());
+      word += ImGui::CalcTextSize(t.data() + pos, t.data() + space).x;
+      w.word = std::max(w.word, word);
+      if (space < t.size()) word = 0.0f;
+      pos = space + 1;
+    }
+    if (font) ImGui::PopFont();
+  }
+  return w;
+}
+
+// Column widths as browsers lay out tables: every column gets its longest word, the rest of the width is
+// shared in proportion to how much more each column's widest line wants; a table that fits unwrapped
+// takes its lines' widths. Returned as the columns' stretch weights.
+std::vector<float> column_weights(const Block& b, const InlineContext& body, const UiFonts* fonts) {
+  const float padding = 2.0f * ImGui::GetStyle().CellPadding.x + 1.0f;
+  std::vector<CellWidths> col(static_cast<std::size_t>(b.columns));
+  for (std::size_t r = 0; r < b.rows.size(); ++r) {
+    InlineContext cell = body;
+    if (static_cast<int>(r) < b.header_rows && fonts && fonts->bold) cell.base = fonts->bold;
+    if (cell.base) ImGui::PushFont(cell.base);
+    for (std::size_t c = 0; c < col.size() && c < b.rows[r].size(); ++c) {
+      const CellWidths w = measure_cell(b.rows[r][c], cell);
+      col[c].line = std::max(col[c].line, w.line + padding);
+      col[c].word = std::max(col[c].word, w.word + padding);
+    }
+    if (cell.base) ImGui::PopFont();
+  }
+  float lines = 0.0f, words = 0.0f;
+  for (const CellWidths& w : col) {
+    lines += w.line;
+    words += w.word;
+  }
+  const float avail = ImGui::GetContentRegionAvail().x;
+  std::vector<float> weights;
+  for (const CellWidths& w : col) {
+    float width = w.word;
+    if (lines <= avail) width = w.line;
+    else if (words < avail && lines > words) width = w.word + (avail - words) * (w.line - w.word) / (lines - words);
+    weights.push_back(std::max(width, 1.0f));
+  }
+  return weights;
+}
+
 void draw_table(const Block& b, const InlineContext& body, const UiFonts* fonts, int id) {
   if (b.columns <= 0) return;
+  const std::vector<float> weights = column_weights(b, body, fonts);
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
-  if (!ImGui::BeginTable(("##table" + std::to_string(id)).c_str(), b.columns, flags)) return;
+  // ImGui takes the weights only when it creates a table: the table's name carries them (rounded), so a
+  // panel of another width or text size gets a table laid out anew.
+  std::string name = "##table" + std::to_string(id);
+  for (float w : weights) name += "_" + std::to_string(static_cast<int>(w / 4.0f));
+  if (!ImGui::BeginTable(name.c_str(), b.columns, flags)) return;
+  for (std::size_t c = 0; c < weights.size(); ++c) ImGui::TableSetupColumn(nullptr, ImGuiTableColumnFlags_WidthStretch, weights[c]);
   for (std::size_t r = 0; r < b.rows.size(); ++r) {
     const bool header = static_cast<int>(r) < b.header_rows;
     ImGui::TableNextRow(header ? ImGuiTableRowFlags_Headers : ImGuiTableRowFlags_None);

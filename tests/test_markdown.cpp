@@ -225,6 +225,21 @@ TEST_F(MarkdownDraw, TablesAreAlignedColumns) {
   EXPECT_TRUE(d.has(ImGui::GetColorU32(ImGuiCol_TableHeaderBg))) << "the header row has its background";
 }
 
+// Columns are as wide as their longest word when the table has the room: a long word in one column and
+// a digit in the other draw on two lines (header and row), not cut into three.
+TEST_F(MarkdownDraw, TableColumnsFitTheirLongestWord) {
+  const UiFonts f = fonts(1.0f);
+  const std::string word = "abcdefghijklmnopqrstuvwxyz";
+  const Drawn d = draw("| x | y |\n|---|---|\n| " + word + " | 1 |\n", &f, 300.0f);
+  std::vector<float> ys;
+  for (const Glyph& g : d.glyphs[0]) ys.push_back((g.min.y + g.max.y) / 2);
+  ASSERT_EQ(ys.size(), word.size() + 3);
+  std::sort(ys.begin(), ys.end());
+  int lines = 1;
+  for (std::size_t k = 1; k < ys.size(); ++k) lines += ys[k] - ys[k - 1] > 6.0f;
+  EXPECT_EQ(lines, 2) << "the word is cut across lines";
+}
+
 TEST_F(MarkdownDraw, LongParagraphsWrapAtTheWindowsEdge) {
   const UiFonts f = fonts(1.0f);
   std::string words;
@@ -255,6 +270,28 @@ TEST_F(MarkdownDraw, WrappedLinesStartAtTheMargin) {
   ASSERT_GE(starts.size(), 4u) << "several lines";
   // 'b', 'c' and 'd' differ in their left bearing by about a pixel; a space is about 5.
   for (std::size_t line = 1; line < starts.size(); ++line) EXPECT_NEAR(starts[line], starts[0], 2.0f) << "line " << line;
+}
+
+// No space between "(" and a code span, or between the span and ")": the three wrap as one word.
+TEST_F(MarkdownDraw, NoBreakInsideAWordMadeOfSeveralStyles) {
+  const UiFonts f = fonts(1.0f);
+  std::string text;
+  for (int i = 0; i < 30; ++i) text += "xx (`cc`) ";
+  int lines = 0;
+  for (float width = 250.0f; width < 350.0f; width += 7.0f) {
+    const Drawn d = draw(text, &f, width);
+    // Six glyphs a group (spaces draw none): x x ( c c ).
+    ASSERT_EQ(d.glyphs[0].size(), 30u * 6u) << "width " << width;
+    const auto centre_y = [](const Glyph& g) { return (g.min.y + g.max.y) / 2; };
+    for (std::size_t k = 0; k < 30; ++k) {
+      const auto& g = d.glyphs[0];
+      EXPECT_NEAR(centre_y(g[6 * k + 2]), centre_y(g[6 * k + 3]), 3.0f) << "width " << width << ": \"(\" and the code, group " << k;
+      EXPECT_NEAR(centre_y(g[6 * k + 4]), centre_y(g[6 * k + 5]), 3.0f) << "width " << width << ": the code and \")\", group " << k;
+    }
+    lines += 1 + static_cast<int>(std::count_if(d.glyphs[0].begin() + 1, d.glyphs[0].end(),
+                                                [&](const Glyph& g) { return g.min.x < (&g - 1)->min.x; }));
+  }
+  EXPECT_GT(lines, 15 * 5) << "the text wraps at every width";
 }
 
 TEST_F(MarkdownDraw, LinksAreColouredAndUnderlined) {
