@@ -1,8 +1,9 @@
 // The window's keys, read from ImGui's key state. The one place that knows ImGui's key API changed:
 // 1.86 (Debian 12) indexes keys by the platform backend's codes (GLFW_KEY_F12); 1.87 named every key
 // (ImGuiKey_F12) and 1.89 made ImGuiKey a strongly typed enum, so GLFW codes no longer compile there
-// (Ubuntu 24.04 and Debian 13 ship 1.90). Built here against 1.86 only; the 1.87+ branch follows
-// ImGui's documented API (imgui.h, ImGuiKey_; issue ocornut/imgui#4921).
+// (Ubuntu 24.04 and Debian 13 ship 1.90). Built here against 1.86; the 1.87+ branch follows ImGui's
+// documented API (imgui.h, ImGuiKey_; ocornut/imgui#4921) and is compiled against a stand-in of 1.89+'s
+// declarations (tests/compat/imgui190).
 #pragma once
 
 #include <imgui.h>
