@@ -47,7 +47,10 @@ void draw_gl(const PanelModel& m) {
   ImGui::PushStyleColor(ImGuiCol_Text, kHint);
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextUnformatted((m.gl_summary + ", with fallbacks:").c_str());
-  for (const auto& f : m.gl_fallbacks) ImGui::BulletText("%s", f.c_str());
+  for (const auto& f : m.gl_fallbacks) {
+    ImGui::Bullet();  // then the text as one wrapped block beside it (BulletText does not wrap)
+    ImGui::TextUnformatted(f.c_str());
+  }
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
 }
