@@ -157,14 +157,14 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
   for (const auto& file : lab.exercise_files) graded.push_back(std::filesystem::absolute(folder / file));
 }
 
-LabHooks CheckContext::hooks_with_only(std::size_t slot) const {
+Features CheckContext::hooks_with_only(std::size_t slot) const {
   SlotFiles files = lab.files(Impl::Solution);
   files.at(slot) = graded.at(slot);
   return lab.hooks_for(files);
 }
 
-void CheckContext::use(const LabHooks& hooks) {
-  if (!renderer.set_lab(hooks)) throw BuildError(renderer.shader_error());
+void CheckContext::use(const Features& hooks) {
+  if (!renderer.set_features(hooks)) throw BuildError(renderer.shader_error());
 }
 
 ParamSet CheckContext::params() const {
@@ -242,7 +242,7 @@ OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, flo
   return cam;
 }
 
-CheckContext::Measurement CheckContext::measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
+CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Features& hooks, const std::string& name,
                                                 const Bounds* view, const BandSpec& band, int width, int height,
                                                 const OrbitCamera* camera) {
   using clock = std::chrono::steady_clock;
@@ -363,7 +363,7 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
     result.error = e.what();
     // The student's fault when the same programs build with the solution's files in their place.
     try {
-      result.students_error = renderer.set_lab(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();
+      result.students_error = renderer.set_features(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();
     } catch (const std::exception&) {
       result.students_error = false;
     }
