@@ -134,6 +134,23 @@ std::string Criterion::explain() const {
   return s + needs + (fix.empty() ? "." : ": " + fix);
 }
 
+void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,
+                                   const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
+                                   const std::vector<HeldOutRange>& ranges, const HardLimits& limits) {
+  const Features features = ctx.hooks();
+  const std::string impl = impl_name(ctx.impl);
+  const auto m = ctx.measure(params, features, prefix + "_" + tag + "_" + impl);
+  grade_hard_shadow(result, tag, m.metrics, limits);
+  result.metrics[tag]["render_ms"] = m.render_ms;
+  result.metrics[tag]["oracle_ms"] = m.oracle_ms;
+  for (const auto& c : draw_directional_cases(ctx, ranges)) {
+    const auto h = ctx.measure(c.apply(ctx, held_out_params), features, prefix + "_" + c.tag + "_" + impl);
+    grade_hard_shadow(result, c.tag, h.metrics, limits);
+    result.conditions.push_back(c.to_json());
+  }
+  ctx.use_default_scene();
+}
+
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits) {
   result.metrics[tag] = to_json(m);
   result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, limits.lit_advice});

@@ -131,17 +131,7 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
-  const Features hooks = ctx.hooks();
-  const auto m = ctx.measure(params, hooks, "lab01_grazing");
-  grade_hard_shadow(result, "grazing", m.metrics, kLimits);
-  result.metrics["grazing"]["render_ms"] = m.render_ms;
-  result.metrics["grazing"]["oracle_ms"] = m.oracle_ms;
-  for (const auto& c : draw_directional_cases(ctx, kHeldOut)) {
-    const auto h = ctx.measure(c.apply(ctx, params), hooks, "lab01_" + c.tag);
-    grade_hard_shadow(result, c.tag, h.metrics, kLimits);
-    result.conditions.push_back(c.to_json());
-  }
-  ctx.use_default_scene();
+  grade_lab_and_held_out_lights(ctx, result, "lab01", "grazing", params, params, kHeldOut, kLimits);
 }
 
 }  // namespace
