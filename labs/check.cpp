@@ -171,7 +171,13 @@ CheckContext::CheckContext(Renderer& r, const Lab& l, Impl i, const Scene& defau
 void CheckContext::grade_submission(const std::filesystem::path& folder) {
   impl = Impl::Exercise;
   graded.clear();
-  for (const auto& file : lab.exercise_files) graded.push_back(std::filesystem::absolute(folder / file));
+  for (const auto& file : lab.exercise_files) {
+    const auto path = std::filesystem::absolute(folder / file);
+    // Not the grader's fault, and not to be graded as the stock file: the student's answer is missing.
+    if (!std::filesystem::is_regular_file(path))
+      throw BuildError(file + ": not in the submission " + folder.string() + " (lay it out like the project: " + file + ")");
+    graded.push_back(path);
+  }
 }
 
 Features CheckContext::hooks_with_only(std::size_t slot) const {
@@ -378,6 +384,7 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
     result.images = ctx.images;
   } catch (const BuildError& e) {
     result.error = e.what();
+    if (result.error.empty()) result.error = "the shaders did not build, and the driver's log is empty";
     // The student's fault when the same programs build with the solution's files in their place.
     try {
       result.students_error = renderer.set_features(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();

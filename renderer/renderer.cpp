@@ -73,7 +73,18 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
   bool ok = lit_->build(includes, features.include_rules, light, variants);
   ok = pass.set_includes(includes, features.include_rules) && ok;
-  if (!ok) return false;
+  if (!ok) {
+    // Kept now: a fresh pass that failed is dropped, and shader_error() walks only the kept passes.
+    failed_build_error_.clear();
+    const auto collect = [&](ReloadableProgram& program) {
+      if (!program.error().empty() && failed_build_error_.find(program.error()) == std::string::npos)
+        failed_build_error_ += program.error();
+    };
+    lit_->for_each_program(collect);
+    pass.for_each_program(collect);
+    return false;
+  }
+  failed_build_error_.clear();
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
@@ -99,6 +110,7 @@ bool Renderer::poll_shader_files() {
 }
 
 std::string Renderer::shader_error() const {
+  if (!failed_build_error_.empty()) return failed_build_error_;
   std::string out;
   for_each_program([&](ReloadableProgram& program) {
     if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();

@@ -152,6 +152,8 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_scene_;
   long scene_generation_ = 0;  // bumps with every set_scene
   Features features_;
+  // The errors of the last set_features that failed: its programs may belong to a pass that was not kept.
+  std::string failed_build_error_;
   LightType programs_light_ = LightType::Directional;  // the light type the programs were built for
   const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique shadow_ is
   std::unique_ptr<ShadowPass> shadow_;
