@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,7 +26,7 @@ nlohmann::json FrameStats::to_json() const {
   }
   return {{"gpu_ms", passes_json}, {"gpu_ms_from_wall_clock", wall_clock}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
           {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"cube_faces", cube_faces},
-          {"stencil_passes", stencil_passes}, {"draws", draws}, {"casters_culled", casters_culled},
+          {"stencil_passes", stencil_passes}, {"volume_triangles", volume_triangles}, {"draws", draws}, {"casters_culled", casters_culled},
           {"shadow_texels_written", shadow_texels_written}, {"moments_negative_variance", moments_negative_variance}};
 }
 
@@ -51,7 +52,10 @@ std::map<std::string, std::string> Renderer::default_includes(ShadowTechnique te
                                                  {"lab/visibility.glsl", "shaders/shadow/hard.glsl"}};
   // A perspective map's depth is not linear in distance (spot); a point light's cube stores distances.
   if (light == LightType::Spot) includes["lab/visibility.glsl"] = "shaders/shadow/spot.glsl";
-  if (light == LightType::Point) includes["lab/visibility.glsl"] = "shaders/shadow/cube.glsl";
+  if (light == LightType::Point) {
+    includes["lab/visibility.glsl"] = "shaders/shadow/cube.glsl";
+    includes["lab/cube_store.glsl"] = "shaders/cube/store.glsl";
+  }
   if (technique == ShadowTechnique::ShadowVolumes) {
     includes["lab/visibility.glsl"] = "shaders/volume/stencil_visibility.glsl";
     includes["lab/volume.glsl"] = "shaders/volume/volume.glsl";
@@ -85,7 +89,7 @@ struct Renderer::LitUniforms {
   int generation = -1;
   Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
   Uniform min_variance, bleed_delta;
-  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_cube;
+  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: lab 0's exercise applies it itself
 };
@@ -180,15 +184,21 @@ void timed(GLuint query, const char* name, FrameStats& stats, bool software, F&&
   stats.passes.push_back({name, use_wall ? wall_ms : gpu_ms, use_wall, wall_ms});
 }
 
+// Runs draws and returns the query's count (GL_SAMPLES_PASSED, GL_PRIMITIVES_GENERATED, ...).
+template <typename F>
+long count_query(GLenum target, GLuint query, F&& draws) {
+  glBeginQuery(target, query);
+  draws();
+  glEndQuery(target);
+  GLuint64 count = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
+  return static_cast<long>(count);
+}
+
 // Runs draws and returns how many fragments passed the depth test (texels written, overdraw included).
 template <typename F>
 long count_samples(GLuint query, F&& draws) {
-  glBeginQuery(GL_SAMPLES_PASSED, query);
-  draws();
-  glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 samples = 0;
-  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
-  return static_cast<long>(samples);
+  return count_query(GL_SAMPLES_PASSED, query, std::forward<F>(draws));
 }
 
 bool is_software_rasterizer() {
@@ -206,6 +216,7 @@ Renderer::Renderer()
       empty_vao_(GlVertexArray::create()),
       timer_(GlQuery::create()),
       samples_(GlQuery::create()),
+      primitives_(GlQuery::create()),
       software_rasterizer_(is_software_rasterizer()) {
   programs_->shadow_depth = ReloadableProgram({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}});
   programs_->debug_quad = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}});
@@ -257,6 +268,13 @@ bool Renderer::build_programs(const LabHooks& hooks, LightType light) {
     ok = moments_->set_includes({includes.begin(), includes.end()}, hooks.include_rules) && ok;
   }
   if (volumes) ok = volume_pass().set_includes({includes.begin(), includes.end()}, hooks.include_rules) && ok;
+  // A point light's shadow pass includes what the faces store: built now, so that a lab's file that does
+  // not compile is reported here and not at the first frame.
+  const bool cube = !volumes && !moments && light == LightType::Point;
+  if (cube) {
+    if (!cube_) cube_ = std::make_unique<CubeShadowPass>();
+    ok = cube_->set_includes({includes.begin(), includes.end()}, hooks.include_rules) && ok;
+  }
   if (ok) {
     hooks_ = hooks;
     programs_light_ = light;
@@ -361,7 +379,12 @@ void Renderer::ensure_targets(const ParamSet& params, const FrameRequest& reques
     free_depth_map();  // shadow volumes need no shadow map, only a stencil buffer (below)
   } else if (cube) {
     free_depth_map();
-    if (!cube_) cube_ = std::make_unique<CubeShadowPass>();
+    if (!cube_) {
+      cube_ = std::make_unique<CubeShadowPass>();
+      auto includes = default_includes(hooks_.technique, light_type_);
+      for (const auto& [k, v] : hooks_.includes) includes[k] = v;
+      cube_->set_includes({includes.begin(), includes.end()}, hooks_.include_rules);
+    }
     if (cube_->ensure_targets(size)) shadow_state_.clear();
   } else if (size != t.shadow_size || format != t.depth_format) {
     t.shadow_depth = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
@@ -529,7 +552,9 @@ void Renderer::shadow_volume_passes(const ParamSet& params, const FrameRequest& 
     glViewport(0, 0, targets_->width, targets_->height);
     glClearStencil(0);
     glClear(GL_STENCIL_BUFFER_BIT);
-    volumes.draw_stencil(camera_projection_ * camera_view_, light_vector4(), z_fail, stats_.draws);
+    stats_.volume_triangles = count_query(GL_PRIMITIVES_GENERATED, primitives_.id(), [&] {
+      volumes.draw_stencil(camera_projection_ * camera_view_, light_vector4(), z_fail, stats_.draws);
+    });
   });
   ++stats_.stencil_passes;
   // 3. The light's share, added where no volume was counted (stencil == 0).
@@ -724,8 +749,8 @@ void Renderer::set_lit_uniforms(const ParamSet& params, LitUniforms& u) {
   }
   if (cube_ && light_type_ == LightType::Point) {
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, cube_->texture());
-    u.shadow_cube.set(2);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, cube_->texture());
+    u.shadow_faces.set(2);
   }
   if (u.shadow_map_compare.present()) {
     // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
@@ -803,7 +828,7 @@ void Renderer::resolve_lit_uniforms(ReloadableProgram& program, LitUniforms& u) 
        Uniform(id, "u_light_near"),
        Uniform(id, "u_light_far"),
        Uniform(id, "u_texel_angle"),
-       Uniform(id, "u_shadow_cube"),
+       Uniform(id, "u_shadow_faces"),
        Uniform(id, "u_shadow_map_compare"),
        Uniform(id, "u_pcf_radius"),
        Uniform(id, "u_pcf_hardware"),
@@ -880,7 +905,7 @@ void Renderer::cube_debug_quads(int side) {
   const int cell = side / 2;
   glUseProgram(p.cube_face.id());
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_->texture());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, cube_->texture());
   p.cube_face_u.cube.set(0);
   p.cube_face_u.far_plane.set(std::max(cube_views_.far_plane, 1e-6f));
   glBindVertexArray(empty_vao_.id());
