@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,7 +25,7 @@ nlohmann::json FrameStats::to_json() const {
   }
   return {{"gpu_ms", passes_json}, {"gpu_ms_from_wall_clock", wall_clock}, {"cpu_ms", cpu_ms}, {"frames", frames}, {"shadow_passes", shadow_passes},
           {"moments_passes", moments_passes}, {"blur_passes", blur_passes}, {"cube_faces", cube_faces},
-          {"stencil_passes", stencil_passes}, {"volume_triangles", volume_triangles}, {"draws", draws}, {"casters_culled", casters_culled},
+          {"stencil_passes", stencil_passes}, {"draws", draws}, {"casters_culled", casters_culled},
           {"shadow_texels_written", shadow_texels_written}, {"moments_negative_variance", moments_negative_variance}};
 }
 
@@ -184,21 +183,15 @@ void timed(GLuint query, const char* name, FrameStats& stats, bool software, F&&
   stats.passes.push_back({name, use_wall ? wall_ms : gpu_ms, use_wall, wall_ms});
 }
 
-// Runs draws and returns the query's count (GL_SAMPLES_PASSED, GL_PRIMITIVES_GENERATED, ...).
-template <typename F>
-long count_query(GLenum target, GLuint query, F&& draws) {
-  glBeginQuery(target, query);
-  draws();
-  glEndQuery(target);
-  GLuint64 count = 0;
-  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
-  return static_cast<long>(count);
-}
-
 // Runs draws and returns how many fragments passed the depth test (texels written, overdraw included).
 template <typename F>
 long count_samples(GLuint query, F&& draws) {
-  return count_query(GL_SAMPLES_PASSED, query, std::forward<F>(draws));
+  glBeginQuery(GL_SAMPLES_PASSED, query);
+  draws();
+  glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samples = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+  return static_cast<long>(samples);
 }
 
 bool is_software_rasterizer() {
@@ -216,7 +209,6 @@ Renderer::Renderer()
       empty_vao_(GlVertexArray::create()),
       timer_(GlQuery::create()),
       samples_(GlQuery::create()),
-      primitives_(GlQuery::create()),
       software_rasterizer_(is_software_rasterizer()) {
   programs_->shadow_depth = ReloadableProgram({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}});
   programs_->debug_quad = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}});
@@ -307,6 +299,15 @@ ShadowVolumePass& Renderer::volume_pass() {
     volumes_scene_stale_ = false;
   }
   return *volumes_;
+}
+
+VolumeTriangles Renderer::count_volume_triangles(bool caps) {
+  if (hooks_.technique != ShadowTechnique::ShadowVolumes)
+    throw std::logic_error("count_volume_triangles needs the shadow-volume technique");
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_->view_fbo.id());
+  const VolumeTriangles count = volume_pass().count_triangles(light_vector4(), caps);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return count;
 }
 
 std::vector<VolumeMeshReport> Renderer::volume_report() const {
@@ -552,9 +553,7 @@ void Renderer::shadow_volume_passes(const ParamSet& params, const FrameRequest& 
     glViewport(0, 0, targets_->width, targets_->height);
     glClearStencil(0);
     glClear(GL_STENCIL_BUFFER_BIT);
-    stats_.volume_triangles = count_query(GL_PRIMITIVES_GENERATED, primitives_.id(), [&] {
-      volumes.draw_stencil(camera_projection_ * camera_view_, light_vector4(), z_fail, stats_.draws);
-    });
+    volumes.draw_stencil(camera_projection_ * camera_view_, light_vector4(), z_fail, stats_.draws);
   });
   ++stats_.stencil_passes;
   // 3. The light's share, added where no volume was counted (stencil == 0).

@@ -41,6 +41,7 @@ class CubeShadowPass;
 class ShadowVolumePass;
 struct MomentsTargetInfo;
 struct VolumeMeshReport;
+struct VolumeTriangles;
 
 // What a lab switches on.
 struct LabHooks {
@@ -80,9 +81,6 @@ struct FrameStats {
   long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map; brute2d: one)
   long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)
   long stencil_passes = 0;  // shadow-volume stencil passes
-  // Triangles the volume geometry shader emitted in the last stencil pass (GL_PRIMITIVES_GENERATED: side
-  // quads count two, caps one); -1 before any. Silhouette extrusion emits far fewer than every edge would.
-  long volume_triangles = -1;
   long draws = 0;
   // Shadow casters not drawn into a shadow map (or cube face) because their bounds lie outside the
   // light's volume: they could not have written a texel.
@@ -167,6 +165,9 @@ class Renderer {
   const CubeLightViews& cube_views() const { return cube_views_; }
   // The shadow volumes' adjacency report per shadow-casting mesh (empty unless the volume pass exists).
   std::vector<VolumeMeshReport> volume_report() const;
+  // The triangles the shadow volumes emit for the last frame's light (caps: as z-fail draws them), sorted
+  // into sides and caps; needs the shadow-volume technique.
+  VolumeTriangles count_volume_triangles(bool caps);
   // One face of the point light's distance cube, bottom row first; throws unless a point light's shadow
   // map was rendered.
   std::vector<float> read_cube_face(int face, int* size) const;
@@ -214,7 +215,6 @@ class Renderer {
   GlBuffer lines_vbo_;
   GlQuery timer_;
   GlQuery samples_;  // GL_SAMPLES_PASSED around the shadow passes' draws: FrameStats::shadow_texels_written
-  GlQuery primitives_;  // GL_PRIMITIVES_GENERATED around the volumes' draw: FrameStats::volume_triangles
   // A software rasteriser (llvmpipe) runs the "GPU" work on the CPU: its glFinish-bracketed wall time is
   // the pass's true cost, and its timer queries under-report some passes (see timed()).
   bool software_rasterizer_ = false;

@@ -33,10 +33,10 @@ constexpr int kBandPixels = 1;
 // wrong. The eye is inside exactly one volume, so every count is off by one and the picture inverts
 // (measured error: labs/09_shadow_volumes/INSTRUCTOR.md).
 constexpr double kMinZPassInsideError = 0.05;
-// Silhouette extrusion: the volumes may hold no more triangles than the solution's (each silhouette edge
-// once, caps only where z-fail needs them). Extruding every edge of every lit triangle gives the same
-// shadows with several times the triangles (and fill).
-constexpr double kMaxTrianglesRatio = 1.0;
+// Silhouette extrusion: the volumes may hold no more side triangles (quads swept by edges) than the
+// solution's: each silhouette edge once. Extruding every edge of every lit triangle gives the same shadows
+// with several times the sides (and fill); how a student caps the volumes is graded by the images.
+constexpr double kMaxSidesRatio = 1.0;
 
 // Inside the big box's shadow (light at azimuth 35, elevation 50): a point 0.3 above the ground just
 // beyond the box, looking away from it across the shadow it casts.
@@ -81,16 +81,15 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
   }
 }
 
-// Triangles the solution's volumes hold for the current scene and light (the geometry shader's output
-// does not depend on the view).
-long solution_triangles(CheckContext& ctx, const ParamSet& params) {
+// The side triangles the solution's volumes hold for the current scene and light.
+long solution_sides(CheckContext& ctx, const ParamSet& params, bool caps) {
   ctx.use(ctx.lab.hooks(Impl::Solution));
   FrameRequest request;
   request.camera = OrbitCamera::framing(ctx.scene().bounds());
   request.width = 64;
   request.height = 64;
   ctx.renderer.render(params, request);
-  return ctx.renderer.stats().volume_triangles;
+  return ctx.renderer.count_volume_triangles(caps).sides;
 }
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
@@ -112,14 +111,15 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
       const auto m = ctx.measure(p, hooks, "lab09_" + tag + "_" + impl_name(ctx.impl), nullptr, band);
       grade(result, tag, m, true, z_fail ? kCapsAdvice : kSidesAdvice);
       if (std::string(type) != "point" || !z_fail) continue;
-      // Each silhouette edge once: the point light's closed volumes against the solution's.
-      const long triangles = ctx.renderer.stats().volume_triangles;
-      const long reference = solution_triangles(ctx, p);
-      result.metrics["volume_triangles"] = {{"graded", triangles}, {"solution", reference}};
-      result.criteria.push_back({"silhouettes.triangles_ratio_to_solution",
-                                 reference > 0 ? static_cast<double>(triangles) / static_cast<double>(reference) : 0.0,
-                                 Criterion::kAtMost, kMaxTrianglesRatio,
-                                 "each silhouette edge extruded once: no more triangles than the solution's",
+      // Each silhouette edge once: the point light's side triangles against the solution's.
+      const VolumeTriangles graded = ctx.renderer.count_volume_triangles(true);
+      const long reference = solution_sides(ctx, p, true);
+      result.metrics["volume_triangles"] = {{"sides", graded.sides}, {"near_caps", graded.near_caps},
+                                            {"far_caps", graded.far_caps}, {"solution_sides", reference}};
+      result.criteria.push_back({"silhouettes.side_triangles_ratio_to_solution",
+                                 reference > 0 ? static_cast<double>(graded.sides) / static_cast<double>(reference) : 0.0,
+                                 Criterion::kAtMost, kMaxSidesRatio,
+                                 "each silhouette edge extruded once: no more side triangles than the solution's",
                                  "extrude only the silhouette edges, each once (from its light-facing triangle): extruding "
                                  "every edge gives the same shadows with several times the triangles and fill."});
     }

