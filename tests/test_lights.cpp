@@ -132,6 +132,11 @@ TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
   EXPECT_EQ(point.sides, 12);
   EXPECT_EQ(point.near_caps, 6);
   EXPECT_EQ(point.far_caps, 6);
+  // Lab 9's stock exercise emits nothing: the capture must still link (its output is written in main).
+  ASSERT_TRUE(r.set_lab(find_lab(9)->hooks(Impl::Exercise))) << r.shader_error();
+  r.render(lab_set({"light.type=point"}), request(OrbitCamera::framing(s.bounds())));
+  const VolumeTriangles none = r.count_volume_triangles(true);
+  EXPECT_EQ(none.sides + none.near_caps + none.far_caps, 0);
 }
 
 TEST_F(LightsTest, CubeMapSixPassesAndOnePassStoreTheSameDistances) {

@@ -166,6 +166,7 @@ void probe_face_selection(CheckContext& ctx, CheckResult& result) {
 // What the faces store, alone: value_to_store at points around a light, against the distance.
 constexpr int kStoreProbePoints = 2000;
 constexpr double kMaxStoreRelativeError = 1e-5;  // float32: length() is within a few ulps
+constexpr double kMaxStoreMismatch = 0;          // the share of points outside it: none
 
 void probe_store(CheckContext& ctx, CheckResult& result) {
   std::mt19937 rng = ctx.held_out_rng();
@@ -191,7 +192,7 @@ void probe_store(CheckContext& ctx, CheckResult& result) {
     worst = std::max(worst, std::isfinite(error) ? error : 1e30);
   }
   result.metrics["store_probe"] = {{"points", v.size()}, {"wrong", wrong}, {"worst_relative_error", worst}};
-  result.criteria.push_back({"store.distance_mismatch", wrong / static_cast<double>(v.size()), Criterion::kAtMost, 0,
+  result.criteria.push_back({"store.distance_mismatch", wrong / static_cast<double>(v.size()), Criterion::kAtMost, kMaxStoreMismatch,
                              "probe: 2,000 points around a light, the Euclidean distance within 1e-5 (relative)",
                              "store the distance from the light to the surface, in world units: the lit pass compares one "
                              "number per direction, whatever face it falls on (a depth is measured along each face's own "
