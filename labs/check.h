@@ -160,6 +160,9 @@ struct HardLimits {
   double lit_error = 0.001;     // acne: 0.1 % of the lit interior, or darkening of 0.001 on average
   double shadow_error = 0.005;  // leak: 0.5 % of the shadowed interior
   std::string why = "lab 1's bounds: 0.1 % acne, 0.5 % leak, interior pixels";
+  // What the student should change when each fails (empty: the metric's usual advice).
+  std::string lit_advice = {};
+  std::string shadow_advice = {};
 };
 // Adds `<tag>.lit_error`, `<tag>.shadow_error` and `<tag>.graded_pixels` (not measurable below
 // kMinGradedPixels) to the result, and the measurement's metrics under result.metrics[tag].
@@ -185,8 +188,8 @@ struct HeldOutRange {
   std::vector<std::string> map_sizes;
   std::vector<std::string> scenes;
 };
-// One case per range (so low and high lights are always both there), azimuth uniform, the rest picked
-// from the range's lists, all drawn from the seed.
+// One case per range (so low and high lights are always both there), azimuth within 75 degrees of the
+// lab's, the rest picked from the range's lists, all drawn from the seed.
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.

@@ -221,7 +221,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   result.criteria.insert(result.criteria.end(), {
       {"moments.non_finite_texels", static_cast<double>(c.non_finite), Criterion::kAtMost, kMaxBadTexels, "no NaN or Inf"},
       {"moments.max_first_moment_error", c.max_first_error, Criterion::kAtMost, rg16 ? kMaxMomentErrorHalfFloat : kMaxFirstMomentError,
-       rg16 ? "RG16F: half-float rounding of z in [0, 1]" : "E[z] is the plain depth: 1e-5 (RG32F)"},
+       rg16 ? "RG16F: half-float rounding of z in [0, 1]" : "E[z] is the plain depth, to float32 rounding (RG32F)"},
       {"moments.max_second_moment_error", c.max_second_error, Criterion::kAtMost, rg16 ? kMaxMomentErrorHalfFloat : kMaxSecondMomentError,
        "z^2 + slope term from finite differences; float rounding bound (INSTRUCTOR.md)"},
       {"moments.background_texels_not_clear_value", static_cast<double>(c.background_wrong), Criterion::kAtMost, kMaxBadTexels,
