@@ -17,8 +17,8 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   float reach = 1.0 + float(u_pcf_radius) + (u_pcf_hardware ? 0.5 : 0.0);
   float z = s.z - shadow_bias(n_dot_l) * reach;
   float lit = 0.0;
-  // Loop offsets are not constant, so texture() with a computed coordinate, not textureOffset (Mesa
-  // rejects non-constant offsets).
+  // Loop offsets are not constant, so texture() with a computed coordinate, not textureOffset (GLSL
+  // requires its offset to be a constant expression).
   for (int y = -u_pcf_radius; y <= u_pcf_radius; ++y) {
     for (int x = -u_pcf_radius; x <= u_pcf_radius; ++x) {
       vec2 uv = s.xy + vec2(x, y) * texel;
