@@ -52,6 +52,7 @@ void emit(vec4 world) {
 #include "lab/volume.glsl"
 
 void main() {
+  v_world_w = 1.0;  // written here too: an exercise that emits nothing must still link with the capture
   emit_volume(v_world_position[0], v_world_position[1], v_world_position[2], v_world_position[3],
               v_world_position[4], v_world_position[5]);
 }
