@@ -224,10 +224,13 @@ std::string task_section(const std::string& markdown) {
   std::istringstream in(markdown);
   std::string line, out;
   bool inside = false;
+  // The task, then how to see its effect (presets, views, what to look for), in the text's order.
   while (std::getline(in, line)) {
     if (line.rfind("#", 0) == 0) {
-      if (inside) break;
-      inside = line.find("Your task") != std::string::npos || line.find("Your part") != std::string::npos;
+      const bool task = line.find("Your task") != std::string::npos || line.find("Your part") != std::string::npos;
+      const bool see = line.find("How to see it") != std::string::npos;
+      inside = task || see;
+      if (see) out += "\nHow to see it:\n";
       continue;
     }
     if (inside) out += line + "\n";

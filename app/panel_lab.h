@@ -64,7 +64,8 @@ PanelActions draw_lab_panel(PanelModel& model);
 // The lab after or before `lab` in the course's order (wrapping), and lab number `n` if it exists.
 const Lab* neighbour_lab(const Lab& lab, int step);
 
-// The task part of a lab's text: the section headed "Your task" / "Your part" (without its heading);
+// The task part of a lab's text: the section headed "Your task" / "Your part" (without its heading),
+// followed by the section "How to see it" (after a line "How to see it:") where the text has one;
 // empty when the text has none.
 std::string task_section(const std::string& markdown);
 

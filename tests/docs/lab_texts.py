@@ -9,8 +9,9 @@ A figure a text takes from the code carries a marker right after it, invisible w
 
 The marker names a file, a constant defined in it (`NAME = value` or `NAME{value}`, C++ or GLSL) and an
 optional scale. The figure before the marker must equal the constant times the scale, to the digits the
-text prints. Each text must also: have a "## The check" section whose figures all carry markers, a
-"## Sources" section citing at least one source, and not mention issues (student text). Exit 0 when every
+text prints. Each text must also have a task section ("Your task" or "Your part") and a "How to see it"
+section (the window's panel shows both), a "The check" section whose limits all carry markers and a
+"Sources" section, and must not mention issues (it is the student's text). Exit 0 when every
 text agrees, 1 otherwise (each disagreement printed with its file and line).
 """
 import pathlib
@@ -37,7 +38,8 @@ def agrees(printed, value):
     decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
     exponent = int(digits.split("e")[1]) if "e" in digits else 0
     step = 10.0 ** (exponent - decimals)
-    return abs(float(digits) - value) <= 0.5 * step + 1e-12 * abs(value)
+    # Strictly within half a unit of the last printed digit: 99 is not 99.5 (print enough digits).
+    return abs(float(digits) - value) < 0.5 * step - 1e-12 * abs(value)
 
 
 def check_text(readme):
@@ -68,7 +70,7 @@ def check_text(readme):
             bare = MARKER.sub("", limit)
             if re.search(r"\d", bare) and not MARKER.search(limit):
                 problems.append(f"{where(i)}: a limit in the check's table without a marker to the code: {limit.strip()}")
-    for needed in ("The check", "Sources"):
+    for needed in ("Your task" if "Your task" in sections else "Your part", "How to see it", "The check", "Sources"):
         if needed not in sections:
             problems.append(f"{readme.relative_to(ROOT)}: no '## {needed}' section")
     return problems
