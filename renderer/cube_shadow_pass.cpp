@@ -1,6 +1,6 @@
 #include "renderer/cube_shadow_pass.h"
 
-#include <sstream>
+#include <algorithm>
 #include <stdexcept>
 
 namespace shadowlab {
@@ -10,7 +10,7 @@ namespace {
 constexpr const char* kStoreInclude = "lab/cube_store.glsl";
 constexpr const char* kDefaultStore = "shaders/cube/store.glsl";
 
-// Six layers, one per cube face in GL's order.
+// Six layers, one per cube face in GL's order (the lit pass selects the face itself: lab 8).
 GlTexture make_faces(GLenum internal_format, GLenum format, int size) {
   GlTexture t = GlTexture::create();
   glBindTexture(GL_TEXTURE_2D_ARRAY, t.id());
@@ -29,12 +29,21 @@ GlTexture make_faces(GLenum internal_format, GLenum format, int size) {
 CubeShadowPass::CubeShadowPass()
     : faces_({"shaders/cube/distance.vert", {}, "shaders/cube/distance.frag", {}, {{kStoreInclude, kDefaultStore}}}),
       layered_({"shaders/cube/distance.vert", "shaders/cube/layers.geom", "shaders/cube/distance.frag",
-                {{"LAYERED", "1"}}, {{kStoreInclude, kDefaultStore}}}) {
+                {{"LAYERED", "1"}}, {{kStoreInclude, kDefaultStore}}}),
+      face_quad_({"shaders/fullscreen.vert", {}, "shaders/debug/cube_face.frag", {}, {}}) {
   if (!faces_.rebuild() || !layered_.rebuild())
     throw std::runtime_error("cannot build the cube shadow pass's shaders:\n" + faces_.error() + layered_.error());
 }
 
-bool CubeShadowPass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
+std::map<std::string, std::string> CubeShadowPass::default_includes(LightType) {
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+          {"lab/visibility.glsl", "shaders/shadow/cube.glsl"},
+          {kStoreInclude, kDefaultStore}};
+}
+
+bool CubeShadowPass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
+  // The distance programs include what the faces store (lab 8's part 1): a file that does not compile is
+  // reported here, not at the first frame.
   bool ok = true;
   for (ReloadableProgram* p : {&faces_, &layered_}) {
     ProgramDesc d = p->desc();
@@ -44,7 +53,75 @@ bool CubeShadowPass::set_includes(const std::map<std::string, std::filesystem::p
     p->set_desc(std::move(d));
     ok = p->rebuild() && ok;
   }
-  return ok;
+  return face_quad_.rebuild() && ok;
+}
+
+void CubeShadowPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(faces_);
+  f(layered_);
+  f(face_quad_);
+}
+
+bool CubeShadowPass::ensure_targets(const ParamSet& params) {
+  return ensure_targets(std::stoi(params.get_choice("shadow.map_size")));
+}
+
+void CubeShadowPass::draw_map(PassContext& ctx) {
+  const bool single = technique_param(ctx.params, "point.single_pass") != 0.0;
+  far_plane_ = ctx.light.cube.far_plane;
+  ctx.timed("cube_shadow", [&] {
+    ctx.count_texels([&] {
+      draw(ctx.gpu_scene, ctx.light.cube, ctx.light.position, single, ctx.params.get_bool("shadow.cull_casters"),
+           ctx.stats.draws, ctx.stats.cube_faces, ctx.stats.casters_culled);
+    });
+  });
+}
+
+void CubeShadowPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
+  u.shadow_faces.set(2);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void CubeShadowPass::draw_debug_quads(const DebugQuadArea& area) {
+  if (face_quad_u_.generation != face_quad_.generation()) {
+    const GLuint id = face_quad_.id();
+    face_quad_u_ = {face_quad_.generation(), Uniform(id, "u_cube"), Uniform(id, "u_face"), Uniform(id, "u_far")};
+  }
+  const int cell = area.side / 2;
+  glUseProgram(face_quad_.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
+  face_quad_u_.cube.set(0);
+  face_quad_u_.far_plane.set(std::max(far_plane_, 1e-6f));
+  glBindVertexArray(area.empty_vao);
+  for (int f = 0; f < 6; ++f) {
+    glViewport(area.width - 8 - (3 - f % 3) * (cell + 4), 8 + (f < 3 ? cell + 4 : 0), cell, cell);
+    face_quad_u_.face.set(f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+std::vector<std::uint8_t> CubeShadowPass::image(int* size) const {
+  const int n = size_, half = std::max(n / 2, 1);
+  *size = 3 * half;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(*size) * static_cast<std::size_t>(*size) * 4, 255);
+  const float range = std::max(far_plane_, 1e-6f);
+  for (int f = 0; f < 6; ++f) {
+    const std::vector<float> d = read_face(f);
+    const int ox = (f % 3) * half, oy = (f / 3) * half;  // oy counted from the top
+    for (int y = 0; y < half; ++y)
+      for (int x = 0; x < half; ++x) {
+        const float v = d[static_cast<std::size_t>(2 * y) * n + 2 * x];
+        const int row = oy + (half - 1 - y);  // face rows are bottom first
+        const std::size_t i = (static_cast<std::size_t>(row) * static_cast<std::size_t>(*size) + ox + x) * 4;
+        const auto g = static_cast<std::uint8_t>(v >= kCubeEmptyDistance ? 255.0f : std::clamp(v / range, 0.0f, 1.0f) * 230.0f);
+        rgba[i] = rgba[i + 1] = rgba[i + 2] = g;
+      }
+  }
+  return rgba;
 }
 
 bool CubeShadowPass::ensure_targets(int size) {
@@ -53,7 +130,7 @@ bool CubeShadowPass::ensure_targets(int size) {
   depth_ = make_faces(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, size);
   fbo_ = GlFramebuffer::create();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0);  // layered: all six layers
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0);  // layered: all six faces
   glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   check_framebuffer("cube shadow (layered)");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -95,7 +172,7 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
     draw_casters(view_proj, 6);
     faces += 6;
   } else {
-    // 1..6. One face at a time: attach its layer, clear it, draw the scene through that face's view.
+    // 1..6. One face at a time: attach it, clear it, draw the scene through that face's view.
     if (faces_u_.generation != faces_.generation()) {
       faces_u_ = {faces_.generation(), Uniform(faces_.id(), "u_light_view_proj"), Uniform(faces_.id(), "u_light_position")};
     }
@@ -115,15 +192,10 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
 }
 
 std::vector<float> CubeShadowPass::read_face(int face) const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
   GlFramebuffer read = GlFramebuffer::create();
   glBindFramebuffer(GL_READ_FRAMEBUFFER, read.id());
   glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0, face);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_RED, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(read.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RED, 1);
 }
 
 }  // namespace shadowlab

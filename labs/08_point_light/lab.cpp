@@ -21,8 +21,8 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExerciseStore = "labs/08_point_light/exercise_store.glsl";
-constexpr const char* kExercise = "labs/08_point_light/exercise.glsl";
+constexpr const char* kExerciseStore = SHADOWLAB_LAB_FOLDER "/exercise_store.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolutionStore = "shaders/cube/store.glsl";  // the renderer's own shadow pass
 constexpr const char* kSolution = "shaders/shadow/cube.glsl";       // the renderer's own cube test
 constexpr std::size_t kStoreSlot = 0, kTestSlot = 1;
@@ -213,7 +213,7 @@ void check_point(CheckContext& ctx, CheckResult& result) {
   // 2. Images with everything together.
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   const OrbitCamera camera = OrbitCamera::framing(ctx.scene().bounds(), 30.0f, kCameraPitch);
   Renderer& r = ctx.renderer;
   std::vector<float> faces[2][6];
@@ -268,10 +268,8 @@ void check_point(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_point_light() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 8;
-  lab.slug = "point_light";
   lab.title = "Point light: cube shadow map";
   lab.summary = "Six 90-degree faces storing the distance to the light: what to store, which face and texel to read, how to compare.";
   lab.exercise_files = {kExerciseStore, kExercise};
@@ -289,7 +287,7 @@ Lab make_lab_point_light() {
       {"one pass", "All six faces in one draw, the geometry shader choosing the layer.", {{"point.single_pass", "true"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.light = LightType::Point;
     hooks.includes["lab/cube_store.glsl"] = files.at(kStoreSlot).string();
     hooks.includes["lab/visibility.glsl"] = files.at(kTestSlot).string();
