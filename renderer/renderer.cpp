@@ -225,6 +225,15 @@ MomentsTargetInfo Renderer::moments_targets() const {
   return moments ? moments->query_targets() : MomentsTargetInfo{};
 }
 
+VolumeTriangles Renderer::count_volume_triangles(bool caps) {
+  auto* volumes = dynamic_cast<ShadowVolumePass*>(shadow_.get());
+  if (!volumes || !lit_) throw std::logic_error("count_volume_triangles needs the shadow-volume technique and a frame");
+  glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
+  const VolumeTriangles count = volumes->count_triangles(light_.vector4(), caps);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return count;
+}
+
 std::vector<VolumeMeshReport> Renderer::volume_report() const {
   if (const auto* volumes = dynamic_cast<const ShadowVolumePass*>(shadow_.get())) return volumes->report();
   return views_->volume_report();
