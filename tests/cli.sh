@@ -330,7 +330,7 @@ PY
   window_drop)  # a bad file dropped on the window shows an error in the panel; a good one replaces the scene
     png_reader
     echo "not a model" >"$tmp/bad.gltf"
-    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$shared/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
+    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$src/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
     python3 - "$tmp" <<'PY' || fail "drop not shown as expected"
 import sys
 sys.path.insert(0, sys.argv[1])

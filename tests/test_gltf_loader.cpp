@@ -26,6 +26,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kAssets = fs::path(SHADOWLAB_SHARED_DIR) / "assets";
+const fs::path kModels = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "models";  // in the repository
 
 // Loads a file expected to be refused and returns the LoadError message ("" if it loaded).
 std::string load_error(const fs::path& path, const LoadLimits& limits = {}) {
@@ -53,7 +54,7 @@ void expect_sane(const Scene& scene) {
 }
 
 // ---------------------------------------------------------------------------------------------------
-// The shared models.
+// The models in assets/models.
 
 TEST(GltfModels, EveryModelLoads) {
   // Triangle counts derived from the index accessors' counts of the drawn primitives in each file's JSON.
@@ -62,7 +63,7 @@ TEST(GltfModels, EveryModelLoads) {
       {"02_suzanne.gltf", 3936}, {"CornellBox.glb", 36},   {"PalmTree.gltf", 10124},
   };
   std::set<std::string> seen;
-  for (const auto& entry : fs::recursive_directory_iterator(kAssets / "models")) {
+  for (const auto& entry : fs::recursive_directory_iterator(kModels)) {
     const std::string ext = entry.path().extension().string();
     if (ext != ".gltf" && ext != ".glb") continue;
     const std::string name = entry.path().filename().string();
@@ -81,7 +82,7 @@ TEST(GltfModels, EveryModelLoads) {
 TEST(GltfModels, DuckNodeScaleIsApplied) {
   // The duck's vertices span ~100s of units; its root node scales them by 0.01.
   for (const char* file : {"Duck.gltf", "Duck.glb"}) {
-    const Scene scene = load_gltf(kAssets / "models/Duck" / file);
+    const Scene scene = load_gltf(kModels / "Duck" / file);
     const glm::vec3 size = scene.bounds().extent();
     const float largest = std::max({size.x, size.y, size.z});
     EXPECT_GT(largest, 0.5f) << file;
@@ -90,12 +91,12 @@ TEST(GltfModels, DuckNodeScaleIsApplied) {
 }
 
 TEST(GltfModels, BoxColourComesFromItsMaterial) {
-  const Scene scene = load_gltf(kAssets / "models/Box/Box.gltf");
+  const Scene scene = load_gltf(kModels / "Box/Box.gltf");
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_NEAR(scene.meshes[0].color.r, 0.8f, 1e-6f);
   EXPECT_EQ(scene.meshes[0].color.g, 0.0f);
   // A textured material with no baseColorFactor gets the lab's grey.
-  const Scene textured = load_gltf(kAssets / "models/BoxTextured/BoxTextured.gltf");
+  const Scene textured = load_gltf(kModels / "BoxTextured/BoxTextured.gltf");
   EXPECT_EQ(textured.meshes[0].color, glm::vec3(0.8f));
 }
 

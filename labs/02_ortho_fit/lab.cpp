@@ -60,15 +60,10 @@ constexpr const char* kExercise = "labs/02_ortho_fit/exercise.cpp";
 // The two fits have different texel sizes, so an edge band in texels would judge them on different
 // pixels; a band of fixed width in screen pixels judges both on the same ones (as the benchmark does).
 constexpr int kBandPixels = 2;
-constexpr const char* kPalmTree = "models/PalmTree/PalmTree.gltf";
+constexpr const char* kPalmTree = "assets/models/PalmTree/PalmTree.gltf";  // in the repository, with its licence
 
 LightFit fit_for(Impl impl) { return impl == Impl::Exercise ? LightFit(ortho_fit_exercise) : LightFit(fit_light_ortho); }
 
-// shared/ sits beside the project (and beside CI's fresh clone); SHADOWLAB_ASSETS overrides it.
-std::filesystem::path assets_dir() {
-  if (const char* env = std::getenv("SHADOWLAB_ASSETS"); env && *env) return env;
-  return data_dir() / ".." / "shared" / "assets";
-}
 
 // Error over all pixels, edges included (acne_rate_all + leak_rate_all), of the lab's fit and of the
 // fixed tutorial box, on the current scene. Graded cases must be strictly lower than the fixed box's
@@ -94,9 +89,8 @@ void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::strin
 void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
   const LightFit fit = fit_for(ctx.impl);
   // 1. Matrix properties over 10,006 directions, for the default scene's box and the PalmTree's.
-  const auto palm_path = assets_dir() / kPalmTree;
-  if (!std::filesystem::exists(palm_path))
-    throw std::runtime_error(palm_path.string() + ": model not found (set SHADOWLAB_ASSETS to shared/assets)");
+  const auto palm_path = data_dir() / kPalmTree;
+  if (!std::filesystem::exists(palm_path)) throw std::runtime_error(palm_path.string() + ": model not found");
   const Scene palm = load_gltf(palm_path);
   const std::pair<const char*, Bounds> boxes[] = {{"default_box", ctx.scene().bounds()}, {"palm_tree_box", palm.bounds()}};
   for (const auto& [tag_text, box] : boxes) {
