@@ -95,6 +95,7 @@ int run_check(const CheckOptions& options) {
         try {
           CheckContext ctx(renderer, lab, impl, scene, options.out_dir);
           ctx.assignments = options.assignments;
+          ctx.submission = options.submission;
           result.parameters = ctx.params().to_json();
           lab.check(ctx, result);
           result.images = ctx.images;

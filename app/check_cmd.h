@@ -12,6 +12,7 @@ struct CheckOptions {
   std::string scene_file;
   std::string json_file;
   std::string out_dir;
+  std::string submission;  // a student's folder: its exercise files are graded
   std::vector<std::string> assignments;  // --set key=value, applied over each lab's defaults
 };
 

@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--scene", check.scene_file, "glTF 2.0 file to grade on instead of the lab's scene");
   check_cmd->add_option("--json", check.json_file, "Write the results as JSON to this file");
   check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
+  check_cmd->add_option("--submission", check.submission, "A student's folder laid out like the project: grade its exercise files");
   check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
 
   shadowlab::BenchOptions bench;

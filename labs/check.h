@@ -53,6 +53,9 @@ class CheckContext {
   const Lab& lab;
   Impl impl;
   std::filesystem::path out_dir;  // empty: write no images
+  // A student's submission (a folder laid out like the project) whose exercise files are graded;
+  // empty: the exercise in the grader's own tree.
+  std::filesystem::path submission;
 
   // The scene to grade on (--scene, or the lab's own choice of built-in scene).
   const Scene& scene() const { return *scene_; }

@@ -10,6 +10,15 @@ namespace shadowlab {
 
 LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light);
 
+// One call of a submitted exercise.cpp, compiled into its own program (labs/cpp_exercise.h): the
+// check sends a FitCall, exercise_host.cpp answers with the fit's LightView as a FitAnswer.
+struct FitCall {
+  float box_min[3], box_max[3], to_light[3];
+};
+struct FitAnswer {
+  float view[16], projection[16], image_x[3], image_y[3], world_size[2];
+};
+
 struct FitVerification {
   int directions = 0;
   int non_finite = 0;     // directions whose matrix has a NaN or Inf
