@@ -7,6 +7,7 @@
 
 #include "app/headless.h"
 #include "labs/check.h"
+#include "labs/cpp_exercise.h"
 #include "renderer/context.h"
 #include "renderer/image_io.h"
 
@@ -92,6 +93,7 @@ int run_check(const CheckOptions& options) {
         result.slug = lab.slug;
         result.impl = impl;
         const auto start = std::chrono::steady_clock::now();
+        std::string exercise_status;  // a submitted C++ exercise that did not build, crashed or hung
         try {
           CheckContext ctx(renderer, lab, impl, scene, options.out_dir);
           ctx.assignments = options.assignments;
@@ -99,6 +101,9 @@ int run_check(const CheckOptions& options) {
           result.parameters = ctx.params().to_json();
           lab.check(ctx, result);
           result.images = ctx.images;
+        } catch (const ExerciseError& e) {
+          result.error = e.what();
+          exercise_status = e.status();
         } catch (const std::exception& e) {
           result.error = e.what();
         }
@@ -106,6 +111,7 @@ int run_check(const CheckOptions& options) {
         print_result(result);
         all_passed = all_passed && result.passed();
         report["labs"].push_back(result.to_json());
+        if (!exercise_status.empty()) report["labs"].back()["status"] = exercise_status;
       }
     }
     if (!options.json_file.empty()) write_text_atomic(options.json_file, report.dump(2) + "\n");

@@ -6,6 +6,7 @@
 
 #include "app/bench_cmd.h"
 #include "app/check_cmd.h"
+#include "app/grade_cmd.h"
 #include "app/headless.h"
 #include "app/window.h"
 
@@ -60,6 +61,25 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
 
+  shadowlab::GradeOptions grade;
+  CLI::App* grade_cmd = app.add_subcommand(
+      "grade",
+      "Grade a class: each submission's labs, each in its own process with a time and a memory limit; writes "
+      "results.json, results.csv, junit.xml, gradescope/<student>/results.json. Exit 0 all passed, 1 some did "
+      "not, 2 usage error, 3 grader error");
+  grade_cmd->add_option("submissions", grade.submissions,
+                        "Folders laid out like the project (labs/NN_slug/<exercise files>), or .zip/.tar(.gz) archives of one");
+  grade_cmd->add_option("--out", grade.out_dir, "Folder for the results (created if missing)")->required();
+  grade_cmd->add_option("--lab", grade.labs, "all, one lab number, or a comma-separated list (3,4,5)");
+  grade_cmd->add_option("--jobs", grade.jobs, "Submissions graded at once, through GNU parallel (default 1)");
+  grade_cmd->add_option("--timeout", grade.timeout, "Seconds one lab may take before it is stopped (default 60)");
+  grade_cmd->add_option("--memory", grade.memory_mb, "Memory one lab's process may take, MB (default 2048)");
+  grade_cmd->add_option("--images", grade.images, "Diff images kept: none, failed (labs not passed; default), all")
+      ->check(CLI::IsMember({"none", "failed", "all"}));
+  grade_cmd->add_flag("--again", grade.again, "Grade every lab again, even those already recorded in --out");
+  grade_cmd->add_flag("--merge", grade.merge_only, "Only write the reports from the results in --out (after a Slurm run)");
+  grade_cmd->add_flag("--no-merge", grade.no_merge, "Only grade, do not write the reports (one task of a parallel or Slurm run)");
+
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
@@ -73,6 +93,7 @@ int main(int argc, char** argv) {
   if (*render_cmd) return shadowlab::run_render(render);
   if (*check_cmd) return shadowlab::run_check(check);
   if (*bench_cmd) return shadowlab::run_bench(bench);
+  if (*grade_cmd) return shadowlab::run_grade(grade);
   if (*labs_cmd) return shadowlab::run_list_labs(show_params);
   return shadowlab::run_window(window_options);
 }

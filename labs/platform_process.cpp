@@ -105,8 +105,8 @@ pid_t spawn(const ExecPlan& plan, const ChildLimits& limits, int stdin_fd, int s
   if (pid == 0) {
     ::close(report[0]);
     if (stdin_fd >= 0) ::dup2(stdin_fd, 0);
-    ::dup2(stdout_fd, 1);
-    ::dup2(stderr_fd, 2);
+    if (stdout_fd >= 0) ::dup2(stdout_fd, 1);
+    if (stderr_fd >= 0) ::dup2(stderr_fd, 2);
     exec_child(plan, limits, parent, report[1]);
   }
   ::setpgid(pid, pid);  // also here: no race with a kill of the group before the child ran setpgid
@@ -192,15 +192,15 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits& 
                        const std::map<std::string, std::string>& env) {
   ChildOutcome outcome;
   const ExecPlan plan(argv, env);
-  const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (log < 0) {
+  const int log = log_file.empty() ? -1 : ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (!log_file.empty() && log < 0) {
     outcome.error = log_file.string() + ": cannot write the log: " + std::strerror(errno);
     return outcome;
   }
   const int null_in = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   const double started = now_seconds();
   const pid_t pid = spawn(plan, limits, null_in, log, log, outcome.error);
-  ::close(log);
+  if (log >= 0) ::close(log);
   if (null_in >= 0) ::close(null_in);
   if (pid < 0) return outcome;
   wait_for(pid, started, limits.wall_seconds > 0 ? started + limits.wall_seconds : 0.0, outcome);

@@ -33,7 +33,8 @@ struct ChildOutcome {
   double peak_rss_mb = 0.0;   // the child's (and its waited-for descendants') peak resident memory
 };
 
-// Runs argv (argv[0] a path) in its own process group, stdout and stderr into `log_file`, with `env`
+// Runs argv (argv[0] a path or a name in PATH) in its own process group, stdout and stderr into
+// `log_file` (empty: ours), stdin from /dev/null, with `env`
 // added to the environment, and waits for it under `limits`. The child dies with this process (Linux:
 // PR_SET_PDEATHSIG), so a grading run killed from outside leaves no orphans.
 // Elsewhere: Windows CreateProcess in a Job object (JOB_OBJECT_LIMIT_PROCESS_MEMORY,
