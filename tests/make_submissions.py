@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Generates a class of student submissions for `shadowlab grade`, and the status every lab must get.
+
+    python3 tests/make_submissions.py --out DIR --count 300 [--seed 1] [--labs 0,2,5]
+
+Writes DIR/submissions/<name>[.zip|.tar.gz] and DIR/expected.json ({"students": {name: {lab: {...}}}}).
+Each lab of each student is one of:
+  right          a correct answer from tests/answers/<NN_slug>/right/ (or the lab's solution)  -> passed
+  wrong          a plausible wrong answer from tests/answers/<NN_slug>/wrong/                  -> failed
+  stock          the exercise as handed out                                                      -> failed
+  missing        the file not submitted                                                          -> failed
+  syntax_error   a right answer with a line that does not parse                                  -> compile_error
+  semantic_error a right answer using an undeclared name inside the function                     -> compile_error
+  endless_loop   a right answer that loops (nested loops, each too long to finish)               -> timed_out
+  crash          (C++ only) a right answer that writes through a null pointer                    -> crashed
+  forbidden_call (C++ only) a right answer that opens a file (grading lets it only compute)       -> crashed
+and a few whole submissions are archives (zip, tar.gz, some wrapped in a folder), one of them with an
+entry that leaves its folder (refused: every lab failed). The rare kinds come in fixed numbers so that
+every status appears; everything is drawn from --seed, so a seed gives the same class every time.
+Every file starts with a line naming the student, so no two students' files are byte-identical.
+"""
+import argparse
+import io
+import json
+import os
+import random
+import re
+import shutil
+import sys
+import tarfile
+import zipfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def read(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def lab_folders():
+    """{number: (folder, [exercise files relative to the root], [solution files or None])}"""
+    labs = {}
+    for name in sorted(os.listdir(os.path.join(ROOT, "labs"))):
+        m = re.match(r"^(\d\d)_\w+$", name)
+        if not m:
+            continue
+        folder = os.path.join(ROOT, "labs", name)
+        source = read(os.path.join(folder, "lab.cpp"))
+        constants = dict(re.findall(r'constexpr const char\*\s+(\w+)\s*=\s*"([^"]+)"', source))
+
+        def files(field):
+            m2 = re.search(field + r"\s*=\s*\{([^}]*)\}", source)
+            if not m2:
+                return []
+            out = []
+            for item in m2.group(1).split(","):
+                item = item.strip()
+                out.append(item.strip('"') if item.startswith('"') else constants.get(item))
+            return out
+
+        exercises = files(r"lab\.exercise_files")
+        solutions = files(r"lab\.solution_files")
+        labs[int(m.group(1))] = (name, exercises, solutions)
+    return labs
+
+
+def corpus(folder, kind, exercise_name):
+    """The corpus's answers of one kind for one exercise file: [(answer name, text)]."""
+    path = os.path.join(ROOT, "tests", "answers", folder, kind)
+    if not os.path.isdir(path):
+        return []
+    out = []
+    for f in sorted(os.listdir(path)):
+        if "__" in f and f.split("__", 1)[1] == exercise_name:
+            out.append((f.split("__", 1)[0], read(os.path.join(path, f))))
+    return out
+
+
+def function_start(lines, cpp):
+    """Index of the line after the first function's opening brace, and the function's return type."""
+    signature = re.compile(r"^\s*(?:[\w:<>]+\s+)*?([\w:<>]+)\s+\w+\s*\(" if cpp else r"^\s*(float|vec[234]|void|bool|int)\s+\w+\s*\(")
+    for i, line in enumerate(lines):
+        if line.lstrip().startswith(("//", "#", "uniform", "return")):
+            continue
+        m = signature.match(line)
+        if not m or line.rstrip().endswith(";"):
+            continue
+        for j in range(i, min(i + 6, len(lines))):
+            if lines[j].rstrip().endswith("{"):
+                return j + 1, m.group(1)
+    raise ValueError("no function found")
+
+
+def broken(text, kind, cpp, rng):
+    """A right answer made into the given kind of broken one; returns (text, the line to be reported)."""
+    lines = text.split("\n")
+    if kind == "syntax_error":
+        at = len(lines) if lines[-1] != "" else len(lines) - 1
+        lines.insert(at, "this line is not code;" if not cpp else "this line is not C++;")
+        return "\n".join(lines), at + 1
+    start, ret = function_start(lines, cpp)
+    if kind == "semantic_error":
+        lines.insert(start, "  float unused_value = undeclared_name;")
+        return "\n".join(lines), start + 1
+    if kind == "endless_loop" and not cpp:
+        value = {"void": "", "float": "0.0", "int": "0", "bool": "false"}.get(ret, ret + "(0.0)")
+        lines[start:start] = [
+            "  float spin = 0.0;",
+            "  for (int i = 0; i < 100000; ++i) for (int j = 0; j < 100000; ++j) for (int k = 0; k < 100000; ++k)",
+            "    spin += sin(float(i ^ j ^ k) + spin);",
+            "  if (spin == -7.0) return %s;" % value,
+        ]
+        return "\n".join(lines), None
+    if kind == "endless_loop":
+        lines.insert(start, "  for (volatile int k = 0; k >= 0; k = 1) {}")
+        return "\n".join(lines), None
+    if kind == "crash":
+        lines.insert(start, "  { volatile int* p = nullptr; *p = 1; }")
+        return "\n".join(lines), None
+    if kind == "forbidden_call":
+        lines.insert(start, '  if (std::FILE* f = std::fopen("/etc/hostname", "r")) std::fclose(f);')
+        lines.insert(0, "#include <cstdio>")
+        return "\n".join(lines), None
+    raise ValueError(kind)
+
+
+EXPECTED = {"right": "passed", "wrong": "failed", "stock": "failed", "missing": "failed",
+            "syntax_error": "compile_error", "semantic_error": "compile_error", "endless_loop": "timed_out",
+            "crash": "crashed", "forbidden_call": "crashed"}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--count", type=int, default=12)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--labs", default="all", help="all, or a comma-separated list of lab numbers")
+    args = ap.parse_args()
+    rng = random.Random(args.seed)
+    labs = lab_folders()
+    numbers = sorted(labs) if args.labs == "all" else [int(n) for n in args.labs.split(",")]
+    cpp_labs = [n for n in numbers if any(f.endswith(".cpp") for f in labs[n][1])]
+    glsl_labs = [n for n in numbers if n not in cpp_labs]
+
+    # Per lab and exercise file: the right and wrong answers on offer.
+    answers = {}
+    for n in numbers:
+        folder, exercises, solutions = labs[n]
+        for i, ex in enumerate(exercises):
+            name = os.path.basename(ex)
+            right = corpus(folder, "right", name)
+            sol = solutions[i] if i < len(solutions) else None
+            if sol and sol.endswith((".glsl",)) and os.path.isfile(os.path.join(ROOT, sol)):
+                right.append(("solution", read(os.path.join(ROOT, sol))))
+            answers[(n, ex)] = {"right": right, "wrong": corpus(folder, "wrong", name)}
+            if not right:
+                sys.exit(f"make_submissions: no right answer for {ex} (tests/answers/{folder}/right/ is empty)")
+
+    # The rare kinds in fixed numbers, on students drawn from the seed (at least one each).
+    count = args.count
+    special = {}
+    students = list(range(count))
+    rng.shuffle(students)
+    picks = iter(students)
+    if glsl_labs:
+        for _ in range(max(1, count // 40)):
+            special[next(picks)] = ("endless_loop", rng.choice(glsl_labs))
+    for kind, times in (("endless_loop", 1), ("crash", max(1, count // 100)), ("forbidden_call", 1), ("syntax_error", 1)):
+        if cpp_labs:
+            for _ in range(times):
+                special[next(picks)] = (kind, rng.choice(cpp_labs))
+    refused = next(picks, None)
+    forms = {next(picks, None): "zip", next(picks, None): "tar.gz"}  # at least one of each
+
+    out = os.path.abspath(args.out)
+    subs = os.path.join(out, "submissions")
+    shutil.rmtree(subs, ignore_errors=True)
+    os.makedirs(subs)
+    expected = {}
+    kinds = ["right"] * 50 + ["wrong"] * 30 + ["stock"] * 8 + ["missing"] * 3 + ["syntax_error"] * 5 + ["semantic_error"] * 4
+    for s in range(count):
+        name = "student%03d" % s
+        files, record = {}, {}
+        for n in numbers:
+            folder, exercises, _ = labs[n]
+            kind = special[s][0] if s in special and special[s][1] == n else rng.choice(kinds)
+            if kind == "wrong" and not any(answers[(n, ex)]["wrong"] for ex in exercises):
+                kind = "stock"
+            # Which file carries the kind (multi-file labs: the others are right).
+            carriers = [ex for ex in exercises if kind != "wrong" or answers[(n, ex)]["wrong"]]
+            carrier = rng.choice(carriers)
+            entry = {"kind": kind, "status": EXPECTED[kind], "file": carrier}
+            for ex in exercises:
+                right_name, text = rng.choice(answers[(n, ex)]["right"])
+                variant = right_name
+                if ex == carrier:
+                    if kind == "wrong":
+                        variant, text = rng.choice(answers[(n, ex)]["wrong"])
+                    elif kind == "stock":
+                        variant, text = "stock", read(os.path.join(ROOT, ex))
+                    elif kind == "missing":
+                        continue
+                    elif kind != "right":
+                        text, line = broken(text, kind, ex.endswith(".cpp"), rng)
+                        variant = kind + " in " + right_name
+                        if line is not None:
+                            entry["line"] = line + 1  # the name line below comes first
+                    entry["variant"] = variant
+                marker = "//" if ex.endswith((".glsl", ".cpp")) else "#"
+                files[ex] = "%s %s: %s\n%s" % (marker, name, variant, text)
+            record[str(n)] = entry
+        kind = "folder"
+        r = rng.random()
+        if s == refused:
+            kind = "refused.zip"
+            for entry in record.values():
+                entry.update({"kind": "refused", "status": "failed"})
+        elif forms.get(s) == "zip" or (s not in forms and r < 0.10):
+            kind = "zip"
+        elif forms.get(s) == "tar.gz" or (s not in forms and r < 0.15):
+            kind = "tar.gz"
+        wrapped = rng.random() < 0.5
+        write_submission(subs, name, files, kind, wrapped)
+        expected[name] = {"form": kind + (" (wrapped)" if wrapped and kind != "folder" else ""), "labs": record}
+    with open(os.path.join(out, "expected.json"), "w") as f:
+        json.dump({"seed": args.seed, "labs": numbers, "students": expected}, f, indent=1, sort_keys=True)
+    tally = {}
+    for e in expected.values():
+        for lab in e["labs"].values():
+            tally[lab["status"]] = tally.get(lab["status"], 0) + 1
+    print("make_submissions: %d submissions in %s; labs expected: %s" % (count, subs, json.dumps(tally, sort_keys=True)))
+
+
+def write_submission(subs, name, files, kind, wrapped):
+    if kind == "folder":
+        for rel, text in files.items():
+            path = os.path.join(subs, name, rel)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, "w") as f:
+                f.write(text)
+        os.makedirs(os.path.join(subs, name, "labs"), exist_ok=True)
+        return
+    prefix = name + "/" if wrapped else ""
+    if kind in ("zip", "refused.zip"):
+        with zipfile.ZipFile(os.path.join(subs, name + ".zip"), "w", zipfile.ZIP_DEFLATED) as z:
+            for rel, text in files.items():
+                z.writestr(prefix + rel, text)
+            if kind == "refused.zip":
+                z.writestr("../../outside.txt", "an entry that leaves the folder")
+        return
+    with tarfile.open(os.path.join(subs, name + ".tar.gz"), "w:gz") as t:
+        for rel, text in files.items():
+            data = text.encode()
+            info = tarfile.TarInfo(prefix + rel)
+            info.size = len(data)
+            t.addfile(info, io.BytesIO(data))
+
+
+if __name__ == "__main__":
+    main()
