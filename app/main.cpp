@@ -87,7 +87,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);  // prints the help, or the error
+    return code == 0 ? 0 : 2;      // every usage error exits 2 (CLI11's own codes are 100 and up)
   }
 
   if (*render_cmd) return shadowlab::run_render(render);

@@ -65,15 +65,17 @@ def lab_folders():
     return labs
 
 
-def corpus(folder, kind, exercise_name):
-    """The corpus's answers of one kind for one exercise file: [(answer name, text)]."""
+def corpus(folder, kind):
+    """The corpus's answers of one kind for one lab: {answer name: {exercise file name: text}}. An
+    answer gives one or several of the lab's files; the corpus's rule is that the files it does not
+    give are the solution's."""
     path = os.path.join(ROOT, "tests", "answers", folder, kind)
-    if not os.path.isdir(path):
-        return []
-    out = []
-    for f in sorted(os.listdir(path)):
-        if "__" in f and f.split("__", 1)[1] == exercise_name:
-            out.append((f.split("__", 1)[0], read(os.path.join(path, f))))
+    out = {}
+    if os.path.isdir(path):
+        for f in sorted(os.listdir(path)):
+            if "__" in f:
+                answer, exercise_name = f.split("__", 1)
+                out.setdefault(answer, {})[exercise_name] = read(os.path.join(path, f))
     return out
 
 
@@ -143,19 +145,32 @@ def main():
     cpp_labs = [n for n in numbers if any(f.endswith(".cpp") for f in labs[n][1])]
     glsl_labs = [n for n in numbers if n not in cpp_labs]
 
-    # Per lab and exercise file: the right and wrong answers on offer.
+    # Per lab: the right and wrong answers on offer, each as the full set of the lab's files.
     answers = {}
     for n in numbers:
         folder, exercises, solutions = labs[n]
+        solution = {}
         for i, ex in enumerate(exercises):
-            name = os.path.basename(ex)
-            right = corpus(folder, "right", name)
             sol = solutions[i] if i < len(solutions) else None
-            if sol and sol.endswith((".glsl",)) and os.path.isfile(os.path.join(ROOT, sol)):
-                right.append(("solution", read(os.path.join(ROOT, sol))))
-            answers[(n, ex)] = {"right": right, "wrong": corpus(folder, "wrong", name)}
-            if not right:
-                sys.exit(f"make_submissions: no right answer for {ex} (tests/answers/{folder}/right/ is empty)")
+            if sol and sol.endswith(".glsl") and os.path.isfile(os.path.join(ROOT, sol)):
+                solution[ex] = read(os.path.join(ROOT, sol))  # a drop-in replacement of the exercise file
+
+        def complete(given, name):
+            files = {}
+            for ex in exercises:
+                text = given.get(os.path.basename(ex), solution.get(ex))
+                if text is None:
+                    return None  # a C++ lab's answer must give its file
+                files[ex] = (name, text)
+            return files
+
+        rights = [complete(g, a) for a, g in corpus(folder, "right").items()]
+        if len(solution) == len(exercises):
+            rights.append(complete({}, "solution"))
+        wrongs = [complete(g, a) for a, g in corpus(folder, "wrong").items()]
+        answers[n] = {"right": [r for r in rights if r], "wrong": [w for w in wrongs if w]}
+        if not answers[n]["right"]:
+            sys.exit(f"make_submissions: no right answer for lab {n} (tests/answers/{folder}/right/ is empty)")
 
     # The rare kinds in fixed numbers, on students drawn from the seed (at least one each).
     count = args.count
@@ -185,30 +200,26 @@ def main():
         for n in numbers:
             folder, exercises, _ = labs[n]
             kind = special[s][0] if s in special and special[s][1] == n else rng.choice(kinds)
-            if kind == "wrong" and not any(answers[(n, ex)]["wrong"] for ex in exercises):
+            if kind == "wrong" and not answers[n]["wrong"]:
                 kind = "stock"
-            # Which file carries the kind (multi-file labs: the others are right).
-            carriers = [ex for ex in exercises if kind != "wrong" or answers[(n, ex)]["wrong"]]
-            carrier = rng.choice(carriers)
-            entry = {"kind": kind, "status": EXPECTED[kind], "file": carrier}
+            chosen = rng.choice(answers[n]["wrong" if kind == "wrong" else "right"])
+            carrier = rng.choice(exercises)  # the file a stock, missing or broken answer is about
+            entry = {"kind": kind, "status": EXPECTED[kind], "file": carrier,
+                     "variant": chosen[exercises[0]][0]}
             for ex in exercises:
-                right_name, text = rng.choice(answers[(n, ex)]["right"])
-                variant = right_name
-                if ex == carrier:
-                    if kind == "wrong":
-                        variant, text = rng.choice(answers[(n, ex)]["wrong"])
-                    elif kind == "stock":
+                variant, text = chosen[ex]
+                if ex == carrier and kind not in ("right", "wrong"):
+                    if kind == "stock":
                         variant, text = "stock", read(os.path.join(ROOT, ex))
                     elif kind == "missing":
                         continue
-                    elif kind != "right":
+                    else:
                         text, line = broken(text, kind, ex.endswith(".cpp"), rng)
-                        variant = kind + " in " + right_name
+                        variant = kind + " in " + variant
                         if line is not None:
                             entry["line"] = line + 1  # the name line below comes first
                     entry["variant"] = variant
-                marker = "//" if ex.endswith((".glsl", ".cpp")) else "#"
-                files[ex] = "%s %s: %s\n%s" % (marker, name, variant, text)
+                files[ex] = "// %s: %s\n%s" % (name, variant, text)
             record[str(n)] = entry
         kind = "folder"
         r = rng.random()
