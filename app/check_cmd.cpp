@@ -3,11 +3,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "app/headless.h"
 #include "labs/check.h"
-#include "labs/cpp_exercise.h"
 #include "renderer/context.h"
 #include "renderer/image_io.h"
 
@@ -45,12 +45,16 @@ std::vector<int> parse_lab_list(const std::string& text) {
 namespace {
 
 void print_result(const CheckResult& r) {
-  std::printf("lab %d %-18s %-8s %s  (%.1f s)\n", r.lab, r.slug.c_str(), impl_name(r.impl), r.passed() ? "PASS" : "FAIL",
-              r.seconds);
-  if (!r.error.empty()) std::printf("    error: %s\n", r.error.c_str());
+  std::printf("lab %d %-18s %-8s %s  (%.1f s)\n", r.lab, r.slug.c_str(), impl_name(r.impl),
+              r.passed() ? "PASS" : r.status() == CheckStatus::Failed ? "FAIL" : status_name(r.status()), r.seconds);
+  if (!r.error.empty()) std::printf("    %s: %s\n", !r.students_error                            ? "grader error"
+                                         : r.status() == CheckStatus::CompileError ? "your file does not build"
+                                                                                   : "your exercise failed", r.error.c_str());
+  if (!r.warnings.empty()) std::printf("    warnings:\n%s", r.warnings.c_str());
   for (const auto& c : r.criteria) {
-    std::printf("    %-4s %-34s %12.6g %s %-10.6g %s\n", c.passed() ? "ok" : "FAIL", c.metric.c_str(), c.value,
+    std::printf("    %-4s %-40s %12.6g %s %-10.6g %s\n", c.passed() ? "ok" : "FAIL", c.metric.c_str(), c.value,
                 c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());
+    if (!c.passed()) std::printf("         %s\n", c.explain().c_str());
   }
 }
 
@@ -64,10 +68,14 @@ int run_check(const CheckOptions& options) {
       ParamSet p = lab_params(*find_lab(number));
       for (const auto& a : options.assignments) p.apply_assignment(a);
     }
-    const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
+    if (!options.submission.empty() && !fs::is_directory(options.submission))
+      throw std::runtime_error("--submission " + options.submission + ": not a folder (give the folder holding labs/)");
+    if (!options.submission.empty() && options.impl == "solution")
+      throw std::runtime_error("--submission grades the submission's exercise files; --impl solution does not apply");
+    const Impl impl = options.impl == "solution" ? Impl::Solution : Impl::Exercise;
     const Scene scene = load_scene_or_default(options.scene_file);
     if (!options.out_dir.empty()) make_output_dir(options.out_dir);
-    // The JSON is written last; find out now, not after every lab has been graded, if it cannot be.
+    // Find out now, not after every lab has been graded, if the JSON cannot be written.
     if (!options.json_file.empty()) {
       const fs::path folder = fs::path(options.json_file).parent_path();
       try {
@@ -80,43 +88,41 @@ int run_check(const CheckOptions& options) {
     }
     std::string error;
     auto context = HeadlessContext::create(&error);
-    if (!context) throw std::runtime_error(error);
+    if (!context) {
+      std::fprintf(stderr, "shadowlab check: grader error: %s\n", one_line_error(error).c_str());
+      return 3;
+    }
 
-    bool all_passed = true;
+    bool all_passed = true, grader_error = false;
     nlohmann::json report = {{"labs", nlohmann::json::array()}};
     {
-      Renderer renderer;
+      std::unique_ptr<Renderer> made;
+      try {
+        made = std::make_unique<Renderer>();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "shadowlab check: grader error: %s\n", one_line_error(e.what()).c_str());
+        return 3;
+      }
+      Renderer& renderer = *made;
       for (int number : numbers) {
-        const Lab& lab = *find_lab(number);
-        CheckResult result;
-        result.lab = lab.number;
-        result.slug = lab.slug;
-        result.impl = impl;
-        const auto start = std::chrono::steady_clock::now();
-        std::string exercise_status;  // a submitted C++ exercise that did not build, crashed or hung
-        try {
-          CheckContext ctx(renderer, lab, impl, scene, options.out_dir);
-          ctx.assignments = options.assignments;
-          ctx.submission = options.submission;
-          result.parameters = ctx.params().to_json();
-          lab.check(ctx, result);
-          result.images = ctx.images;
-        } catch (const ExerciseError& e) {
-          result.error = e.what();
-          exercise_status = e.status();
-        } catch (const std::exception& e) {
-          result.error = e.what();
-        }
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        CheckRun run;
+        run.impl = impl;
+        run.submission = options.submission;
+        run.seed = options.seed;
+        run.assignments = options.assignments;
+        run.out_dir = options.out_dir;
+        const CheckResult result = run_lab_check(renderer, *find_lab(number), scene, run);
         print_result(result);
+        std::fflush(stdout);
         all_passed = all_passed && result.passed();
+        grader_error = grader_error || result.status() == CheckStatus::GraderError;
         report["labs"].push_back(result.to_json());
-        if (!exercise_status.empty()) report["labs"].back()["status"] = exercise_status;
+        // Written after every lab, so a run that is killed keeps what it graded.
+        if (!options.json_file.empty()) write_text_atomic(options.json_file, report.dump(2) + "\n");
       }
     }
-    if (!options.json_file.empty()) write_text_atomic(options.json_file, report.dump(2) + "\n");
-    std::printf("%s\n", all_passed ? "all checks passed" : "some checks failed");
-    return all_passed ? 0 : 1;
+    std::printf("%s\n", all_passed ? "all checks passed" : grader_error ? "grader error (see above)" : "some checks failed");
+    return grader_error ? 3 : all_passed ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab check: %s\n", one_line_error(e.what()).c_str());
     return 2;

@@ -45,14 +45,18 @@ int main(int argc, char** argv) {
                        "Also write world positions, normals and visibility as float32 .npy files");
 
   shadowlab::CheckOptions check;
-  CLI::App* check_cmd = app.add_subcommand("check", "Grade labs headless against the ray-cast oracle (exit 0 only if all pass)");
+  CLI::App* check_cmd = app.add_subcommand("check", "Grade labs headless against the ray-cast oracle. Exit 0: all passed; 1: some failed (or your file does not build); 2: usage error; 3: grader error");
   check_cmd->add_option("--lab", check.labs, "all, one lab number, or a comma-separated list (3,4,5)");
-  check_cmd->add_option("--impl", check.impl, "Grade the exercise (the file you edit) or the solution")
-      ->check(CLI::IsMember({"exercise", "solution"}));
+  check_cmd->add_option("--impl", check.impl, "Grade the exercise (the file you edit; the default) or the lab's solution")
+      ->check(CLI::IsMember({"exercise", "solution"}))
+      ->capture_default_str();
+  check_cmd->add_option("--submission", check.submission,
+                        "Grade the exercise files of this folder (laid out like the project: labs/NN_slug/...) instead of yours");
+  check_cmd->add_option("--seed", check.seed, "Seed of the held-out conditions (light directions, map sizes, ...)")
+      ->capture_default_str();
   check_cmd->add_option("--scene", check.scene_file, "glTF 2.0 file to grade on instead of the lab's scene");
   check_cmd->add_option("--json", check.json_file, "Write the results as JSON to this file");
   check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
-  check_cmd->add_option("--submission", check.submission, "A student's folder laid out like the project: grade its exercise files");
   check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
 
   shadowlab::BenchOptions bench;

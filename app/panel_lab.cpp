@@ -19,18 +19,7 @@ namespace {
 
 const ImVec4 kGreen(0.45f, 0.85f, 0.45f, 1.0f), kRed(1.0f, 0.45f, 0.4f, 1.0f), kHint(0.95f, 0.8f, 0.45f, 1.0f);
 
-std::string format(const char* fmt, double a, double b = 0.0) {
-  char s[256];
-  std::snprintf(s, sizeof s, fmt, a, b);
-  return s;
-}
 
-// "k3.acne_rate" -> ("k3", "acne_rate"): the part before the last dot names the case a lab measured.
-std::pair<std::string, std::string> split_metric(const std::string& metric) {
-  const auto dot = metric.rfind('.');
-  if (dot == std::string::npos) return {"", metric};
-  return {metric.substr(0, dot), metric.substr(dot + 1)};
-}
 
 void draw_nav(PanelModel& m, PanelActions& a) {
   if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) a.open_lab = neighbour_lab(*m.lab, -1);
@@ -92,7 +81,7 @@ void draw_check(PanelModel& m, PanelActions& a) {
   for (const auto& c : r.criteria) {
     ImGui::TextColored(c.passed() ? kGreen : kRed, "%s", c.passed() ? "ok" : "FAIL");
     ImGui::SameLine();
-    ImGui::TextUnformatted(explain_criterion(c).c_str());
+    ImGui::TextUnformatted(c.explain().c_str());
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s = %.4g, limit %s %.4g\n%s", c.metric.c_str(), c.value,
                         c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());
@@ -229,62 +218,6 @@ const Lab* neighbour_lab(const Lab& lab, int step) {
   return &labs.front();
 }
 
-std::string explain_criterion(const Criterion& c) {
-  const auto [tag, name] = split_metric(c.metric);
-  const bool ok = c.passed();
-  const std::string where = tag.empty() ? "" : " [" + tag + "]";
-  const double v = c.value;
-  std::string s;
-  if (name == "acne_rate" || name == "acne_rate_all") {
-    s = format("%.2f %% of lit pixels show acne (drawn in shadow)", 100 * v);
-    s += ok ? ": clean." : ": raise the bias, or make it grow with the slope.";
-  } else if (name == "leak_rate" || name == "leak_rate_all") {
-    s = format("%.2f %% of shadowed pixels are drawn lit (light leaks, peter-panning)", 100 * v);
-    s += ok ? ": clean." : ": lower the bias or check the depth comparison.";
-  } else if (name == "bleeding_rate") {
-    s = format("%.2f %% of shadowed pixels show light bleeding", 100 * v);
-    s += ok ? ": acceptable." : ": cut the low tail of Chebyshev's bound (raise delta).";
-  } else if (name == "bleeding_ratio_to_unfixed") {
-    s = format("light bleeding is %.0f %% of what it is without your fix", 100 * v);
-    s += ok ? "." : format(": it must drop to %.0f %% or less.", 100 * c.limit);
-  } else if (name == "error_ratio_fitted_to_fixed") {
-    s = format("the fitted box's error (acne + leak) is %.2f x the fixed box's", v);
-    s += ok ? ": the fit helps." : ": fit the box tighter around the scene's bounds.";
-  } else if (name == "non_finite_directions") {
-    s = format("%.0f light directions gave a matrix with NaN or Inf", v);
-    s += ok ? "." : ": pick another up vector when the light looks along +-Y.";
-  } else if (name == "corners_outside") {
-    s = format("%.0f corners of the scene's box fall outside the light's box", v);
-    s += ok ? "." : ": the box must enclose every corner.";
-  } else if (name == "loose_directions") {
-    s = format("%.0f light directions gave a box looser than needed", v);
-    s += ok ? "." : ": take min and max of the corners in light space.";
-  } else if (name == "interior_agreement") {
-    s = format("%.2f %% of pixels away from edges agree with the ray-cast truth", 100 * v);
-    s += ok ? "." : format(": needs %.2f %%.", 100 * c.limit);
-  } else if (name == "soft_edge_share") {
-    s = format("%.1f %% of pixels along shadow edges are partly lit (soft)", 100 * v);
-    s += ok ? "." : format(": needs %.1f %%; average more shadow-map taps.", 100 * c.limit);
-  } else if (name == "max_first_moment_error" || name == "max_second_moment_error") {
-    s = format(name == "max_first_moment_error" ? "the stored E[z] is off by up to %.2g" : "the stored E[z^2] is off by up to %.2g", v);
-    s += ok ? "." : ": write depth and depth squared (with the slope term) into the moments.";
-  } else if (name == "max_texel_error") {
-    s = format("the blurred moments differ from an exact Gaussian by up to %.2g", v);
-    s += ok ? "." : ": normalise the weights and sample at the right offsets.";
-  } else if (name.find("negative_variance") != std::string::npos) {
-    s = format("%.0f texels have a negative variance", v);
-    s += ok ? "." : ": E[z^2] - E[z]^2 must not go below the minimum variance.";
-  } else if (name.find("non_finite") != std::string::npos) {
-    s = format("%.0f texels are NaN or Inf", v);
-  } else if (c.direction == Criterion::kAtLeast && c.limit == 1.0 && (v == 0.0 || v == 1.0)) {
-    s = name + (v != 0.0 ? ": yes" : ": no");  // a yes/no property (filtering, formats, the eye in shadow)
-  } else if (v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit)) {
-    s = name + format(" = %.0f", v) + (c.direction == Criterion::kAtMost ? " (needs <= " : " (needs >= ") + format("%.0f)", c.limit);
-  } else {
-    s = name + format(" = %.4g", v) + (c.direction == Criterion::kAtMost ? " (needs <= " : " (needs >= ") + format("%.4g)", c.limit);
-  }
-  return s + where;
-}
 
 std::string task_section(const std::string& markdown) {
   std::istringstream in(markdown);
@@ -333,20 +266,10 @@ std::string load_lab_text(const Lab& lab) {
 }
 
 CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene) {
-  CheckResult result;
-  result.lab = lab.number;
-  result.slug = lab.slug;
-  result.impl = impl;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    Renderer renderer;
-    CheckContext ctx(renderer, lab, impl, scene, {});
-    lab.check(ctx, result);
-  } catch (const std::exception& e) {
-    result.error = e.what();
-  }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
+  Renderer renderer;  // its own, so the window's renderer keeps its programs and targets
+  CheckRun run;
+  run.impl = impl;
+  return run_lab_check(renderer, lab, scene, run);
 }
 
 }  // namespace shadowlab

@@ -64,9 +64,6 @@ PanelActions draw_lab_panel(PanelModel& model);
 // The lab after or before `lab` in the course's order (wrapping), and lab number `n` if it exists.
 const Lab* neighbour_lab(const Lab& lab, int step);
 
-// A criterion explained in one sentence: what was measured and, when it fails, what to change.
-std::string explain_criterion(const Criterion& c);
-
 // The task part of a lab's text: the section headed "Your task" / "Your part" (without its heading);
 // empty when the text has none.
 std::string task_section(const std::string& markdown);

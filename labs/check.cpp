@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "labs/cpp_exercise.h"
 #include "renderer/image_io.h"
 
 namespace shadowlab {
@@ -17,23 +19,153 @@ bool CheckResult::passed() const {
   return true;
 }
 
+const char* status_name(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::Passed: return "passed";
+    case CheckStatus::Failed: return "failed";
+    case CheckStatus::CompileError: return "compile_error";
+    case CheckStatus::Crashed: return "crashed";
+    case CheckStatus::TimedOut: return "timed_out";
+    case CheckStatus::GraderError: return "grader_error";
+  }
+  return "grader_error";
+}
+
+CheckStatus CheckResult::status() const {
+  if (!error.empty()) return students_error ? students_failure : CheckStatus::GraderError;
+  return passed() ? CheckStatus::Passed : CheckStatus::Failed;
+}
+
 nlohmann::json CheckResult::to_json() const {
   nlohmann::json thresholds = nlohmann::json::object();
   nlohmann::json graded = metrics;
+  nlohmann::json list = nlohmann::json::array();
   for (const auto& c : criteria) {
-    thresholds[c.metric] = {{c.direction == Criterion::kAtMost ? "max" : "min", c.limit}, {"why", c.why}};
+    const char* side = c.direction == Criterion::kAtMost ? "max" : "min";
+    thresholds[c.metric] = {{side, c.limit}, {"why", c.why}};
     graded[c.metric] = c.value;
+    list.push_back({{"metric", c.metric}, {"value", c.value}, {side, c.limit}, {"passed", c.passed()},
+                    {"sentence", c.explain()}, {"why", c.why}});
   }
-  nlohmann::json j = {{"lab", lab},         {"slug", slug},         {"impl", impl_name(impl)}, {"passed", passed()},
-                      {"metrics", graded},  {"thresholds", thresholds}, {"seconds", seconds}};
+  nlohmann::json j = {{"lab", lab},         {"slug", slug},         {"impl", impl_name(impl)},
+                      {"status", status_name(status())},             {"passed", passed()},
+                      {"metrics", graded},  {"thresholds", thresholds}, {"criteria", list},
+                      {"seed", seed},       {"conditions", conditions}, {"seconds", seconds}};
   j["parameters"] = parameters;
+  if (!submission.empty()) j["submission"] = submission;
   if (!images.empty()) j["images"] = images;
   if (!error.empty()) j["error"] = error;
+  if (!warnings.empty()) j["warnings"] = warnings;
   return j;
 }
 
+namespace {
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char s[256];
+  std::snprintf(s, sizeof s, fmt, a, b);
+  return s;
+}
+
+// "k3.acne_rate" -> ("k3", "acne_rate"): the part before the last dot names the case a lab measured.
+std::pair<std::string, std::string> split_metric(const std::string& metric) {
+  const auto dot = metric.rfind('.');
+  if (dot == std::string::npos) return {"", metric};
+  return {metric.substr(0, dot), metric.substr(dot + 1)};
+}
+
+// The measured fact as a sentence, and the usual advice for the metric (a lab's own advice wins).
+std::pair<std::string, std::string> describe(const Criterion& c, const std::string& name) {
+  const double v = c.value;
+  if (name == "lit_error")
+    return {format("lit surfaces are drawn %.2f %% darker than the truth on average (acne or a partial shadow)", 100 * v),
+            "raise the bias, or make it grow with the slope; and a lit surface must come out exactly 1."};
+  if (name == "shadow_error")
+    return {format("shadowed surfaces get %.2f %% of the light on average (leaks, peter-panning)", 100 * v),
+            "lower the bias or check the depth comparison; a shadowed surface must come out 0."};
+  if (name == "graded_pixels")
+    return {format("the view has %.0f lit or shadowed pixels away from shadow edges", v),
+            "not measurable: the scene shows too little shadow to grade anything. Grade on a scene with shadows."};
+  if (name == "acne_rate" || name == "acne_rate_all")
+    return {format("%.2f %% of lit pixels show acne (drawn in shadow)", 100 * v), "raise the bias, or make it grow with the slope."};
+  if (name == "leak_rate" || name == "leak_rate_all")
+    return {format("%.2f %% of shadowed pixels are drawn lit (light leaks, peter-panning)", 100 * v),
+            "lower the bias or check the depth comparison."};
+  if (name == "bleeding_rate")
+    return {format("%.2f %% of shadowed pixels show light bleeding", 100 * v), "cut the low tail of Chebyshev's bound (raise delta)."};
+  if (name == "bleeding_ratio_to_unfixed")
+    return {format("light bleeding is %.0f %% of what it is without your fix", 100 * v),
+            format("it must drop to %.0f %% or less.", 100 * c.limit)};
+  if (name == "error_ratio_fitted_to_fixed")
+    return {format("the fitted box's error (acne + leak) is %.2f x the fixed box's", v), "fit the box tighter around the scene's bounds."};
+  if (name == "non_finite_directions")
+    return {format("%.0f light directions gave a matrix with NaN or Inf", v), "pick another up vector when the light looks along +-Y."};
+  if (name == "corners_outside")
+    return {format("%.0f corners of the scene's box fall outside the light's box", v), "the box must enclose every corner."};
+  if (name == "loose_directions")
+    return {format("%.0f light directions gave a box looser than needed", v), "take min and max of the corners in light space."};
+  if (name == "interior_agreement")
+    return {format("%.2f %% of pixels away from edges agree with the ray-cast truth", 100 * v),
+            format("needs %.2f %%.", 100 * c.limit)};
+  if (name == "max_first_moment_error" || name == "max_second_moment_error")
+    return {format(name == "max_first_moment_error" ? "the stored E[z] is off by up to %.2g" : "the stored E[z^2] is off by up to %.2g", v),
+            "write depth and depth squared (with the slope term) into the moments."};
+  if (name == "max_texel_error")
+    return {format("the blurred moments differ from an exact Gaussian by up to %.2g", v),
+            "normalise the weights and sample at the right offsets."};
+  if (name.find("negative_variance") != std::string::npos)
+    return {format("%.0f texels have a negative variance", v), "E[z^2] - E[z]^2 must not go below the minimum variance."};
+  if (name.find("non_finite") != std::string::npos) return {format("%.0f values are NaN or Inf", v), "no NaN or Inf may come out."};
+  const bool whole = v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit);
+  return {name + format(whole ? " = %.0f" : " = %.4g", v), ""};
+}
+
+}  // namespace
+
+std::string Criterion::explain() const {
+  const auto [tag, name] = split_metric(metric);
+  auto [sentence, usual] = describe(*this, name);
+  const std::string& fix = advice.empty() ? usual : advice;
+  const char* op = direction == kAtMost ? "<=" : ">=";
+  const bool whole = limit == static_cast<long long>(limit) && std::abs(limit) >= 1;
+  std::string s = sentence + (tag.empty() ? "" : " [" + tag + "]");
+  if (passed()) return s + ".";
+  char needs[64];
+  std::snprintf(needs, sizeof needs, whole ? " (needs %s %.0f)" : " (needs %s %.4g)", op, limit);
+  return s + needs + (fix.empty() ? "." : ": " + fix);
+}
+
+void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits) {
+  result.metrics[tag] = to_json(m);
+  result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, ""});
+  result.criteria.push_back({tag + ".shadow_error", m.shadow_error, Criterion::kAtMost, limits.shadow_error, limits.why, ""});
+  require_measurable(result, tag, m);
+}
+
+void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m) {
+  const double seen = static_cast<double>(std::min(m.interior_lit, m.interior_shadowed));
+  result.criteria.push_back({tag + ".graded_pixels", seen, Criterion::kAtLeast, kMinGradedPixels,
+                             "fewer lit or shadowed interior pixels grade nothing", ""});
+}
+
 CheckContext::CheckContext(Renderer& r, const Lab& l, Impl i, const Scene& default_scene, std::filesystem::path out)
-    : renderer(r), lab(l), impl(i), out_dir(std::move(out)), scene_(&default_scene) {}
+    : renderer(r), lab(l), impl(i), out_dir(std::move(out)), graded(l.files(i)), scene_(&default_scene) {}
+
+void CheckContext::grade_submission(const std::filesystem::path& folder) {
+  impl = Impl::Exercise;
+  graded.clear();
+  for (const auto& file : lab.exercise_files) graded.push_back(std::filesystem::absolute(folder / file));
+}
+
+LabHooks CheckContext::hooks_with_only(std::size_t slot) const {
+  SlotFiles files = lab.files(Impl::Solution);
+  files.at(slot) = graded.at(slot);
+  return lab.hooks_for(files);
+}
+
+void CheckContext::use(const LabHooks& hooks) {
+  if (!renderer.set_lab(hooks)) throw BuildError(renderer.shader_error());
+}
 
 ParamSet CheckContext::params() const {
   ParamSet p = lab_params(lab);
@@ -99,7 +231,7 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const La
                                                 const OrbitCamera* camera) {
   using clock = std::chrono::steady_clock;
   Measurement m;
-  if (!renderer.set_lab(hooks)) throw std::runtime_error(renderer.shader_error());
+  use(hooks);
   if (uploaded_ != scene_) {
     renderer.set_scene(*scene_);
     uploaded_ = scene_;
@@ -135,6 +267,46 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const La
     images.push_back(diff_path.string());
   }
   return m;
+}
+
+CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run) {
+  CheckResult result;
+  result.lab = lab.number;
+  result.slug = lab.slug;
+  result.impl = run.impl;
+  result.seed = run.seed;
+  result.submission = run.submission.string();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    CheckContext ctx(renderer, lab, run.impl, scene, run.out_dir);
+    if (!run.submission.empty()) ctx.grade_submission(run.submission);
+    ctx.seed = run.seed;
+    ctx.assignments = run.assignments;
+    result.parameters = ctx.params().to_json();
+    ctx.use(ctx.hooks());  // the graded files first: their errors and warnings, before any grading
+    result.warnings = renderer.shader_warnings();
+    if (!lab.check) throw std::runtime_error("lab " + std::to_string(lab.number) + " has no check");
+    lab.check(ctx, result);
+    result.images = ctx.images;
+  } catch (const ExerciseError& e) {  // a submitted C++ exercise that does not build, crashed or hung
+    result.error = e.what();
+    result.students_error = true;
+    result.students_failure = e.status() == "crashed"     ? CheckStatus::Crashed
+                              : e.status() == "timed_out" ? CheckStatus::TimedOut
+                                                          : CheckStatus::CompileError;
+  } catch (const BuildError& e) {
+    result.error = e.what();
+    // The student's fault when the same programs build with the solution's files in their place.
+    try {
+      result.students_error = renderer.set_lab(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();
+    } catch (const std::exception&) {
+      result.students_error = false;
+    }
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 }  // namespace shadowlab

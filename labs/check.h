@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <cstdint>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -25,26 +27,47 @@ struct Criterion {
   double value = 0.0;
   Direction direction = kAtMost;
   double limit = 0.0;
-  std::string why;  // where the limit comes from, shown beside it
+  std::string why;     // where the limit comes from (for instructors: the JSON and the tooltip)
+  std::string advice = {};  // what to change when it fails, in the student's terms; empty: the metric's usual advice
   bool passed() const { return direction == kAtMost ? value <= limit : value >= limit; }
+  // The measured fact as a sentence, followed by the advice when it failed: what the panel and the
+  // command line print.
+  std::string explain() const;
 };
+
+// How a lab's grading ended. CompileError: the student's file does not build (the same program builds
+// with the solution's files); GraderError: the grader itself failed (its own shader, a missing asset,
+// no GL context), which says nothing about the student.
+// Crashed, TimedOut: a submitted C++ exercise, which runs in its own program (labs/cpp_exercise.h),
+// crashed or did not return.
+enum class CheckStatus { Passed, Failed, CompileError, GraderError, Crashed, TimedOut };
+const char* status_name(CheckStatus status);
 
 struct CheckResult {
   int lab = 0;
   std::string slug;
   Impl impl = Impl::Solution;
+  std::string submission;  // the folder whose files were graded; empty: this tree's
   std::vector<Criterion> criteria;
   nlohmann::json metrics = nlohmann::json::object();  // everything measured, graded or not
   nlohmann::json parameters = nlohmann::json::object();  // the lab's parameters as graded (defaults + --set)
+  nlohmann::json conditions = nlohmann::json::array();   // the held-out conditions drawn from the seed
+  std::uint32_t seed = 0;
   std::vector<std::string> images;                   // files written under --out
   std::string error;                                 // a shader or setup failure fails the check
+  bool students_error = false;                       // error is the student's (their file does not build)
+  CheckStatus students_failure = CheckStatus::CompileError;  // with students_error: how their code failed
+  std::string warnings;                              // compiler warnings in the graded files
   double seconds = 0.0;
 
   bool passed() const;
-  nlohmann::json to_json() const;  // {"lab","slug","impl","passed","metrics","thresholds"}
+  CheckStatus status() const;
+  // {"lab","slug","impl","status","passed","metrics","thresholds","criteria",...}
+  nlohmann::json to_json() const;
 };
 
-// What a lab's check gets: a renderer in a headless context, the scene, and the oracle for it.
+// What a lab's check gets: a renderer in a headless context, the scene, the oracle for it, and the files
+// being graded.
 class CheckContext {
  public:
   CheckContext(Renderer& renderer, const Lab& lab, Impl impl, const Scene& default_scene, std::filesystem::path out_dir);
@@ -53,9 +76,21 @@ class CheckContext {
   const Lab& lab;
   Impl impl;
   std::filesystem::path out_dir;  // empty: write no images
-  // A student's submission (a folder laid out like the project) whose exercise files are graded;
-  // empty: the exercise in the grader's own tree.
-  std::filesystem::path submission;
+  // The files in the lab's exercise slots: lab.files(impl), or a submission's (see grade_submission).
+  SlotFiles graded;
+  // Held-out conditions (light directions, map sizes, ...) are drawn from this seed and recorded.
+  std::uint32_t seed = kDefaultSeed;
+  static constexpr std::uint32_t kDefaultSeed = 1;
+
+  // Grade a submission: a folder laid out like the project, whose files take the exercise's slots.
+  void grade_submission(const std::filesystem::path& folder);
+
+  // The graded files' hooks; and the solution's hooks with only slot `slot` taken from the graded
+  // files (to grade one part of a multi-file exercise on its own).
+  LabHooks hooks() const { return lab.hooks_for(graded); }
+  LabHooks hooks_with_only(std::size_t slot) const;
+  // Builds the hooks' programs or throws BuildError with the compiler's messages.
+  void use(const LabHooks& hooks);
 
   // The scene to grade on (--scene, or the lab's own choice of built-in scene).
   const Scene& scene() const { return *scene_; }
@@ -89,6 +124,36 @@ class CheckContext {
   std::unique_ptr<Scene> owned_scene_;
   std::unique_ptr<Oracle> oracle_;
 };
+
+// The least number of interior lit and of interior shadowed pixels a measurement must see to grade
+// anything: below it a check fails as "not measurable" (a scene with nothing to shadow, a degenerate
+// triangle) rather than pass on no evidence. At 960 x 540 the labs' scenes give 20,000-300,000 of each.
+inline constexpr double kMinGradedPixels = 500;
+
+// The limits of a hard (0 or 1) shadow against the truth, over interior pixels: the continuous errors
+// (mean darkening of lit pixels, mean light in shadowed ones), so a partly darkened answer fails too.
+struct HardLimits {
+  double lit_error = 0.001;     // acne: 0.1 % of the lit interior, or darkening of 0.001 on average
+  double shadow_error = 0.005;  // leak: 0.5 % of the shadowed interior
+  std::string why = "lab 1's bounds: 0.1 % acne, 0.5 % leak, interior pixels";
+};
+// Adds `<tag>.lit_error`, `<tag>.shadow_error` and `<tag>.graded_pixels` (not measurable below
+// kMinGradedPixels) to the result, and the measurement's metrics under result.metrics[tag].
+void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits = {});
+// Only the "not measurable" criterion, for measurements graded otherwise.
+void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m);
+
+// One lab's grading as `shadowlab check` and the window's Check button run it.
+struct CheckRun {
+  Impl impl = Impl::Exercise;
+  std::filesystem::path submission;  // non-empty: grade this folder's exercise files
+  std::uint32_t seed = CheckContext::kDefaultSeed;
+  std::vector<std::string> assignments;  // --set key=value over the lab's defaults
+  std::filesystem::path out_dir;         // empty: no images
+};
+
+// Grades one lab; never throws: a failure of any kind ends up in the result (error, students_error).
+CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run);
 
 // The oracle's view of the renderer's light for the last frame: directional, or positional (spot and
 // point lights) with the angle one shadow-map texel spans for the edge band.

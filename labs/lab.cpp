@@ -22,11 +22,28 @@ ParamSet lab_params(const Lab& lab) {
   return set;
 }
 
-std::function<LabHooks(Impl)> visibility_lab_hooks(LightType light, std::string exercise, std::string solution) {
-  return [=](Impl impl) {
+SlotFiles Lab::files(Impl impl) const {
+  const auto& names = impl == Impl::Exercise ? exercise_files : solution_files;
+  return SlotFiles(names.begin(), names.end());
+}
+
+LabHooks Lab::hooks_for(const SlotFiles& files) const {
+  if (files.size() != exercise_files.size())
+    throw std::invalid_argument("lab " + std::to_string(number) + " has " + std::to_string(exercise_files.size()) +
+                                " exercise files, not " + std::to_string(files.size()));
+  LabHooks hooks = make_hooks(files);
+  hooks.include_rules.offered = offered_includes;
+  for (std::size_t i = 0; i < files.size(); ++i)
+    if (i >= solution_files.size() || files[i] != std::filesystem::path(solution_files[i]))
+      hooks.include_rules.confined.insert(files[i]);
+  return hooks;
+}
+
+std::function<LabHooks(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light) {
+  return [=](const SlotFiles& files) {
     LabHooks hooks;
     hooks.light = light;
-    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? exercise : solution;
+    hooks.includes["lab/visibility.glsl"] = files.at(0).string();
     return hooks;
   };
 }

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +20,12 @@
 namespace shadowlab {
 
 enum class Impl { Exercise, Solution };
+
+// A lab's shader (or C++ exercise) that does not build; what() holds the compiler's messages as
+// "file:line:col: error: ...". Whether it is the student's fault is decided by the check runner.
+struct BuildError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 const char* impl_name(Impl impl);
 
 struct Preset {
@@ -28,6 +37,11 @@ struct Preset {
 struct CheckResult;
 class CheckContext;
 
+// The files a run puts in a lab's exercise slots, one per entry of Lab::exercise_files and in that
+// order: the student's own, the solution's, a submission's, or a mix (to grade one part at a time).
+// Relative paths are under data_dir(); a submission's are absolute.
+using SlotFiles = std::vector<std::filesystem::path>;
+
 struct Lab {
   int number = 0;
   std::string slug;   // folder name without the number: "basic_shadow_map"
@@ -38,7 +52,15 @@ struct Lab {
   // Files the student edits, relative to the data folder; the solution's files in the same order.
   std::vector<std::string> exercise_files;
   std::vector<std::string> solution_files;
-  std::function<LabHooks(Impl)> hooks;
+  // The virtual includes a student's file may use (e.g. "lab/bias.glsl"); any other include in a
+  // student's file is refused, so an exercise cannot borrow the solution.
+  std::set<std::string> offered_includes;
+  // The lab's features with these files in its exercise slots.
+  std::function<LabHooks(const SlotFiles&)> make_hooks;
+  SlotFiles files(Impl impl) const;
+  // make_hooks, with every slot file that is not the solution's confined to offered_includes.
+  LabHooks hooks_for(const SlotFiles& files) const;
+  LabHooks hooks(Impl impl) const { return hooks_for(files(impl)); }
   // Grades the lab headless against the oracle; empty for labs without a check yet.
   std::function<void(CheckContext&, CheckResult&)> check;
 
@@ -52,8 +74,8 @@ const Lab* find_lab(int number);
 // The renderer's parameters with the lab's declared on top (its defaults win).
 ParamSet lab_params(const Lab& lab);
 
-// Hooks of a lab whose exercise is the visibility function for one light type (the spot and point
-// light labs): "lab/visibility.glsl" is the exercise or the solution file.
-std::function<LabHooks(Impl)> visibility_lab_hooks(LightType light, std::string exercise, std::string solution);
+// Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
+// (unset: the light.type parameter decides).
+std::function<LabHooks(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light = std::nullopt);
 
 }  // namespace shadowlab

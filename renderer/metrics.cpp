@@ -39,7 +39,7 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
   check_sizes(truth, visibility);
   std::uint64_t all_lit = 0, all_shadowed = 0, all_acne = 0, all_leak = 0;
   std::uint64_t interior_acne = 0, interior_leak = 0, interior_bleed = 0;
-  double abs_interior = 0.0, abs_edge = 0.0;
+  double abs_interior = 0.0, abs_edge = 0.0, abs_lit = 0.0, abs_shadowed = 0.0;
   Metrics m;
   for (std::size_t i = 0; i < visibility.size(); ++i) {
     if (!truth.valid[i]) continue;
@@ -57,6 +57,7 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
     }
     if (truth.interior[i]) {
       abs_interior += error;
+      (truly_lit ? abs_lit : abs_shadowed) += error;
       if (truly_lit) {
         ++m.interior_lit;
         interior_acne += !rendered_lit;
@@ -78,6 +79,8 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
   m.mae_interior = interior == 0 ? 0.0 : abs_interior / static_cast<double>(interior);
   m.mae_edge = m.edge_pixels == 0 ? 0.0 : abs_edge / static_cast<double>(m.edge_pixels);
   m.bleeding_rate = ratio(interior_bleed, m.interior_shadowed);
+  m.lit_error = m.interior_lit == 0 ? 0.0 : abs_lit / static_cast<double>(m.interior_lit);
+  m.shadow_error = m.interior_shadowed == 0 ? 0.0 : abs_shadowed / static_cast<double>(m.interior_shadowed);
   return m;
 }
 
@@ -90,6 +93,8 @@ nlohmann::json to_json(const Metrics& m) {
       {"mae_interior", m.mae_interior},
       {"mae_edge", m.mae_edge},
       {"bleeding_rate", m.bleeding_rate},
+      {"lit_error", m.lit_error},
+      {"shadow_error", m.shadow_error},
       {"valid_pixels", m.valid_pixels},
       {"interior_lit", m.interior_lit},
       {"interior_shadowed", m.interior_shadowed},

@@ -23,6 +23,12 @@ struct Metrics {
   double mae_interior = 0.0;
   double mae_edge = 0.0;
   double bleeding_rate = 0.0;
+  // The continuous errors of interior pixels, for answers that are partly wrong: the mean darkening of
+  // truly lit pixels, mean(1 - visibility) (equal to acne_rate when visibility is 0 or 1), and the mean
+  // light in truly shadowed ones, mean(visibility) (equal to leak_rate then). A lit surface drawn at
+  // 0.875 everywhere has no acne at all but a lit_error of 0.125.
+  double lit_error = 0.0;
+  double shadow_error = 0.0;
   std::uint64_t valid_pixels = 0;
   std::uint64_t interior_lit = 0;
   std::uint64_t interior_shadowed = 0;

@@ -192,12 +192,13 @@ MomentsPass::MomentsPass()
       debug_({"shaders/fullscreen.vert", {}, "shaders/vsm/debug_moments.frag", {}, {}}),
       fast_path_(has_compute_shaders() ? FastPath::Compute : FastPath::Fragment) {}
 
-bool MomentsPass::set_includes(const std::map<std::string, std::filesystem::path>& includes) {
+bool MomentsPass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
   // Only the programs that include lab files; the fast and brute-force blurs include none.
   bool ok = true;
   for (ReloadableProgram* p : {&moments_, &blur_x_, &blur_y_, &debug_}) {
     ProgramDesc d = p->desc();
     d.includes = includes;
+    d.rules = rules;
     p->set_desc(std::move(d));
     ok = p->rebuild() && ok;
   }

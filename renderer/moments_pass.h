@@ -70,7 +70,7 @@ class MomentsPass {
 
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
   // them; false (old programs kept) on a compile error.
-  bool set_includes(const std::map<std::string, std::filesystem::path>& includes);
+  bool set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules = {});
   // Every program built so far (the fast and brute-force blur programs are built on first use).
   template <typename F>
   void for_each_program(F&& f) {

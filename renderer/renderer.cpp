@@ -139,9 +139,9 @@ namespace {
 
 // The lit pass's variants. volume_stage: 0 ordinary, 1 the shadow volumes' ambient pass, 2 their
 // additive pass.
-ProgramDesc lit_desc(const std::map<std::string, std::string>& includes, bool gbuffer, LightType light = LightType::Directional,
-                     int volume_stage = 0) {
-  ProgramDesc d{"shaders/lit.vert", {}, "shaders/lit.frag", {}, {}};
+ProgramDesc lit_desc(const std::map<std::string, std::string>& includes, const IncludeRules& rules, bool gbuffer,
+                     LightType light = LightType::Directional, int volume_stage = 0) {
+  ProgramDesc d{"shaders/lit.vert", {}, "shaders/lit.frag", {}, {}, rules};
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
@@ -239,24 +239,24 @@ bool Renderer::build_programs(const LabHooks& hooks, LightType light) {
   auto includes = default_includes(hooks.technique, light);
   for (const auto& [k, v] : hooks.includes) includes[k] = v;
   Programs& p = *programs_;
-  p.lit.set_desc(lit_desc(includes, false, light, volumes ? 2 : 0));
-  p.lit_gbuffer.set_desc(lit_desc(includes, true, light, volumes ? 2 : 0));
+  p.lit.set_desc(lit_desc(includes, hooks.include_rules, false, light, volumes ? 2 : 0));
+  p.lit_gbuffer.set_desc(lit_desc(includes, hooks.include_rules, true, light, volumes ? 2 : 0));
   if (moments) {
-    ProgramDesc remap = lit_desc(includes, false);
+    ProgramDesc remap = lit_desc(includes, hooks.include_rules, false);
     remap.fragment = "shaders/vsm/remap_view.frag";
     p.remap_view.set_desc(remap);
   }
   if (volumes) {
-    p.volume_ambient.set_desc(lit_desc(includes, false, light, 1));
-    p.volume_ambient_gbuffer.set_desc(lit_desc(includes, true, light, 1));
+    p.volume_ambient.set_desc(lit_desc(includes, hooks.include_rules, false, light, 1));
+    p.volume_ambient_gbuffer.set_desc(lit_desc(includes, hooks.include_rules, true, light, 1));
   }
   bool ok = true;
   p.all([&](ReloadableProgram& program) { ok = program.rebuild() && ok; });
   if (moments) {
     if (!moments_) moments_ = std::make_unique<MomentsPass>();
-    ok = moments_->set_includes({includes.begin(), includes.end()}) && ok;
+    ok = moments_->set_includes({includes.begin(), includes.end()}, hooks.include_rules) && ok;
   }
-  if (volumes) ok = volume_pass().set_includes({includes.begin(), includes.end()}) && ok;
+  if (volumes) ok = volume_pass().set_includes({includes.begin(), includes.end()}, hooks.include_rules) && ok;
   if (ok) {
     hooks_ = hooks;
     programs_light_ = light;
@@ -282,7 +282,7 @@ ShadowVolumePass& Renderer::volume_pass() {
     volumes_scene_stale_ = true;
     std::map<std::string, std::filesystem::path> includes;
     for (const auto& [k, v] : hooks_.includes) includes[k] = v;
-    volumes_->set_includes(includes);
+    volumes_->set_includes(includes, hooks_.include_rules);
   }
   if (volumes_scene_stale_ && gpu_scene_) {
     volumes_->set_scene(scene_);
@@ -313,6 +313,14 @@ std::string Renderer::shader_error() const {
   std::string out;
   for_each_program([&](ReloadableProgram& program) {
     if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
+  });
+  return out;
+}
+
+std::string Renderer::shader_warnings() const {
+  std::string out;
+  for_each_program([&](ReloadableProgram& program) {
+    if (!program.warnings().empty() && out.find(program.warnings()) == std::string::npos) out += program.warnings();
   });
   return out;
 }

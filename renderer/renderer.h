@@ -47,6 +47,8 @@ struct LabHooks {
   // Virtual include name -> file, e.g. "lab/bias.glsl" -> "labs/01_bias/exercise.glsl". Names not given
   // fall back to the renderer's defaults in shaders/ (see Renderer::default_includes()).
   std::map<std::string, std::string> includes;
+  // Which of those files are a student's, and what they may include (see IncludeRules).
+  IncludeRules include_rules;
   LightFit light_fit;  // empty: fit_light_ortho
   // Front-, back- or no culling in the shadow pass, when a lab's exercise decides it (else the parameter).
   std::function<int()> shadow_cull_override;
@@ -117,6 +119,8 @@ class Renderer {
   bool poll_shader_files();
   // The last shader error, "file:line: message" with the line quoted; empty when all programs built.
   std::string shader_error() const;
+  // The compilers' warnings for the current programs, in the same form (empty when there are none).
+  std::string shader_warnings() const;
 
   const FrameStats& render(const ParamSet& params, const FrameRequest& request);
   // Makes the next frame re-run the shadow (moments, blur) passes even if nothing they read changed:

@@ -42,11 +42,57 @@ std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
+// Include names and driver text go into messages: keep them on one line and short.
+std::string printable(const std::string& text, std::size_t limit = 200) {
+  std::string out;
+  for (char c : text.substr(0, limit)) out += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
+  return text.size() > limit ? out + "..." : out;
+}
+
+std::string line_directive(int file_index, int line) {
+  return "#line " + std::to_string(file_index * kShaderLineStride + line) + " 0\n";
+}
+
 struct Expander {
   const ProgramDesc& desc;
   std::vector<fs::path>& files;
   std::string& error;
   std::set<fs::path> included;  // include-once, so shared helpers can be included from several files
+  std::set<fs::path> confined;  // desc.rules.confined, canonical
+
+  static std::string where(const fs::path& path, int line_no) {
+    return display_path(path) + ":" + std::to_string(line_no) + ":1: error: ";
+  }
+  static std::string quote(int line_no, const std::string& line) {
+    return "\n    " + std::to_string(line_no) + " | " + printable(line);
+  }
+
+  // Where `#include "name"` in `path` leads; empty (and `error` set) when it may not be followed.
+  fs::path include_target(const fs::path& path, int line_no, const std::string& line, const std::string& name) {
+    const fs::path as_path(name);
+    if (as_path.is_absolute() || as_path.has_root_name() || as_path.has_root_directory()) {
+      error = where(path, line_no) + "#include \"" + printable(name) + "\": an absolute path is not allowed" + quote(line_no, line);
+      return {};
+    }
+    for (const auto& part : as_path)
+      if (part == "..") {
+        error = where(path, line_no) + "#include \"" + printable(name) + "\": a path may not leave its folder (..)" +
+                quote(line_no, line);
+        return {};
+      }
+    if (confined.count(fs::weakly_canonical(path))) {
+      if (!desc.rules.offered.count(name) || !desc.includes.count(name)) {
+        std::string offered;
+        for (const auto& o : desc.rules.offered) offered += (offered.empty() ? "" : ", ") + ("\"" + o + "\"");
+        error = where(path, line_no) + "#include \"" + printable(name) + "\" is not offered by this lab; your file may include " +
+                (offered.empty() ? std::string("nothing") : offered) + quote(line_no, line);
+        return {};
+      }
+    }
+    if (auto it = desc.includes.find(name); it != desc.includes.end()) return resolve(it->second);
+    if (fs::exists(path.parent_path() / name)) return path.parent_path() / name;
+    return data_dir() / "shaders" / name;
+  }
 
   // Appends the expanded text of `path` to `out`; returns false on error.
   bool expand(const fs::path& path, std::ostringstream& out, bool top, int depth) {
@@ -64,7 +110,11 @@ struct Expander {
     static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
     const auto lines = split_lines(text);
-    if (!top) out << "#line 1 " << index << '\n';
+    if (lines.size() >= static_cast<std::size_t>(kShaderLineStride)) {
+      error = display_path(path) + ": more than " + std::to_string(kShaderLineStride - 1) + " lines";
+      return false;
+    }
+    if (!top) out << line_directive(index, 1);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string& line = lines[i];
       const int line_no = static_cast<int>(i) + 1;
@@ -73,29 +123,22 @@ struct Expander {
         if (!top) continue;  // only the stage's own file declares the version
         out << line << '\n';
         for (const auto& [name, value] : desc.defines) out << "#define " << name << ' ' << value << '\n';
-        out << "#line " << line_no + 1 << ' ' << index << '\n';
+        out << line_directive(index, line_no + 1);
         continue;
       }
       if (std::regex_match(line, m, include_re)) {
         const std::string name = m[1];
-        fs::path target;
-        if (auto it = desc.includes.find(name); it != desc.includes.end()) {
-          target = resolve(it->second);
-        } else if (fs::exists(path.parent_path() / name)) {
-          target = path.parent_path() / name;
-        } else {
-          target = data_dir() / "shaders" / name;
-        }
+        const fs::path target = include_target(path, line_no, line, name);
+        if (target.empty()) return false;
         if (!fs::exists(target)) {
-          error = display_path(path) + ":" + std::to_string(line_no) + ": cannot find include \"" + name + "\"\n    " +
-                  std::to_string(line_no) + " | " + line;
+          error = where(path, line_no) + "cannot find include \"" + printable(name) + "\"" + quote(line_no, line);
           return false;
         }
         const fs::path canonical = fs::weakly_canonical(target);
         if (included.insert(canonical).second) {
           if (!expand(canonical, out, false, depth + 1)) return false;
         }
-        out << "#line " << line_no + 1 << ' ' << index << '\n';
+        out << line_directive(index, line_no + 1);
         continue;
       }
       out << line << '\n';
@@ -104,32 +147,71 @@ struct Expander {
   }
 };
 
-// Rewrites the driver's "S:L(C): message" lines as "file:L:C: message" and quotes the source line.
-std::string explain_log(const std::string& log, const std::vector<fs::path>& files) {
-  static const std::regex mesa_re(R"(^(\d+):(\d+)\((\d+)\): (.*)$)");
-  std::ostringstream out;
-  for (const auto& line : split_lines(log)) {
+ShaderDiagnostic place(std::size_t line, int column, bool is_error, std::string message,
+                       const std::vector<fs::path>& files) {
+  ShaderDiagnostic d;
+  d.column = column;
+  d.error = is_error;
+  d.message = std::move(message);
+  const std::size_t index = line / static_cast<std::size_t>(kShaderLineStride);
+  if (index < files.size()) {
+    d.file = files[index];
+    d.line = static_cast<int>(line % static_cast<std::size_t>(kShaderLineStride));
+  } else {
+    d.line = static_cast<int>(line);
+  }
+  return d;
+}
+
+}  // namespace
+
+std::vector<ShaderDiagnostic> parse_shader_log(const std::string& log, const std::vector<fs::path>& files) {
+  // Mesa: "0:12(5): error: message" (or "preprocessor error:"); NVIDIA: "0(12) : error C1008: message";
+  // AMD, Intel, Apple, glslang: "ERROR: 0:12: message" (WARNING: likewise).
+  static const std::regex mesa_re(R"(^\s*\d+:(\d+)\((\d+)\): (?:preprocessor )?(error|warning): ?(.*)$)");
+  static const std::regex nvidia_re(R"(^\s*\d+\((\d+)\) : (error|warning) ([A-Z]\d+: ?.*)$)");
+  static const std::regex khronos_re(R"(^\s*(ERROR|WARNING): \d+:(\d+): ?(.*)$)");
+  std::vector<ShaderDiagnostic> out;
+  for (const auto& raw : split_lines(log)) {
+    const std::string line = raw.empty() || raw.back() != '\r' ? raw : raw.substr(0, raw.size() - 1);
     std::smatch m;
-    if (!std::regex_match(line, m, mesa_re)) {
-      if (!line.empty()) out << line << '\n';
-      continue;
-    }
-    const auto index = static_cast<std::size_t>(std::stoul(m[1]));
-    const int line_no = std::stoi(m[2]);
-    if (index >= files.size()) {
-      out << line << '\n';
-      continue;
-    }
-    out << display_path(files[index]) << ':' << line_no << ':' << m[3] << ": " << m[4] << '\n';
-    std::string text;
-    if (read_text(files[index], text)) {
-      const auto source_lines = split_lines(text);
-      if (line_no >= 1 && static_cast<std::size_t>(line_no) <= source_lines.size()) {
-        out << "    " << line_no << " | " << source_lines[static_cast<std::size_t>(line_no) - 1] << '\n';
-      }
+    if (std::regex_match(line, m, mesa_re)) {
+      out.push_back(place(std::stoul(m[1]), std::stoi(m[2]), m[3] == "error", m[4], files));
+    } else if (std::regex_match(line, m, nvidia_re)) {
+      out.push_back(place(std::stoul(m[1]), 0, m[2] == "error", m[3], files));
+    } else if (std::regex_match(line, m, khronos_re)) {
+      out.push_back(place(std::stoul(m[2]), 0, m[1] == "ERROR", m[3], files));
+    } else if (line.find_first_not_of(" \t") != std::string::npos) {
+      ShaderDiagnostic d;
+      d.error = line.find("warning") == std::string::npos;
+      d.message = line;
+      out.push_back(d);
     }
   }
-  return out.str();
+  return out;
+}
+
+std::string ShaderDiagnostic::to_string() const {
+  const char* severity = error ? "error" : "warning";
+  if (file.empty()) return printable(message, 2000) + '\n';
+  std::string out = display_path(file) + ':' + std::to_string(line) + (column > 0 ? ':' + std::to_string(column) : "") + ": " +
+                    severity + ": " + printable(message, 2000) + '\n';
+  std::string text;
+  if (line >= 1 && read_text(file, text)) {
+    const auto source_lines = split_lines(text);
+    if (static_cast<std::size_t>(line) <= source_lines.size())
+      out += "    " + std::to_string(line) + " | " + printable(source_lines[static_cast<std::size_t>(line) - 1], 2000) + '\n';
+  }
+  return out;
+}
+
+namespace {
+
+std::string join(const std::vector<ShaderDiagnostic>& diagnostics, bool errors) {
+  std::string out;
+  for (const auto& d : diagnostics)
+    if (d.error == errors) out += d.to_string();
+  return out;
 }
 
 // Shaders and programs report status and logs through parallel entry points; these take either pair.
@@ -149,19 +231,21 @@ std::string info_log(GLuint id, GetIv get_iv, GetLog get_log) {
   return log.c_str();  // up to the terminating NUL
 }
 
-GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& desc, std::vector<fs::path>& all_files,
-                       std::string& error) {
+GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& desc, ProgramBuild& build) {
   std::vector<fs::path> files;
-  const std::string source = preprocess_shader(resolve(path), desc, files, error);
-  all_files.insert(all_files.end(), files.begin(), files.end());
-  if (!error.empty()) return {};
+  const std::string source = preprocess_shader(resolve(path), desc, files, build.error);
+  build.files.insert(build.files.end(), files.begin(), files.end());
+  if (!build.error.empty()) return {};
   GlShader shader = make_shader(type);
   const char* text = source.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
   glCompileShader(shader.id());
+  const auto diagnostics = parse_shader_log(info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog), files);
+  build.diagnostics.insert(build.diagnostics.end(), diagnostics.begin(), diagnostics.end());
+  build.warnings += join(diagnostics, false);
   if (!succeeded(shader.id(), GL_COMPILE_STATUS, glGetShaderiv)) {
-    error = explain_log(info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog), files);
-    if (error.empty()) error = display_path(resolve(path)) + ": compile failed with no log";
+    build.error = join(diagnostics, true);
+    if (build.error.empty()) build.error = display_path(resolve(path)) + ": compile failed with no log";
     return {};
   }
   return shader;
@@ -171,7 +255,8 @@ GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& des
 
 std::string preprocess_shader(const fs::path& path, const ProgramDesc& desc, std::vector<fs::path>& files,
                               std::string& error) {
-  Expander expander{desc, files, error, {}};
+  Expander expander{desc, files, error, {}, {}};
+  for (const auto& c : desc.rules.confined) expander.confined.insert(fs::weakly_canonical(resolve(c)));
   std::ostringstream out;
   expander.included.insert(fs::weakly_canonical(path));
   if (!expander.expand(path, out, true, 0)) return {};
@@ -189,7 +274,7 @@ ProgramBuild build_program(const ProgramDesc& desc) {
   std::vector<GlShader> shaders;
   for (const auto& stage : stages) {
     if (stage.path.empty()) continue;
-    GlShader shader = compile_stage(stage.type, stage.path, desc, result.files, result.error);
+    GlShader shader = compile_stage(stage.type, stage.path, desc, result);
     if (!shader) return result;
     shaders.push_back(std::move(shader));
   }
@@ -220,6 +305,7 @@ bool ReloadableProgram::rebuild() {
     std::error_code ec;
     watched_.emplace_back(f, fs::last_write_time(f, ec));
   }
+  warnings_ = build.warnings;
   if (!build.program) {
     error_ = build.error;
     return false;

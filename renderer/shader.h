@@ -1,13 +1,16 @@
 // Shader programs from files in shaders/ and labs/, with `#include "file"` and injected `#define`s.
 //
-// Every file that goes into a stage is numbered (GLSL's source-string number in `#line`), so a compile
-// error is reported as "file:line: message" with the offending line quoted. ReloadableProgram watches
-// those files: a saved edit is compiled into a new program that replaces the old one only if it links,
-// so a broken edit never stops a running lab.
+// Every file that goes into a stage gets its own range of line numbers (`#line`): file k's line n is
+// line k * kShaderLineStride + n of the stage. Drivers report errors by line, and not all of them keep
+// the source-string number of `#line` (Mesa reports semantic errors against string 0), so the line alone
+// tells which file and line an error is in: "file:line:col: error: message" with the line quoted.
+// ReloadableProgram watches those files: a saved edit is compiled into a new program that replaces the
+// old one only if it links, so a broken edit never stops a running lab.
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +26,34 @@ std::filesystem::path data_dir();
 // A path relative to data_dir() when it is inside it, for messages.
 std::string display_path(const std::filesystem::path& path);
 
+// Who may include what. A confined file (a student's exercise, or a file from a submission) may include
+// only the virtual names its lab offers; any other name, an absolute path or a path leaving the data
+// folder is refused before anything is read. Other files include freely.
+struct IncludeRules {
+  std::set<std::filesystem::path> confined;  // as given in ProgramDesc::includes (resolved before comparing)
+  std::set<std::string> offered;             // e.g. "lab/bias.glsl"
+};
+
+// One compiler message, placed in the file and line it is about.
+struct ShaderDiagnostic {
+  std::filesystem::path file;  // empty when the driver's line could not be placed
+  int line = 0;                // 1-based; 0 unknown
+  int column = 0;              // 1-based; 0 when the driver gives none
+  bool error = true;           // false: a warning
+  std::string message;         // the driver's text after its location and severity
+  // "file:line:col: error: message" (col omitted when unknown) and, when the file can be read, the
+  // line quoted below it.
+  std::string to_string() const;
+};
+
+// Lines of a stage per file: a file longer than this is refused (no shader file comes near it).
+inline constexpr int kShaderLineStride = 100000;
+
+// Places a driver's info log: understands Mesa's "0:12(5): error: ...", NVIDIA's "0(12) : error C0000:
+// ..." and the "ERROR: 0:12: ..." of AMD, Intel, Apple and glslang. `files` is the stage's file table
+// (preprocess_shader's). Lines it cannot parse are kept as diagnostics without a file.
+std::vector<ShaderDiagnostic> parse_shader_log(const std::string& log, const std::vector<std::filesystem::path>& files);
+
 struct ProgramDesc {
   std::filesystem::path vertex;    // relative to data_dir() or absolute
   std::filesystem::path geometry;  // optional
@@ -30,11 +61,14 @@ struct ProgramDesc {
   std::vector<std::pair<std::string, std::string>> defines;
   // Virtual include names: `#include "lab/shadow.glsl"` can be pointed at a lab's exercise or solution.
   std::map<std::string, std::filesystem::path> includes;
+  IncludeRules rules = {};
 };
 
 struct ProgramBuild {
   GlProgram program;  // empty on failure
-  std::string error;  // "file:line: message" lines with the quoted source line
+  std::string error;  // "file:line:col: error: message" lines with the quoted source line
+  std::string warnings;  // the same for warnings, also when the build succeeded
+  std::vector<ShaderDiagnostic> diagnostics;
   std::vector<std::filesystem::path> files;  // every file read, for live reload
 };
 
@@ -58,6 +92,7 @@ class ReloadableProgram {
   GLuint id() const { return program_.id(); }
   bool valid() const { return static_cast<bool>(program_); }
   const std::string& error() const { return error_; }  // last failure, empty after a success
+  const std::string& warnings() const { return warnings_; }  // the last build's warnings
   int generation() const { return generation_; }       // bumps on every successful swap
   const ProgramDesc& desc() const { return desc_; }
 
@@ -65,6 +100,7 @@ class ReloadableProgram {
   ProgramDesc desc_;
   GlProgram program_;
   std::string error_;
+  std::string warnings_;
   int generation_ = 0;
   std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> watched_;
 };

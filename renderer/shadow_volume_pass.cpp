@@ -13,9 +13,10 @@ ShadowVolumePass::ShadowVolumePass()
       positions_(GlBuffer::create()),
       indices_(GlBuffer::create()) {}
 
-bool ShadowVolumePass::set_includes(const std::map<std::string, std::filesystem::path>& includes) {
+bool ShadowVolumePass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
   ProgramDesc d = program_.desc();
   d.includes = includes;
+  d.rules = rules;
   if (!d.includes.count("lab/volume.glsl")) d.includes["lab/volume.glsl"] = "shaders/volume/volume.glsl";
   program_.set_desc(std::move(d));
   return program_.rebuild();

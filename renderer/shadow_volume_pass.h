@@ -42,7 +42,7 @@ class ShadowVolumePass {
 
   // Points "lab/volume.glsl" at a file (default shaders/volume/volume.glsl) and rebuilds; false (old
   // program kept) on a compile error.
-  bool set_includes(const std::map<std::string, std::filesystem::path>& includes);
+  bool set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules = {});
   template <typename F>
   void for_each_program(F&& f) {
     f(program_);

@@ -180,6 +180,36 @@ PY
     python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert not r['passed'] and 'error' not in r, r" "$tmp/check.json" \
       || fail "JSON does not record a plain failure"
     ;;
+  check_default_is_exercise)  # no --impl grades the student's file: the stock exercise fails
+    "$bin" check --lab 1 --json "$tmp/check.json" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "check without --impl: exit $rc, expected 1 (the stock exercise fails)"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['impl']=='exercise' and r['status']=='failed', r" "$tmp/check.json" \
+      || fail "JSON does not record the exercise failing"
+    "$bin" check --help | grep -q "the default" || fail "--help does not say which is graded by default"
+    ;;
+  check_submission)  # a submission's file is graded; its compile error is the student's: status compile_error, exit 1
+    mkdir -p "$tmp/sub/labs/06_pcf" "$tmp/bad/labs/06_pcf" "$tmp/borrow/labs/06_pcf"
+    cp "$src/shaders/shadow/pcf.glsl" "$tmp/sub/labs/06_pcf/exercise.glsl"
+    "$bin" check --lab 6 --submission "$tmp/sub" --json "$tmp/ok.json" >"$tmp/out" || fail "a correct submission fails: $(cat "$tmp/out")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='passed' and r['submission'], r" "$tmp/ok.json" \
+      || fail "JSON does not record the submission passing"
+    printf '// broken\nfloat shadow_visibility(vec3 p, vec3 n, float d) {\n  return nope;\n}\n' >"$tmp/bad/labs/06_pcf/exercise.glsl"
+    "$bin" check --lab 6 --submission "$tmp/bad" --json "$tmp/bad.json" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "a compile error: exit $rc, expected 1"
+    grep -q "labs/06_pcf/exercise.glsl:3:" "$tmp/out" || fail "the error does not point at the student's line: $(cat "$tmp/out")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='compile_error' and 'exercise.glsl:3' in r['error'], r" "$tmp/bad.json" \
+      || fail "JSON does not record a compile error"
+    printf '#include "shadow/pcf.glsl"\n' >"$tmp/borrow/labs/06_pcf/exercise.glsl"
+    "$bin" check --lab 6 --submission "$tmp/borrow" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "including the solution: exit $rc, expected 1"
+    grep -q "not offered by this lab" "$tmp/out" || fail "including the solution was not refused: $(cat "$tmp/out")"
+    expect_error "--submission $tmp/none: not a folder" "$bin" check --lab 6 --submission "$tmp/none"; one_line
+    ;;
+  check_grader_error)  # the grader's own shader missing: status grader_error, exit 3 (not the student's fault)
+    mkdir -p "$tmp/data"; cp -r "$src/labs" "$src/shaders" "$tmp/data/"; rm "$tmp/data/shaders/lit.frag"
+    SHADOWLAB_DATA_DIR="$tmp/data" "$bin" check --lab 1 --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 3 ] || fail "a broken grader: exit $rc, expected 3 ($(cat "$tmp/out" "$tmp/err"))"
+    ;;
   check_bad_lab) expect_error "valid: all," "$bin" check --lab 99 ;;
   bad_choices)  # a bad value names the valid ones, in both commands
     expect_error "valid: 0, 1" "$bin" render --out "$tmp/out" --lab 42

@@ -469,6 +469,20 @@ TEST(Metrics, ExactRatesOnHandMadeTruth) {
   EXPECT_DOUBLE_EQ(m.bleeding_rate, 2.0 / 4.0);   // 3 and 8
   EXPECT_DOUBLE_EQ(m.mae_interior, (0.75 + 0.625 + 0.0625 + 0.375) / 6.0);
   EXPECT_DOUBLE_EQ(m.mae_edge, (0.75 + 0.875) / 2.0);
+  EXPECT_DOUBLE_EQ(m.lit_error, (0.0 + 0.75) / 2.0);                      // interior lit: 0, 1
+  EXPECT_DOUBLE_EQ(m.shadow_error, (0.0 + 0.625 + 0.0625 + 0.375) / 4.0);  // interior shadowed: 2, 3, 4, 8
+}
+
+// A partly wrong answer that never crosses 0.5: no acne, no leak, but the continuous errors see it.
+TEST(Metrics, PartialDarkeningShowsInTheContinuousErrors) {
+  const Truth t = hand_truth();
+  std::vector<float> v(10, 0.0f);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = t.lit[i] ? 0.875f : 0.25f;
+  const Metrics m = compare(t, v);
+  EXPECT_EQ(m.acne_rate, 0.0);
+  EXPECT_EQ(m.leak_rate, 0.0);
+  EXPECT_DOUBLE_EQ(m.lit_error, 0.125);
+  EXPECT_DOUBLE_EQ(m.shadow_error, 0.25);
 }
 
 TEST(Metrics, EdgeErrorsStayOutOfInteriorRates) {
@@ -537,7 +551,7 @@ TEST(Metrics, JsonHasEveryField) {
   std::set<std::string> keys;
   for (const auto& [key, value] : j.items()) keys.insert(key);
   EXPECT_EQ(keys, (std::set<std::string>{"acne_rate", "leak_rate", "acne_rate_all", "leak_rate_all", "mae_interior",
-                                         "mae_edge", "bleeding_rate", "valid_pixels", "interior_lit",
+                                         "mae_edge", "bleeding_rate", "lit_error", "shadow_error", "valid_pixels", "interior_lit",
                                          "interior_shadowed", "edge_pixels"}));
   EXPECT_EQ(j.at("acne_rate").get<double>(), m.acne_rate);
   EXPECT_EQ(j.at("mae_interior").get<double>(), m.mae_interior);

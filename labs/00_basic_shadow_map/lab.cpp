@@ -20,7 +20,7 @@ constexpr double kMaxLeak = 0.005;
 void check_basic(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const auto m = ctx.measure(params, ctx.lab.hooks(ctx.impl), std::string("lab00_") + impl_name(ctx.impl));
+  const auto m = ctx.measure(params, ctx.hooks(), std::string("lab00_") + impl_name(ctx.impl));
   result.metrics = to_json(m.metrics);
   result.metrics["interior_agreement"] = interior_agreement(m.metrics);
   result.metrics["render_ms"] = m.render_ms;
@@ -46,11 +46,8 @@ Lab make_lab_basic_shadow_map() {
       {"peter-panning", "A huge bias: shadows detach from the objects casting them.", {{"shadow.bias", "0.05"}}},
       {"tutorial", "The tutorial's constant bias of 0.005.", {{"shadow.bias", "0.005"}}},
   };
-  lab.hooks = [](Impl impl) {
-    LabHooks hooks;
-    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? kExercise : kSolution;
-    return hooks;
-  };
+  lab.offered_includes = {"lab/bias.glsl"};
+  lab.make_hooks = visibility_lab_hooks();
   lab.check = check_basic;
   return lab;
 }

@@ -16,7 +16,7 @@ namespace {
 // 1 front, 2 back (the order of the shadow.cull parameter's choices). Re-read when the file changes.
 class CullDirective {
  public:
-  explicit CullDirective(std::string file) : file_(std::move(file)) {}
+  explicit CullDirective(std::filesystem::path file) : file_(std::move(file)) {}
   int operator()() {
     std::error_code ec;
     const auto path = data_dir() / file_;
@@ -34,7 +34,7 @@ class CullDirective {
   }
 
  private:
-  std::string file_;
+  std::filesystem::path file_;
   std::filesystem::file_time_type seen_{};
   int cull_ = 0;
 };
@@ -50,7 +50,7 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
-  const auto m = ctx.measure(params, ctx.lab.hooks(ctx.impl), "lab01_grazing");
+  const auto m = ctx.measure(params, ctx.hooks(), "lab01_grazing");
   result.metrics = to_json(m.metrics);
   result.metrics["render_ms"] = m.render_ms;
   result.metrics["oracle_ms"] = m.oracle_ms;
@@ -82,11 +82,10 @@ Lab make_lab_bias_tuning() {
       {"peter-panning", "A large bias: shadows detach from their casters.", {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}}},
       {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}}},
   };
-  lab.hooks = [](Impl impl) {
-    const std::string file = impl == Impl::Exercise ? kExercise : kSolution;
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
-    hooks.includes["lab/bias.glsl"] = file;
-    hooks.shadow_cull_override = CullDirective(file);
+    hooks.includes["lab/bias.glsl"] = files.at(0).string();
+    hooks.shadow_cull_override = CullDirective(files.at(0));
     return hooks;
   };
   lab.check = check_bias;

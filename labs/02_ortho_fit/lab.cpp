@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -64,19 +66,24 @@ constexpr const char* kExercise = "labs/02_ortho_fit/exercise.cpp";
 constexpr int kBandPixels = 2;
 constexpr const char* kPalmTree = "assets/models/PalmTree/PalmTree.gltf";  // in the repository, with its licence
 
-LightFit fit_for(Impl impl) { return impl == Impl::Exercise ? LightFit(ortho_fit_exercise) : LightFit(fit_light_ortho); }
+constexpr const char* kSolution = "renderer/light.cpp";  // fit_light_ortho, which every other lab uses
 
-// A submission's exercise.cpp, built into its own program (labs/cpp_exercise.h): each fit is one call.
-LightFit submitted_fit(const std::filesystem::path& submission) {
-  CppExerciseSpec spec;
-  spec.source = submission / kExercise;
-  spec.display_name = kExercise;
-  spec.host = "02_ortho_fit";
-  spec.headers = {"labs/02_ortho_fit/ortho_fit.h", "renderer/light.h", "renderer/scene.h"};
-  spec.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho", "shadowlab::direction_from_angles",
-                  "shadowlab::clip_to_texture"};
-  auto program = std::make_shared<CppExercise>(spec);
-  return [program](const Bounds& box, const glm::vec3& to_light) {
+// A submission's exercise.cpp, built into its own program (labs/cpp_exercise.h) once per file and
+// process (a check asks for the lab's hooks several times); each fit is one call to it.
+LightFit submitted_fit(const std::filesystem::path& file) {
+  static std::map<std::filesystem::path, std::shared_ptr<CppExercise>> built;
+  std::shared_ptr<CppExercise>& program = built[file];
+  if (!program) {
+    CppExerciseSpec spec;
+    spec.source = file;
+    spec.display_name = kExercise;
+    spec.host = "02_ortho_fit";
+    spec.headers = {"labs/02_ortho_fit/ortho_fit.h", "renderer/light.h", "renderer/scene.h"};
+    spec.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho",
+                    "shadowlab::direction_from_angles", "shadowlab::clip_to_texture"};
+    program = std::make_shared<CppExercise>(spec);
+  }
+  return [program = program](const Bounds& box, const glm::vec3& to_light) {
     const FitCall call = {{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}, {to_light.x, to_light.y, to_light.z}};
     const FitAnswer a = program->call<FitAnswer>(call);
     LightView v;
@@ -89,21 +96,20 @@ LightFit submitted_fit(const std::filesystem::path& submission) {
   };
 }
 
-// The fit this check grades: the solution, the exercise compiled into the binary (a student's own
-// build), or a submission's exercise.cpp.
-LightFit graded_fit(const CheckContext& ctx) {
-  if (ctx.impl == Impl::Exercise && !ctx.submission.empty()) return submitted_fit(ctx.submission);
-  return fit_for(ctx.impl);
+// The fit in a slot: the exercise and the solution are compiled into the program (a student's own
+// build: edit, rebuild, Check); any other file is a submission's, built on its own.
+LightFit fit_for_file(const std::filesystem::path& file) {
+  if (file == kExercise) return ortho_fit_exercise;
+  if (file == kSolution) return fit_light_ortho;
+  return submitted_fit(file);
 }
-
 
 // Error over all pixels, edges included (acne_rate_all + leak_rate_all), of the lab's fit and of the
 // fixed tutorial box, on the current scene. Graded cases must be strictly lower than the fixed box's
 // (so the stock exercise, which is the fixed box, cannot pass); reported cases are measured only.
-void compare_with_fixed(CheckContext& ctx, CheckResult& result, const LightFit& fit, const std::string& tag,
-                        const ParamSet& params, const Bounds* view, bool graded) {
-  LabHooks fitted = ctx.lab.hooks(ctx.impl);
-  fitted.light_fit = fit;
+void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::string& tag, const ParamSet& params,
+                        const Bounds* view, bool graded) {
+  LabHooks fitted = ctx.hooks();
   LabHooks fixed = fitted;
   fixed.light_fit = [](const Bounds&, const glm::vec3& to_light) { return fixed_tutorial_ortho(to_light); };
   BandSpec band;
@@ -120,7 +126,7 @@ void compare_with_fixed(CheckContext& ctx, CheckResult& result, const LightFit& 
 }
 
 void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
-  const LightFit fit = graded_fit(ctx);
+  const LightFit fit = ctx.hooks().light_fit;
   // 1. Matrix properties over 10,006 directions, for the default scene's box and the PalmTree's.
   const auto palm_path = data_dir() / kPalmTree;
   if (!std::filesystem::exists(palm_path)) throw std::runtime_error(palm_path.string() + ": model not found");
@@ -143,21 +149,21 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set_from_string("shadow.map_size", "1024");
   params.set("view.debug_quad", 0.0);
-  compare_with_fixed(ctx, result, fit, "default_scene_lab_light", params, nullptr, false);
+  compare_with_fixed(ctx, result, "default_scene_lab_light", params, nullptr, false);
   params.set("light.elevation", 90.0);
-  compare_with_fixed(ctx, result, fit, "default_scene_straight_down", params, nullptr, true);
+  compare_with_fixed(ctx, result, "default_scene_straight_down", params, nullptr, true);
   params.set("light.elevation", ctx.params().get("light.elevation"));
   Scene moved = ctx.scene();
   for (auto& mesh : moved.meshes) transform_mesh(mesh, glm::translate(glm::mat4(1.0f), glm::vec3(30.0f, 0.0f, 20.0f)));
   ctx.use_scene(moved);
-  compare_with_fixed(ctx, result, fit, "default_scene_moved_30_20", params, nullptr, true);
+  compare_with_fixed(ctx, result, "default_scene_moved_30_20", params, nullptr, true);
   // PalmTree: palms 3.8 units tall at the origin, on a 392-unit sea. Straight down, the fixed box has no
   // basis at all. Under a low light (10 deg) the fixed box's +-10 units resolve the palms far more finely
   // than a fit to the whole sea (0.02 vs 0.38 units per texel) and the fit loses at 1024^2: reported,
   // not graded, with the figures in the lab's README.
   ctx.use_scene(palm);
   params.set("light.elevation", 90.0);
-  compare_with_fixed(ctx, result, fit, "palm_tree_straight_down", params, nullptr, true);
+  compare_with_fixed(ctx, result, "palm_tree_straight_down", params, nullptr, true);
   params.set("light.elevation", 10.0);
   const glm::vec3 to_light = direction_from_angles(params.get_float("light.azimuth"), 10.0f);
   Bounds palms_and_shadow;
@@ -165,7 +171,7 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
     palms_and_shadow.extend(corner);
     palms_and_shadow.extend(corner - to_light * (corner.y / to_light.y));  // where its shadow meets the ground
   }
-  compare_with_fixed(ctx, result, fit, "palm_tree_low_light", params, &palms_and_shadow, false);
+  compare_with_fixed(ctx, result, "palm_tree_low_light", params, &palms_and_shadow, false);
 }
 
 }  // namespace
@@ -177,7 +183,7 @@ Lab make_lab_ortho_fit() {
   lab.title = "Ortho light matrix fitted to the scene";
   lab.summary = "Replace the tutorials' fixed ortho box with one fitted to the bounding box, for any light direction.";
   lab.exercise_files = {kExercise};
-  lab.solution_files = {"renderer/light.cpp"};
+  lab.solution_files = {kSolution};
   // Lab 1's lesson: a bias in texels, so the fitted and the fixed box are compared at the same bias in
   // world units (a constant in depth units would scale with each box's depth range).
   ParamSet base(renderer_param_specs());
@@ -191,9 +197,9 @@ Lab make_lab_ortho_fit() {
       {"aliasing", "A 256^2 map: blocky, jagged edges; a loose box wastes the few texels there are.", {{"shadow.map_size", "256"}}},
       {"sharp", "A 2048^2 map with the fitted box: fine edges.", {{"shadow.map_size", "2048"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
-    hooks.light_fit = fit_for(impl);
+    hooks.light_fit = fit_for_file(files.at(0));
     return hooks;
   };
   lab.check = check_ortho_fit;

@@ -96,7 +96,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
   // 1. The lit result against the oracle (reported: lab 4 fixes the bias and the bleeding).
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   const auto m = ctx.measure(params, hooks, std::string("lab03_") + impl_name(ctx.impl));
   result.metrics["oracle"] = to_json(m.metrics);
   result.metrics["render_ms"] = m.render_ms;
@@ -109,11 +109,11 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   LabHooks depth_hooks;
   depth_hooks.light_fit = hooks.light_fit;
   depth_hooks.shadow_cull_override = hooks.shadow_cull_override;
-  if (!r.set_lab(depth_hooks)) throw std::runtime_error(r.shader_error());
+  ctx.use(depth_hooks);
   render_for_readback(r, ctx.scene(), depth_params);
   int depth_size = 0;
   const std::vector<float> depth = r.read_shadow_depth(&depth_size);
-  if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());
+  ctx.use(hooks);
   render_for_readback(r, ctx.scene(), params);
   int size = 0;
   const std::vector<float> moments = r.read_moments(&size);
@@ -185,14 +185,12 @@ Lab make_lab_vsm_setup() {
       {"grazing", "A low light: wide variance on the ground.", {{"light.elevation", "15"}}},
       {"RG32F", "The fix for RG16F: full floats keep E[z^2] - E[z]^2 >= 0.", {{"vsm.format", "RG32F"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
     hooks.technique = ShadowTechnique::Moments;
     hooks.includes["lab/visibility.glsl"] = kVisibility;
-    if (impl == Impl::Exercise) {
-      hooks.includes["lab/moments.glsl"] = kExerciseMoments;
-      hooks.includes["lab/chebyshev.glsl"] = kExerciseChebyshev;
-    }
+    hooks.includes["lab/moments.glsl"] = files.at(0).string();
+    hooks.includes["lab/chebyshev.glsl"] = files.at(1).string();
     return hooks;
   };
   lab.check = check_vsm_setup;

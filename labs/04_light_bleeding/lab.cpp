@@ -50,7 +50,7 @@ void check_light_bleeding(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
   params.set("vsm.show_remap", 0.0);
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   LabHooks unfixed = hooks;
   unfixed.includes["lab/visibility.glsl"] = kUnfixed;
 
@@ -128,10 +128,11 @@ Lab make_lab_light_bleeding() {
       {"too much", "delta = 0.5: no bleeding, but penumbrae shrink and darken.", {{"vsm.bleed_delta", "0.5"}}},
       {"show remap", "Tint the pixels the remap changed.", {{"vsm.show_remap", "true"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.offered_includes = {"lab/bias.glsl", "lab/chebyshev.glsl"};
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
     hooks.technique = ShadowTechnique::Moments;
-    if (impl == Impl::Exercise) hooks.includes["lab/visibility.glsl"] = kExercise;
+    hooks.includes["lab/visibility.glsl"] = files.at(0).string();
     return hooks;
   };
   lab.check = check_light_bleeding;

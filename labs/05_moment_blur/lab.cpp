@@ -51,7 +51,7 @@ double median(std::vector<double> v) {
 void check_moment_blur(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   Renderer& r = ctx.renderer;
 
   // 1. The lit result at the lab's settings, and the oracle's edge error by radius (reported).
@@ -81,7 +81,7 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
   request.height = 64;
   ParamSet p0 = params;
   p0.set("vsm.blur_radius", 0);
-  if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());
+  ctx.use(hooks);
   const long blur_before = r.stats().blur_passes;
   r.render(p0, request);
   const long blur_at_zero = r.stats().blur_passes - blur_before;
@@ -101,7 +101,7 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
     p.set("vsm.blur_sigma", check_sigma(radius));
     std::vector<double> ms_x, ms_y;
     for (int k = 0; k < kTimingRepeats; ++k) {
-      if (!r.set_lab(hooks)) throw std::runtime_error(r.shader_error());  // forces the passes to run again
+      ctx.use(hooks);  // forces the passes to run again
       const long before = r.stats().blur_passes;
       r.render(p, request);
       blur_passes_run += r.stats().blur_passes - before;
@@ -177,10 +177,10 @@ Lab make_lab_moment_blur() {
       {"tuned", "The lab's defaults, radius 4 and sigma 2: soft edges, little bleeding.",
        {{"vsm.blur_radius", "4"}, {"vsm.blur_sigma", "2"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
     hooks.technique = ShadowTechnique::Moments;
-    if (impl == Impl::Exercise) hooks.includes["lab/blur.glsl"] = kExercise;
+    hooks.includes["lab/blur.glsl"] = files.at(0).string();
     return hooks;
   };
   lab.check = check_moment_blur;

@@ -42,7 +42,7 @@ constexpr KernelCase kCases[] = {{"1", false}, {"3", false}, {"5", false}, {"7",
 void check_pcf(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   nlohmann::json kernels = nlohmann::json::array();
   std::printf("    PCF by kernel (%s, map %s):\n", impl_name(ctx.impl), params.get_choice("shadow.map_size").c_str());
   std::printf("      kernel  hw  acne      leak      mae_edge  mae_interior\n");
@@ -103,11 +103,8 @@ Lab make_lab_pcf() {
       {"wide", "9 x 9: wide soft edges, 81 taps per pixel.", {{"pcf.kernel", "9"}, {"pcf.hardware", "false"}}},
       {"hardware 2x2", "One sampler2DShadow tap: bilinear 2 x 2 PCF for free.", {{"pcf.kernel", "1"}, {"pcf.hardware", "true"}}},
   };
-  lab.hooks = [](Impl impl) {
-    LabHooks hooks;
-    hooks.includes["lab/visibility.glsl"] = impl == Impl::Exercise ? kExercise : kSolution;
-    return hooks;
-  };
+  lab.offered_includes = {"lab/bias.glsl"};
+  lab.make_hooks = visibility_lab_hooks();
   lab.check = check_pcf;
   return lab;
 }

@@ -29,7 +29,7 @@ struct SpotPlace {
 constexpr SpotPlace kPlaces[] = {{"high", 5.0f, 7.0f, 4.0f, 40.0f}, {"low", -4.0f, 2.0f, 3.5f, 60.0f}};
 
 void check_spot(CheckContext& ctx, CheckResult& result) {
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   for (const auto& place : kPlaces) {
     ParamSet p = ctx.params();
     p.set("view.debug_quad", 0.0);
@@ -79,7 +79,8 @@ Lab make_lab_spot_light() {
       {"low", "Low and near: the check's second place.", {{"light.position_x", "-5.5"}, {"light.position_y", "3.2"}, {"light.position_z", "3"}, {"light.cone_deg", "50"}}},
       {"narrow", "A 15-degree cone: the same texels on a small spot, crisp shadows.", {{"light.cone_deg", "15"}}},
   };
-  lab.hooks = visibility_lab_hooks(LightType::Spot, kExercise, kSolution);
+  lab.offered_includes = {"lab/bias.glsl"};
+  lab.make_hooks = visibility_lab_hooks(LightType::Spot);
   lab.check = check_spot;
   return lab;
 }

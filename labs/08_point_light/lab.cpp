@@ -31,7 +31,7 @@ constexpr float kCameraPitch = 60.0f;
 void check_point(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   const OrbitCamera camera = OrbitCamera::framing(ctx.scene().bounds(), 30.0f, kCameraPitch);
   Renderer& r = ctx.renderer;
   std::vector<float> faces[2][6];
@@ -93,7 +93,7 @@ Lab make_lab_point_light() {
       {"low", "Just above the ground: long shadows in every direction.", {{"light.position_y", "1.5"}}},
       {"one pass", "All six faces in one draw, the geometry shader choosing the layer.", {{"point.single_pass", "true"}}},
   };
-  lab.hooks = visibility_lab_hooks(LightType::Point, kExercise, kSolution);
+  lab.make_hooks = visibility_lab_hooks(LightType::Point);
   lab.check = check_point;
   return lab;
 }

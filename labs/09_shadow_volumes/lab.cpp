@@ -63,7 +63,7 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
 }
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
-  const LabHooks hooks = ctx.lab.hooks(ctx.impl);
+  const LabHooks hooks = ctx.hooks();
   BandSpec band;
   band.fixed_screen_pixels = kBandPixels;
   ParamSet base = ctx.params();
@@ -126,10 +126,10 @@ Lab make_lab_shadow_volumes() {
       {"z-pass", "Count the faces in front: right until the camera enters a volume.", {{"volume.method", "z-pass"}}},
       {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}}},
   };
-  lab.hooks = [](Impl impl) {
+  lab.make_hooks = [](const SlotFiles& files) {
     LabHooks hooks;
     hooks.technique = ShadowTechnique::ShadowVolumes;
-    if (impl == Impl::Exercise) hooks.includes["lab/volume.glsl"] = kExercise;
+    hooks.includes["lab/volume.glsl"] = files.at(0).string();
     return hooks;
   };
   lab.check = check_volumes;

@@ -1,0 +1,38 @@
+// Probes: a lab's GLSL function run on inputs the check chooses rather than on a scene, one fragment
+// per case, with the lab's own includes and include rules. A check compares the results with a CPU
+// reference of the same definition, so a function is graded everywhere in its domain, not only where
+// one scene happens to exercise it (e.g. a kernel's shape on straight edges at every orientation,
+// Chebyshev's bound at every mean, variance and depth).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl.h"
+#include "renderer/renderer.h"
+
+namespace shadowlab {
+
+struct ProbeRequest {
+  std::string fragment;            // e.g. "shaders/probe/visibility.frag"
+  std::vector<glm::vec4> in0, in1;  // per case: the shader's u_probe_in0 and u_probe_in1 (in1 may be empty)
+  // Sets the function's uniforms and textures on the bound program (texture units 0-3 are the
+  // check's; the probe's inputs use units 6 and 7).
+  std::function<void(GLuint program)> set_uniforms;
+};
+
+// Runs the probe with the hooks' includes (over the renderer's defaults for its technique and light)
+// and returns one value per case (the fragment's red channel). Throws BuildError when it does not build.
+std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request);
+
+// Sets a uniform by name on the bound program; a uniform the student's code does not use is optimised
+// away, which is fine (setting it is then a no-op).
+void set_uniform(GLuint program, const char* name, float value);
+void set_uniform(GLuint program, const char* name, int value);
+void set_uniform(GLuint program, const char* name, const glm::mat4& value);
+void set_uniform(GLuint program, const char* name, const glm::vec3& value);
+
+}  // namespace shadowlab

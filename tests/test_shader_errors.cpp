@@ -1,0 +1,200 @@
+// Compile errors point at the student's line, whatever the error's kind and wherever the file sits in
+// the include tree; the three common driver log formats are placed alike; a student's file includes
+// only what its lab offers.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "labs/lab.h"
+#include "renderer/renderer.h"
+#include "renderer/shader.h"
+#include "tests/gl_fixture.h"
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One kind of mistake: the lines a student writes into a `float student(float x)` function, the line
+// (1-based, within those lines) the compiler must point at, and something the message must mention.
+struct Mistake {
+  const char* kind;
+  const char* body;
+  int line;
+};
+
+// Mesa's messages differ by kind; the test holds the location to the student's file and line.
+const Mistake kMistakes[] = {
+    {"undeclared identifier", "  float y = x * 2.0;\n  return nope;\n", 2},
+    {"redeclaration", "  float a = x;\n  float a = 2.0;\n  return a;\n", 2},
+    {"type mismatch in an initialiser", "  float y = x;\n  float v = vec3(1.0);\n  return y;\n", 2},
+    {"missing semicolon", "  float y = x;\n  y = y * 2.0 return y;\n", 2},
+    {"wrong number of arguments", "  float y = x;\n  return max(y);\n", 2},
+    {"call to an undefined function", "  float y = x;\n  return shadow_lookup(y);\n", 2},
+    {"assignment to a constant", "  const float k = 1.0;\n  k = x;\n  return k;\n", 2},
+    {"returning the wrong type", "  float y = x;\n  return vec2(y);\n", 2},
+    {"unknown type", "  float y = x;\n  vec5 v;\n  return y;\n", 2},
+    {"float to int without a cast", "  float y = x;\n  int i = y;\n  return y;\n", 2},
+    {"swizzle out of range", "  vec2 v = vec2(x);\n  return v.z;\n", 2},
+    {"#error directive", "  float y = x;\n#error not finished yet\n  return y;\n", 2},
+    {"break outside a loop", "  float y = x;\n  break;\n  return y;\n", 2},
+    {"constant index out of range", "  float a[2] = float[2](x, x);\n  return a[3];\n", 2},
+};
+
+class CompileErrorTest : public GlTest, public ::testing::WithParamInterface<Mistake> {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    dir = fs::temp_directory_path() / ("shadowlab-compile-errors-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    write("grader.vert", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n");
+    // The grader's stage, like shaders/lit.frag: a few lines, then the lab's include, then more.
+    write("grader.frag",
+          "#version 330 core\n// the grader's own lines\nout vec4 o;\n#include \"lab/student.glsl\"\n"
+          "void main() {\n  o = vec4(student(gl_FragCoord.x));\n}\n");
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  void write(const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; }
+  ProgramBuild build(const fs::path& student, const std::string& helper_file = "") {
+    ProgramDesc desc{dir / "grader.vert", {}, dir / "grader.frag", {}, {{"lab/student.glsl", student}}, {}};
+    desc.rules.confined = {student};
+    if (!helper_file.empty()) {
+      desc.includes["lab/helper.glsl"] = dir / helper_file;
+      desc.rules.offered = {"lab/helper.glsl"};
+    }
+    return build_program(desc);
+  }
+  fs::path dir;
+};
+
+TEST_P(CompileErrorTest, InTheExerciseFileTheStudentsLineIsNamed) {
+  const Mistake& m = GetParam();
+  // Three lines of preamble, so the error's line differs from the grader's and from 1.
+  const int header = 3;
+  write("exercise.glsl", std::string("// exercise\nuniform float u_scale;\n\nfloat student(float x) {\n") + m.body + "}\n");
+  const ProgramBuild b = build(dir / "exercise.glsl");
+  ASSERT_FALSE(b.program) << m.kind << " compiled";
+  const std::string where = "exercise.glsl:" + std::to_string(header + 1 + m.line) + ":";
+  EXPECT_NE(b.error.find(where), std::string::npos) << m.kind << ": expected " << where << " in\n" << b.error;
+  EXPECT_EQ(b.error.find("grader.frag:"), std::string::npos) << m.kind << ": blamed the grader's file\n" << b.error;
+  // The quoted line is the student's.
+  std::string quoted = m.body;
+  for (int i = 1; i < m.line; ++i) quoted = quoted.substr(quoted.find('\n') + 1);
+  quoted = quoted.substr(0, quoted.find('\n'));
+  EXPECT_NE(b.error.find(std::to_string(header + 1 + m.line) + " | " + quoted), std::string::npos) << b.error;
+}
+
+TEST_P(CompileErrorTest, InAFileTheExerciseIncludesThatFileIsNamed) {
+  const Mistake& m = GetParam();
+  write("helper.glsl", std::string("// a helper the student wrote\nfloat helper(float x) {\n") + m.body + "}\n");
+  write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"\nfloat student(float x) { return helper(x); }\n");
+  const ProgramBuild b = build(dir / "exercise.glsl", "helper.glsl");
+  ASSERT_FALSE(b.program) << m.kind << " compiled";
+  const std::string where = "helper.glsl:" + std::to_string(2 + m.line) + ":";
+  EXPECT_NE(b.error.find(where), std::string::npos) << m.kind << ": expected " << where << " in\n" << b.error;
+  EXPECT_EQ(b.error.find("exercise.glsl:"), std::string::npos) << b.error;
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, CompileErrorTest, ::testing::ValuesIn(kMistakes),
+                         [](const ::testing::TestParamInfo<Mistake>& info) {
+                           std::string name;
+                           for (const char* c = info.param.kind; *c; ++c)
+                             name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+                           return name;
+                         });
+
+TEST_F(CompileErrorTest, WarningsArePlacedToo) {
+  // Mesa warns when an uninitialised variable is read: the student's line again. Mesa's shader cache
+  // gives no log for a shader it has compiled before, so this source is new on every run.
+  const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
+  write("exercise.glsl", "// exercise " + std::to_string(now) + "\nfloat student(float x) {\n  float y;\n  return y + x;\n}\n");
+  const ProgramBuild b = build(dir / "exercise.glsl");
+  ASSERT_TRUE(b.program) << b.error;
+  EXPECT_NE(b.warnings.find("exercise.glsl:4:"), std::string::npos) << b.warnings;
+  EXPECT_NE(b.warnings.find("warning:"), std::string::npos) << b.warnings;
+}
+
+// Each driver's log format, placed in the same file table: file k's line n is k * stride + n.
+TEST(ShaderLog, EveryCommonDriverFormatIsPlaced) {
+  const std::vector<fs::path> files = {"shaders/lit.frag", "labs/06_pcf/exercise.glsl"};
+  const int line = kShaderLineStride + 12;
+  struct Case {
+    const char* driver;
+    std::string log;
+    int column;
+    bool error;
+  };
+  const Case cases[] = {
+      {"Mesa", "0:" + std::to_string(line) + "(7): error: `nope' undeclared", 7, true},
+      {"Mesa, another source string", "3:" + std::to_string(line) + "(7): error: `nope' undeclared", 7, true},
+      {"Mesa warning", "0:" + std::to_string(line) + "(3): warning: `y' used uninitialized", 3, false},
+      {"NVIDIA", "0(" + std::to_string(line) + ") : error C1008: undefined variable \"nope\"", 0, true},
+      {"NVIDIA warning", "0(" + std::to_string(line) + ") : warning C7050: \"y\" might be used before being initialized", 0,
+       false},
+      {"AMD / Intel / Apple / glslang", "ERROR: 0:" + std::to_string(line) + ": 'nope' : undeclared identifier", 0, true},
+      {"glslang warning", "WARNING: 0:" + std::to_string(line) + ": 'y' : used before set", 0, false},
+      {"Windows line ending", "ERROR: 0:" + std::to_string(line) + ": 'nope' : undeclared identifier\r", 0, true},
+  };
+  for (const auto& c : cases) {
+    const auto d = parse_shader_log(c.log + "\n", files);
+    ASSERT_EQ(d.size(), 1u) << c.driver;
+    EXPECT_EQ(d[0].file, files[1]) << c.driver;
+    EXPECT_EQ(d[0].line, 12) << c.driver;
+    EXPECT_EQ(d[0].column, c.column) << c.driver;
+    EXPECT_EQ(d[0].error, c.error) << c.driver;
+    EXPECT_NE(d[0].to_string().find("labs/06_pcf/exercise.glsl:12"), std::string::npos) << d[0].to_string();
+  }
+  // A line no format matches is kept, unplaced, rather than lost.
+  const auto other = parse_shader_log("error: linking failed\n", files);
+  ASSERT_EQ(other.size(), 1u);
+  EXPECT_TRUE(other[0].file.empty());
+  EXPECT_EQ(other[0].to_string(), "error: linking failed\n");
+}
+
+// A student's file includes only what its lab offers: no solution, no absolute path, no "..".
+class IncludeConfinementTest : public CompileErrorTest {};
+
+TEST_F(IncludeConfinementTest, OnlyOfferedNamesAreFollowed) {
+  write("helper.glsl", "float helper(float x) { return x; }\n");
+  write("secret.glsl", "this line must never be quoted\n");
+  const std::pair<const char*, const char*> refused[] = {
+      {"shadow/pcf.glsl", "is not offered by this lab"},
+      {"solution.glsl", "is not offered by this lab"},
+      {"/etc/passwd", "an absolute path is not allowed"},
+      {"../secret.glsl", "may not leave its folder"},
+      {"lab/../secret.glsl", "may not leave its folder"},
+  };
+  for (const auto& [name, why] : refused) {
+    write("exercise.glsl", std::string("// exercise\n#include \"") + name + "\"\nfloat student(float x) { return x; }\n");
+    const ProgramBuild b = build(dir / "exercise.glsl", "helper.glsl");
+    EXPECT_FALSE(b.program) << name;
+    EXPECT_NE(b.error.find("exercise.glsl:2:"), std::string::npos) << b.error;
+    EXPECT_NE(b.error.find(why), std::string::npos) << name << ": " << b.error;
+    EXPECT_EQ(b.error.find("must never be quoted"), std::string::npos) << b.error;
+    EXPECT_EQ(b.error.find("root:"), std::string::npos) << b.error;
+  }
+  write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"\nfloat student(float x) { return helper(x); }\n");
+  const ProgramBuild ok = build(dir / "exercise.glsl", "helper.glsl");
+  EXPECT_TRUE(ok.program) << ok.error;
+}
+
+// Through a real lab: lab 6's exercise, as a submission's file that includes the renderer's own PCF.
+TEST_F(IncludeConfinementTest, AnExerciseCannotIncludeTheSolution) {
+  const Lab& pcf = *find_lab(6);
+  const fs::path submitted = dir / "labs" / "06_pcf" / "exercise.glsl";
+  fs::create_directories(submitted.parent_path());
+  std::ofstream(submitted) << "// borrowing the answer\n#include \"shadow/pcf.glsl\"\n";
+  Renderer r;
+  EXPECT_FALSE(r.set_lab(pcf.hooks_for({submitted})));
+  EXPECT_NE(r.shader_error().find("exercise.glsl:2:"), std::string::npos) << r.shader_error();
+  EXPECT_NE(r.shader_error().find("not offered"), std::string::npos) << r.shader_error();
+  // The solution itself may include what it likes.
+  EXPECT_TRUE(r.set_lab(pcf.hooks(Impl::Solution))) << r.shader_error();
+}
+
+}  // namespace
+}  // namespace shadowlab
