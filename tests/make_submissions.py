@@ -227,6 +227,7 @@ def main():
             kind = "refused.zip"
             for entry in record.values():
                 entry.update({"kind": "refused", "status": "failed"})
+                entry.pop("line", None)
         elif forms.get(s) == "zip" or (s not in forms and r < 0.10):
             kind = "zip"
         elif forms.get(s) == "tar.gz" or (s not in forms and r < 0.15):
