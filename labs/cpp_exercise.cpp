@@ -126,10 +126,15 @@ void CppExercise::build() {
 
   // 1. Compile the student's file alone, with the grader's headers (quoted includes only) and flags.
   const fs::path object = work_ / "exercise.o", compile_log = work_ / "compile.log";
-  std::vector<std::string> compile = {SHADOWLAB_CXX, "-std=c++20", "-O1", "-g0", "-fno-diagnostics-color",
+  std::vector<std::string> compile = {SHADOWLAB_CXX, "-fno-diagnostics-color",
                                       "-fmax-errors=10"};
   std::istringstream flags(SHADOWLAB_EXERCISE_CXX_FLAGS);
   for (std::string f; flags >> f;) compile.push_back(f);
+  const fs::path pch = fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / (spec_.host + ".h");
+  if (fs::exists(pch.string() + ".gch")) {  // the lab's headers precompiled (labs/CMakeLists.txt)
+    compile.push_back("-include");
+    compile.push_back(pch.string());
+  }
   for (const std::string& f : {std::string("-iquote"), data_dir().string(), std::string("-c"), spec_.source.string(),
                                std::string("-o"), object.string()})
     compile.push_back(f);
@@ -181,7 +186,7 @@ void CppExercise::call_raw(const void* request, std::size_t request_size, void* 
   if (io == Io::Ok) return;
   const platform::ChildOutcome o = child_.finish();
   if (io == Io::TimedOut)
-    throw ExerciseError("timed_out", spec_.display_name + ": one call did not return within " +
+    throw ExerciseError("timed_out", spec_.display_name + ": the exercise did not return within " +
                                          std::to_string(static_cast<int>(spec_.call_seconds)) + " s (an endless loop?)");
   std::string how = o.kind == platform::ChildOutcome::Kind::Signalled
                         ? "crashed: " + o.signal_name

@@ -41,7 +41,7 @@ struct CppExerciseSpec {
   std::vector<std::string> headers;  // quoted includes it may use, relative to the data folder
   std::vector<std::string> offered;  // the grader's functions it may call ("shadowlab::orthonormal_basis")
   double compile_seconds = 60.0;     // each of compiling and linking
-  double call_seconds = 10.0;        // one call
+  double call_seconds = 10.0;        // one call, or one batch of calls
 };
 
 class CppExercise {
@@ -57,6 +57,13 @@ class CppExercise {
     Reply reply;
     call_raw(&request, sizeof request, &reply, sizeof reply);
     return reply;
+  }
+  // Many requests in one exchange (one round trip instead of one each), within the same time limit.
+  template <typename Reply, typename Request>
+  std::vector<Reply> call_many(const std::vector<Request>& requests) {
+    std::vector<Reply> replies(requests.size());
+    call_raw(requests.data(), sizeof(Request) * requests.size(), replies.data(), sizeof(Reply) * replies.size());
+    return replies;
   }
 
  private:

@@ -243,31 +243,29 @@ PipeChild::Io PipeChild::call(const void* request, std::size_t request_size, voi
                               double seconds) {
   if (pid_ < 0 || finished_) return Io::Closed;
   const double deadline = now_seconds() + seconds;
-  auto wait_ready = [&](short events) -> Io {
-    for (;;) {
-      const int ms = static_cast<int>((deadline - now_seconds()) * 1000.0);
-      if (ms <= 0) return Io::TimedOut;
-      struct pollfd p = {to_child_, events, 0};
-      const int r = ::poll(&p, 1, ms);
-      if (r > 0) return Io::Ok;
-      if (r < 0 && errno != EINTR) return Io::Closed;
-    }
-  };
   const auto* out = static_cast<const char*>(request);
-  for (std::size_t sent = 0; sent < request_size;) {
-    if (Io w = wait_ready(POLLOUT); w != Io::Ok) return w;
-    const ssize_t n = ::send(to_child_, out + sent, request_size - sent, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return Io::Closed;
-    sent += static_cast<std::size_t>(n);
-  }
   auto* in = static_cast<char*>(reply);
-  for (std::size_t got = 0; got < reply_size;) {
-    if (Io w = wait_ready(POLLIN); w != Io::Ok) return w;
-    const ssize_t n = ::recv(from_child_, in + got, reply_size - got, 0);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return Io::Closed;
-    got += static_cast<std::size_t>(n);
+  std::size_t sent = 0, got = 0;
+  // Sending and receiving interleaved: a batch of requests larger than the socket's buffers would
+  // otherwise leave both sides waiting for the other to read.
+  while (got < reply_size) {
+    const int ms = static_cast<int>((deadline - now_seconds()) * 1000.0);
+    if (ms <= 0) return Io::TimedOut;
+    struct pollfd p = {to_child_, static_cast<short>(POLLIN | (sent < request_size ? POLLOUT : 0)), 0};
+    const int r = ::poll(&p, 1, ms);
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) return Io::Closed;
+    if (r == 0) continue;
+    if ((p.revents & POLLOUT) && sent < request_size) {
+      const ssize_t n = ::send(to_child_, out + sent, request_size - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+      if (n > 0) sent += static_cast<std::size_t>(n);
+      else if (n < 0 && errno != EAGAIN && errno != EINTR) return Io::Closed;
+    }
+    if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
+      const ssize_t n = ::recv(from_child_, in + got, reply_size - got, MSG_DONTWAIT);
+      if (n > 0) got += static_cast<std::size_t>(n);
+      else if (n == 0 || (errno != EAGAIN && errno != EINTR)) return Io::Closed;
+    }
   }
   return Io::Ok;
 }

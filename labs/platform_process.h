@@ -56,7 +56,8 @@ class PipeChild {
   bool start(const std::vector<std::string>& argv, const ChildLimits& limits, const std::filesystem::path& stderr_file,
              std::string& error);
   enum class Io { Ok, Closed, TimedOut };
-  // Writes `request` and reads exactly `reply_size` bytes back, waiting at most `seconds` in all.
+  // Writes `request` and reads exactly `reply_size` bytes back (both at once: a batch of many requests
+  // and their replies), waiting at most `seconds` in all.
   Io call(const void* request, std::size_t request_size, void* reply, std::size_t reply_size, double seconds);
   // Kills the child (if still running) and says how it ended.
   ChildOutcome finish();

@@ -86,7 +86,7 @@ syntax|compile_error|labs/02_ortho_fit/exercise.cpp:$line:
 semantic|compile_error|undeclared_name
 crash|crashed|SIGSEGV
 forbidden|crashed|SIGSYS
-loop|timed_out|did not return within
+loop|timed_out|the exercise did not return within
 solution|compile_error|calls shadowlab::fit_light_ortho
 include|compile_error|may include only
 ctor|compile_error|runs before the exercise is called

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "renderer/light.h"
 
@@ -27,6 +28,9 @@ struct FitVerification {
   double worst_excess = 0.0;  // largest |coordinate| - 1 over all corners (> 0: outside)
   double worst_gap = 0.0;     // largest 1 - max|coordinate| over axes (> 0: not tight)
 };
+
+// The directions verify_light_fit tries: the six axes, then `random_directions` from a fixed seed.
+std::vector<glm::vec3> fit_test_directions(int random_directions = 10000);
 
 // Fits the box for 10,000 random directions plus the six axis directions and checks that every corner
 // maps into [-1, 1]^3 within `tolerance` and touches the boundary on each axis.
