@@ -86,18 +86,17 @@ std::string input_fingerprint(const Run& run, const Lab& lab, const fs::path& ro
   return f.hex();
 }
 
-// The criteria of the check's JSON for one lab: [{metric, value, op, limit, passed, why, advice}].
+// The criteria of the check's JSON for one lab, as the reports give them:
+// [{metric, value, op ("<=" or ">="), limit, passed, sentence, why}] (sentence: the fact, and what to
+// change when it failed).
 json criteria_of(const json& lab) {
-  if (lab.contains("criteria") && lab["criteria"].is_array()) return lab["criteria"];
-  json out = json::array();  // older form: thresholds keyed by metric, values among the metrics
-  const json thresholds = lab.value("thresholds", json::object()), metrics = lab.value("metrics", json::object());
-  for (const auto& [metric, t] : thresholds.items()) {
-    const bool at_most = t.contains("max");
-    const double limit = at_most ? t["max"].get<double>() : t.value("min", 0.0);
-    const json value = metrics.contains(metric) ? metrics[metric] : json();
-    const bool passed = value.is_number() && (at_most ? value.get<double>() <= limit : value.get<double>() >= limit);
-    out.push_back({{"metric", metric}, {"value", value}, {"op", at_most ? "<=" : ">="}, {"limit", limit},
-                   {"passed", passed}, {"why", t.value("why", "")}, {"advice", t.value("advice", "")}});
+  json out = json::array();
+  for (const auto& c : lab.value("criteria", json::array())) {
+    const bool at_most = c.contains("max");
+    out.push_back({{"metric", c.value("metric", "")}, {"value", c.value("value", json())},
+                   {"op", at_most ? "<=" : ">="}, {"limit", at_most ? c["max"] : c.value("min", json())},
+                   {"passed", c.value("passed", false)}, {"sentence", c.value("sentence", "")},
+                   {"why", c.value("why", "")}});
   }
   return out;
 }
@@ -107,10 +106,7 @@ std::string failed_criteria_text(const json& criteria) {
   std::string first;
   for (const auto& c : criteria) {
     if (c.value("passed", false)) continue;
-    if (++failed == 1) {
-      const std::string advice = c.value("advice", "");
-      first = c.value("metric", "") + (advice.empty() ? "" : ": " + advice);
-    }
+    if (++failed == 1) first = c.value("sentence", c.value("metric", ""));
   }
   return std::to_string(failed) + " of " + std::to_string(criteria.size()) + " criteria failed; first: " + first;
 }

@@ -74,16 +74,12 @@ std::string xml_text(const std::string& s) {
   return out;
 }
 
-// What a student reads about one lab: the status, the message, each failed criterion with its advice.
+// What a student reads about one lab: the status, the message, and each failed criterion's sentence
+// (the measured fact, the limit and what to change).
 std::string lab_output(const json& record) {
   std::string out = record.value("status", "") + ": " + record.value("message", "");
-  for (const auto& c : record.value("criteria", json::array())) {
-    if (c.value("passed", false)) continue;
-    out += "\n- " + c.value("metric", "") + " = " + number_text(c["value"]) + " (" + c.value("op", "") + " " +
-           number_text(c["limit"]) + ")";
-    const std::string advice = c.value("advice", "");
-    if (!advice.empty()) out += ": " + advice;
-  }
+  for (const auto& c : record.value("criteria", json::array()))
+    if (!c.value("passed", false)) out += "\n- " + c.value("sentence", c.value("metric", ""));
   return out;
 }
 
