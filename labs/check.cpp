@@ -149,7 +149,7 @@ void require_measurable(CheckResult& result, const std::string& tag, const Metri
 }
 
 CheckContext::CheckContext(Renderer& r, const Lab& l, Impl i, const Scene& default_scene, std::filesystem::path out)
-    : renderer(r), lab(l), impl(i), out_dir(std::move(out)), graded(l.files(i)), scene_(&default_scene) {}
+    : renderer(r), lab(l), impl(i), out_dir(std::move(out)), graded(l.files(i)), default_scene_(&default_scene), scene_(&default_scene) {}
 
 void CheckContext::grade_submission(const std::filesystem::path& folder) {
   impl = Impl::Exercise;
@@ -176,6 +176,22 @@ ParamSet CheckContext::params() const {
 void CheckContext::use_scene(const Scene& scene) {
   owned_scene_ = std::make_unique<Scene>(scene);
   scene_ = owned_scene_.get();
+  ++scene_generation_;
+  oracle_.reset();
+}
+
+void CheckContext::use_default_scene() {
+  if (scene_ == default_scene_) return;
+  scene_ = default_scene_;
+  owned_scene_.reset();
+  ++scene_generation_;
+  oracle_.reset();
+}
+
+void CheckContext::use_scene_named(const std::string& name) {
+  if (name == "default") return use_default_scene();
+  if (name == "stacked") return use_scene(make_stacked_occluders_scene());
+  throw std::invalid_argument("no built-in scene named " + name);
   oracle_.reset();
 }
 
@@ -232,9 +248,9 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const La
   using clock = std::chrono::steady_clock;
   Measurement m;
   use(hooks);
-  if (uploaded_ != scene_) {
+  if (uploaded_generation_ != scene_generation_) {
     renderer.set_scene(*scene_);
-    uploaded_ = scene_;
+    uploaded_generation_ = scene_generation_;
   }
   FrameRequest request;
   request.camera = camera ? *camera : OrbitCamera::framing(view ? *view : scene_->bounds());
@@ -267,6 +283,38 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const La
     images.push_back(diff_path.string());
   }
   return m;
+}
+
+nlohmann::json DirectionalCase::to_json() const {
+  return {{"tag", tag}, {"scene", scene}, {"light_azimuth", azimuth}, {"light_elevation", elevation}, {"map_size", map_size}};
+}
+
+ParamSet DirectionalCase::apply(CheckContext& ctx, const ParamSet& params) const {
+  ctx.use_scene_named(scene);
+  ParamSet p = params;
+  p.set("light.azimuth", azimuth);
+  p.set("light.elevation", elevation);
+  p.set_from_string("shadow.map_size", map_size);
+  return p;
+}
+
+std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges) {
+  std::mt19937 rng = ctx.held_out_rng();
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  auto pick = [&](const std::vector<std::string>& list) {
+    return list.at(std::uniform_int_distribution<std::size_t>(0, list.size() - 1)(rng));
+  };
+  std::vector<DirectionalCase> cases;
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    DirectionalCase c;
+    c.tag = "held_out_" + std::to_string(i + 1);
+    c.elevation = ranges[i].min_elevation + (ranges[i].max_elevation - ranges[i].min_elevation) * unit(rng);
+    c.azimuth = 360.0f * unit(rng);
+    c.map_size = pick(ranges[i].map_sizes);
+    c.scene = pick(ranges[i].scenes);
+    cases.push_back(c);
+  }
+  return cases;
 }
 
 CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run) {

@@ -66,6 +66,15 @@ struct CheckResult {
   nlohmann::json to_json() const;
 };
 
+// The band the checks grade with: 2 shadow-map texels around true shadow edges, and pixels the light
+// grazes beyond 84 degrees (n . l < 0.1, where the taught slope bias stops growing: tan capped at 10).
+inline constexpr float kGrazingNdotL = 0.1f;
+inline BandSpec grading_band() {
+  BandSpec band;
+  band.grazing_n_dot_l = kGrazingNdotL;
+  return band;
+}
+
 // What a lab's check gets: a renderer in a headless context, the scene, the oracle for it, and the files
 // being graded.
 class CheckContext {
@@ -95,6 +104,12 @@ class CheckContext {
   // The scene to grade on (--scene, or the lab's own choice of built-in scene).
   const Scene& scene() const { return *scene_; }
   void use_scene(const Scene& scene);
+  void use_default_scene();  // back to --scene or the built-in default
+  // A named scene for held-out conditions: "default" (as use_default_scene) or "stacked" (occluders at
+  // three heights over a receiver).
+  void use_scene_named(const std::string& name);
+  // A random engine for held-out conditions, from the seed and the lab's number.
+  std::mt19937 held_out_rng() const { return std::mt19937(seed * 1000003u + static_cast<std::uint32_t>(lab.number)); }
   const Oracle& oracle();
   // The lab's parameters with the command line's --set values applied.
   ParamSet params() const;
@@ -113,14 +128,16 @@ class CheckContext {
   // A spot light lights only its cone: pixels outside it (and within kSpotConeMarginDeg of its rim, where
   // the shader's and this test's rounding may differ) are not graded. `camera` replaces the framing.
   Measurement measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
-                      const Bounds* view = nullptr, const BandSpec& band = {}, int width = 960, int height = 540,
+                      const Bounds* view = nullptr, const BandSpec& band = grading_band(), int width = 960, int height = 540,
                       const OrbitCamera* camera = nullptr);
 
   std::vector<std::string> images;
 
  private:
+  const Scene* default_scene_;
   const Scene* scene_;
-  const Scene* uploaded_ = nullptr;  // the scene the renderer holds now
+  int scene_generation_ = 0;     // bumped by every use_scene*
+  int uploaded_generation_ = -1;  // the generation the renderer holds now
   std::unique_ptr<Scene> owned_scene_;
   std::unique_ptr<Oracle> oracle_;
 };
@@ -142,6 +159,28 @@ struct HardLimits {
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits = {});
 // Only the "not measurable" criterion, for measurements graded otherwise.
 void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m);
+
+// A held-out condition for a directional light: a scene, a light direction and a map size the lab's
+// text does not fix, drawn from the seed and recorded in the result's "conditions".
+struct DirectionalCase {
+  std::string tag;    // "held_out_1", ...
+  std::string scene;  // "default" or "stacked" (see CheckContext::use_scene_named)
+  float azimuth = 0.0f, elevation = 45.0f;
+  std::string map_size;  // a shadow.map_size choice
+  nlohmann::json to_json() const;
+  // The parameters with this case's light and map size (and the case's scene made current in ctx).
+  ParamSet apply(CheckContext& ctx, const ParamSet& params) const;
+};
+
+// Where one held-out case is drawn from: an elevation range, map sizes and scenes to pick from.
+struct HeldOutRange {
+  float min_elevation = 0.0f, max_elevation = 90.0f;
+  std::vector<std::string> map_sizes;
+  std::vector<std::string> scenes;
+};
+// One case per range (so low and high lights are always both there), azimuth uniform, the rest picked
+// from the range's lists, all drawn from the seed.
+std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.
 struct CheckRun {

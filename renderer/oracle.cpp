@@ -221,6 +221,7 @@ Truth Oracle::evaluate(const GBuffer& gbuffer, const OracleLight& light, const B
   truth.valid.assign(count, 0);
   truth.lit.assign(count, 0);
   truth.interior.assign(count, 0);
+  std::vector<std::uint8_t> grazing(band.grazing_n_dot_l > 0.0f ? count : 0, 0);
 
   // The band circle, sampled at fixed angles.
   const bool screen_band = band.fixed_screen_pixels > 0;
@@ -277,6 +278,10 @@ Truth Oracle::evaluate(const GBuffer& gbuffer, const OracleLight& light, const B
     const bool shadowed = shadowed_from(p, n);
     truth.lit[i] = shadowed ? 0 : 1;
     std::uint64_t rays = 1;
+    if (n_dot_l < band.grazing_n_dot_l) {
+      grazing[i] = 1;
+      return rays;  // in the band whatever its neighbours
+    }
     if (screen_band) return rays;  // classified once every pixel is known
     if (band_is_everything) return rays;  // interior stays 0
     if (band_is_point || samples == 0) {
@@ -378,7 +383,7 @@ Truth Oracle::evaluate(const GBuffer& gbuffer, const OracleLight& light, const B
         if (!truth.valid[i]) continue;
         const std::size_t x0 = x > k ? x - k : 0, x1 = std::min(width - 1, x + k);
         const std::uint32_t others = box(truth.lit[i] ? shadow_sum : lit_sum, x0, y0, x1, y1);
-        truth.interior[i] = others == 0 ? 1 : 0;
+        truth.interior[i] = others == 0 && (grazing.empty() || !grazing[i]) ? 1 : 0;
       }
     }
   }

@@ -43,6 +43,10 @@ struct BandSpec {
   // The benchmark instead uses a band of fixed width in screen pixels (so map sizes compare fairly):
   // when > 0, a pixel is in the band if the truth changes within this many screen pixels of it.
   int fixed_screen_pixels = 0;
+  // Pixels lit at a grazing angle, n . l below this, join the band (graded only in the "all" rates):
+  // a surface the light barely reaches gets almost none of it, and every shadow-map bias that keeps
+  // shadows attached leaves some acne there. 0 grades them all.
+  float grazing_n_dot_l = 0.0f;
 };
 
 struct Truth {

@@ -293,6 +293,38 @@ TEST(Oracle, BackFacingAndBackgroundPixelsAreInvalid) {
   EXPECT_EQ(w.rays, 0u);
 }
 
+// Grazing pixels (n . l below the limit) join the band in both band modes; they stay valid and keep
+// their truth, so the rates over all pixels still see them.
+TEST(Oracle, GrazingPixelsJoinTheBand) {
+  const Oracle oracle(square_scene());
+  GBuffer g;
+  g.width = 5;
+  g.height = 1;
+  // Lit ground, a grazing lit pixel (normal 87 degrees from the light), lit ground, nothing, shadowed
+  // ground under the box: with a band of one screen pixel only pixel 1's own angle can put it in the band.
+  const float grazing = 0.05f;
+  g.position = {{3, 0, 3}, {3.1f, 0, 3}, {3.2f, 0, 3}, {0, 0, 0}, {0, 0, 0}};
+  g.normal = {{0, 1, 0}, glm::normalize(glm::vec3(std::sqrt(1 - grazing * grazing), grazing, 0)), {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+  g.covered = {1, 1, 1, 0, 1};
+  BandSpec band;
+  band.fixed_screen_pixels = 1;
+  const Truth all = oracle.evaluate(g, light_from_above(0.05f), band);
+  EXPECT_EQ(all.interior, (std::vector<std::uint8_t>{1, 1, 1, 0, 1}));
+  band.grazing_n_dot_l = 0.1f;
+  const Truth t = oracle.evaluate(g, light_from_above(0.05f), band);
+  EXPECT_EQ(t.valid, all.valid);
+  EXPECT_EQ(t.lit, (std::vector<std::uint8_t>{1, 1, 1, 0, 0}));
+  EXPECT_EQ(t.interior, (std::vector<std::uint8_t>{1, 0, 1, 0, 1}));
+  // The texel band too: the grazing pixel is in it, the others are as without the limit.
+  BandSpec texels;
+  const Truth u0 = oracle.evaluate(g, light_from_above(0.05f), texels);
+  texels.grazing_n_dot_l = 0.1f;
+  const Truth u = oracle.evaluate(g, light_from_above(0.05f), texels);
+  EXPECT_EQ(u.lit, u0.lit);
+  EXPECT_EQ(u.interior[1], 0);
+  for (std::size_t i : {0u, 2u, 4u}) EXPECT_EQ(u.interior[i], u0.interior[i]) << i;
+}
+
 TEST(Oracle, OccludedSegment) {
   const Oracle oracle(square_scene());
   const glm::vec3 up(0, 1, 0);

@@ -42,22 +42,40 @@ class CullDirective {
 constexpr const char* kExercise = "labs/01_bias_tuning/exercise.glsl";
 constexpr const char* kSolution = "labs/01_bias_tuning/solution.glsl";
 
-// Targets from the issue; measured figures are in the lab's README.
-constexpr double kMaxAcne = 0.001;
-constexpr double kMaxLeak = 0.005;
+// A constant that works at one light and one map size fails at another: the held-out cases span low
+// and high lights (the depth change across one texel grows with tan(angle of incidence)) and coarse and
+// fine maps (a texel's size), on both built-in scenes. The lowest light stays above 6 degrees: below
+// 5.7 the ground itself is lit beyond 84 degrees of incidence, which no check grades (grading_band());
+// below 15 degrees the stacked scene's shadows leave its receiver, so only the default scene is used.
+const std::vector<HeldOutRange> kHeldOut = {{6.0f, 9.0f, {"512", "1024"}, {"default"}},
+                                            {9.0f, 20.0f, {"256", "512", "1024", "2048"}, {"default"}},
+                                            {20.0f, 45.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}},
+                                            {45.0f, 80.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}}};
 
 void check_bias(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
-  const auto m = ctx.measure(params, ctx.hooks(), "lab01_grazing");
-  result.metrics = to_json(m.metrics);
-  result.metrics["render_ms"] = m.render_ms;
-  result.metrics["oracle_ms"] = m.oracle_ms;
-  result.criteria = {
-      {"acne_rate", m.metrics.acne_rate, Criterion::kAtMost, kMaxAcne, "issue target 0.1 %"},
-      {"leak_rate", m.metrics.leak_rate, Criterion::kAtMost, kMaxLeak, "issue target 0.5 %"},
-  };
+  const LabHooks hooks = ctx.hooks();
+  const HardLimits limits;
+  const auto m = ctx.measure(params, hooks, "lab01_grazing");
+  grade_hard_shadow(result, "grazing", m.metrics, limits);
+  result.metrics["grazing"]["render_ms"] = m.render_ms;
+  result.metrics["grazing"]["oracle_ms"] = m.oracle_ms;
+  for (const auto& c : draw_directional_cases(ctx, kHeldOut)) {
+    const auto h = ctx.measure(c.apply(ctx, params), hooks, "lab01_" + c.tag);
+    grade_hard_shadow(result, c.tag, h.metrics, limits);
+    result.conditions.push_back(c.to_json());
+  }
+  ctx.use_default_scene();
+  for (auto& c : result.criteria) {
+    if (c.metric.ends_with(".lit_error"))
+      c.advice = "acne: the bias is too small for this light or map size. Make it grow with the slope (tan of the angle "
+                 "of incidence) and with the texel's size (u_texel_depth), not a constant tuned to one light.";
+    if (c.metric.ends_with(".shadow_error"))
+      c.advice = "shadows detach (peter-panning): the bias is too large here. Scale the slope term by the texel's "
+                 "size (u_texel_depth) and cap tan near grazing angles; check the culling too.";
+  }
 }
 
 }  // namespace

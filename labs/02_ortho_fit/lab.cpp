@@ -151,7 +151,7 @@ void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::strin
   LabHooks fitted = ctx.hooks();
   LabHooks fixed = fitted;
   fixed.light_fit = [](const Bounds&, const glm::vec3& to_light) { return fixed_tutorial_ortho(to_light); };
-  BandSpec band;
+  BandSpec band = grading_band();
   band.fixed_screen_pixels = kBandPixels;
   const auto m_fit = ctx.measure(params, fitted, "lab02_" + tag + "_" + impl_name(ctx.impl), view, band);
   const auto m_fixed = ctx.measure(params, fixed, "lab02_" + tag + "_fixed", view, band);

@@ -64,7 +64,7 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
   const LabHooks hooks = ctx.hooks();
-  BandSpec band;
+  BandSpec band = grading_band();
   band.fixed_screen_pixels = kBandPixels;
   ParamSet base = ctx.params();
   base.set("view.volumes", 0.0);

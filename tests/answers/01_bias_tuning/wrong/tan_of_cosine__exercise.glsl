@@ -1,0 +1,11 @@
+// wrong: takes tan(n.l), treating the cosine as if it were the angle
+// expect: units
+#define SHADOW_PASS_CULL NONE
+
+uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection
+uniform float u_bias_slope;     // slider "Slope bias", in shadow-map texels
+uniform float u_texel_depth;    // one shadow-map texel's world size, in depth units
+
+float shadow_bias(float n_dot_l) {
+  return u_bias_constant + u_bias_slope * u_texel_depth * tan(n_dot_l);
+}

@@ -1,0 +1,12 @@
+// wrong: tan(a) without the cap: at a grazing light the bias grows without bound and nothing there can be shadowed
+// expect: compile-fine-but-wrong-formula
+#define SHADOW_PASS_CULL NONE
+
+uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection
+uniform float u_bias_slope;     // slider "Slope bias", in shadow-map texels
+uniform float u_texel_depth;    // one shadow-map texel's world size, in depth units
+
+float shadow_bias(float n_dot_l) {
+  float tan_a = sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l;
+  return u_bias_constant + u_bias_slope * u_texel_depth * tan_a;
+}

@@ -1,0 +1,17 @@
+// wrong: slope-scaled bias, but keeps the tutorial's floor max(bias, 0.005): a constant tuned for one depth range that overrides the sliders
+// expect: tuned-to-scene
+#define SHADOW_PASS_CULL NONE
+
+uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection
+uniform float u_bias_slope;     // slider "Slope bias", in shadow-map texels
+uniform float u_texel_depth;    // one shadow-map texel's world size, in depth units
+
+// tan(a) from cos(a) = n.l, capped near 84 degrees
+float tan_incidence(float n_dot_l) {
+  float c = max(n_dot_l, 1e-4);
+  return min(sqrt(max(1.0 - c * c, 0.0)) / c, 10.0);
+}
+
+float shadow_bias(float n_dot_l) {
+  return max(u_bias_constant + u_bias_slope * u_texel_depth * tan_incidence(n_dot_l), 0.005);
+}

@@ -1,0 +1,33 @@
+// right: glm::lookAt(C, C - Z, up = Y) with Y from orthonormal_basis: lookAt's rows are then exactly X, Y, Z, and the up vector is never parallel to the light
+// expect: variant
+#include "labs/02_ortho_fit/ortho_fit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowlab {
+
+LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light) {
+  const glm::vec3 C = bounds.center();
+  const glm::vec3 Z = glm::normalize(to_light);
+  const glm::mat3 basis = orthonormal_basis(Z);
+  const glm::vec3 X = basis[0], Y = basis[1];
+  float hx = 0.0f, hy = 0.0f, hz = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 d = bounds.corner(i) - C;
+    hx = std::max(hx, std::abs(glm::dot(d, X)));
+    hy = std::max(hy, std::abs(glm::dot(d, Y)));
+    hz = std::max(hz, std::abs(glm::dot(d, Z)));
+  }
+  LightView out;
+  out.view = glm::lookAt(C, C - Z, Y);  // eye at the centre, looking along the light
+  out.projection = glm::ortho(-hx, hx, -hy, hy, -hz, hz);
+  out.image_x = X;
+  out.image_y = Y;
+  out.world_size = glm::vec2(2.0f * hx, 2.0f * hy);
+  return out;
+}
+
+}  // namespace shadowlab

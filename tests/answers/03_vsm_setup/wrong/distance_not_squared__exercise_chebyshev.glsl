@@ -1,0 +1,10 @@
+// wrong: sigma^2 / (sigma^2 + |z - mu|): the distance to the mean not squared
+// expect: compile-fine-but-wrong-formula
+uniform float u_min_variance;  // slider "Minimum variance"
+
+float chebyshev_upper_bound(vec2 moments, float z) {
+  float mu = moments.x;
+  float variance = max(moments.y - mu * mu, u_min_variance);
+  if (z <= mu) return 1.0;
+  return variance / (variance + (z - mu));
+}

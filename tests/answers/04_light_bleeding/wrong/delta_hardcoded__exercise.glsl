@@ -1,0 +1,15 @@
+// wrong: the remap with the course's 0.125 typed in instead of the slider u_bleed_delta
+// expect: tuned-to-scene
+#include "lab/bias.glsl"
+#include "lab/chebyshev.glsl"
+
+uniform float u_bleed_delta;  // slider "Light-bleeding cut (delta)", 0.125 by default
+
+float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
+  vec3 s = shadow_coords(world_position);
+  if (outside_shadow_map(s)) return 1.0;
+  vec2 moments = texture(u_shadow_map, s.xy).rg;
+  float p = chebyshev_upper_bound(moments, s.z - shadow_bias(n_dot_l));
+  const float DELTA = 0.125;  // the course value
+  return clamp((p - DELTA) / (1.0 - DELTA), 0.0, 1.0);
+}

@@ -1,0 +1,14 @@
+// wrong: smoothstep(delta, 1, p) instead of the linear remap the lab asks for: penumbrae reshaped (darker below the middle, brighter above)
+// expect: compile-fine-but-wrong-formula
+#include "lab/bias.glsl"
+#include "lab/chebyshev.glsl"
+
+uniform float u_bleed_delta;  // slider "Light-bleeding cut (delta)", 0.125 by default
+
+float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
+  vec3 s = shadow_coords(world_position);
+  if (outside_shadow_map(s)) return 1.0;
+  vec2 moments = texture(u_shadow_map, s.xy).rg;
+  float p = chebyshev_upper_bound(moments, s.z - shadow_bias(n_dot_l));
+  return smoothstep(u_bleed_delta, 1.0, p);
+}

@@ -1,0 +1,16 @@
+// wrong: clamps the coordinates to [0, size] instead of [0, size - 1]: one texel past the edge is read
+// expect: off-by-one
+uniform int u_blur_radius;   // slider "Blur radius (texels)"
+uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
+
+vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
+  ivec2 size = textureSize(moments, 0);
+  vec2 sum = vec2(0.0);
+  float total = 0.0;
+  for (int i = -u_blur_radius; i <= u_blur_radius; ++i) {
+    float w = exp(-float(i * i) / (2.0 * u_blur_sigma * u_blur_sigma));
+    sum += w * texelFetch(moments, clamp(texel + i * direction, ivec2(0), size), 0).rg;
+    total += w;
+  }
+  return sum / total;
+}

@@ -1,0 +1,16 @@
+// wrong: always steps along x (ivec2(i, 0)), ignoring direction: the Y pass blurs x again, y never
+// expect: skipped-half
+uniform int u_blur_radius;   // slider "Blur radius (texels)"
+uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
+
+vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
+  ivec2 last = textureSize(moments, 0) - 1;
+  vec2 sum = vec2(0.0);
+  float total = 0.0;
+  for (int i = -u_blur_radius; i <= u_blur_radius; ++i) {
+    float w = exp(-float(i * i) / (2.0 * u_blur_sigma * u_blur_sigma));
+    sum += w * texelFetch(moments, clamp(texel + ivec2(i, 0), ivec2(0), last), 0).rg;
+    total += w;
+  }
+  return sum / total;
+}

@@ -1,0 +1,14 @@
+// wrong: divides the weighted sum by the number of taps (2r + 1) instead of the sum of the weights
+// expect: compile-fine-but-wrong-formula
+uniform int u_blur_radius;   // slider "Blur radius (texels)"
+uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
+
+vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
+  ivec2 last = textureSize(moments, 0) - 1;
+  vec2 sum = vec2(0.0);
+  for (int i = -u_blur_radius; i <= u_blur_radius; ++i) {
+    float w = exp(-float(i * i) / (2.0 * u_blur_sigma * u_blur_sigma));
+    sum += w * texelFetch(moments, clamp(texel + i * direction, ivec2(0), last), 0).rg;
+  }
+  return sum / float(2 * u_blur_radius + 1);
+}

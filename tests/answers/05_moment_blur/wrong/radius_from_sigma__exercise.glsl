@@ -1,0 +1,17 @@
+// wrong: takes the kernel's reach as 2 sigma (int(2 sigma + 0.5)) and ignores the radius slider
+// expect: tuned-to-scene
+uniform int u_blur_radius;   // slider "Blur radius (texels)"
+uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
+
+vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
+  ivec2 last = textureSize(moments, 0) - 1;
+  int r = int(2.0 * u_blur_sigma + 0.5);
+  vec2 sum = vec2(0.0);
+  float total = 0.0;
+  for (int i = -r; i <= r; ++i) {
+    float w = exp(-float(i * i) / (2.0 * u_blur_sigma * u_blur_sigma));
+    sum += w * texelFetch(moments, clamp(texel + i * direction, ivec2(0), last), 0).rg;
+    total += w;
+  }
+  return sum / total;
+}

@@ -1,0 +1,28 @@
+// right: keeps both depths as they are and converts the world-space bias into depth units at the fragment (dd/dz = f n / ((f - n) z^2))
+// expect: variant
+#include "lab/bias.glsl"
+
+uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)
+uniform float u_light_far;
+uniform float u_texel_angle;  // one texel's world size per unit of distance: 2 tan(cone) / map size
+
+// Window depth d in [0, 1] back to the distance along the light's axis: d = f/(f-n) (1 - n/z).
+float linear_depth(float d) {
+  return u_light_near * u_light_far / (u_light_far - d * (u_light_far - u_light_near));
+}
+
+float tan_incidence(float n_dot_l) {
+  return min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l, MAX_TAN_INCIDENCE);
+}
+
+float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
+  vec3 s = shadow_coords(world_position);
+  if (outside_shadow_map(s)) return 1.0;
+  float closest = texture(u_shadow_map, s.xy).r;
+  // The world-space bias (one texel's footprint, plus the slope term) turned into window-depth units at
+  // the fragment's distance: dd/dz = f n / ((f - n) z^2).
+  float z = linear_depth(s.z);
+  float world_bias = z * u_texel_angle * (1.0 + u_bias_slope * tan_incidence(n_dot_l));
+  float dd_dz = u_light_far * u_light_near / ((u_light_far - u_light_near) * z * z);
+  return s.z - world_bias * dd_dz > closest ? 0.0 : 1.0;
+}

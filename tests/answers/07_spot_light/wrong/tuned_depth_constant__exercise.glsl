@@ -1,0 +1,24 @@
+// wrong: stays in window depth and shrinks the constant bias until both places of the check pass (2e-5)
+// expect: tuned-to-scene
+#include "lab/bias.glsl"
+
+uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)
+uniform float u_light_far;
+uniform float u_texel_angle;  // one texel's world size per unit of distance: 2 tan(cone) / map size
+
+// Window depth d in [0, 1] back to the distance along the light's axis: d = f/(f-n) (1 - n/z).
+float linear_depth(float d) {
+  return u_light_near * u_light_far / (u_light_far - d * (u_light_far - u_light_near));
+}
+
+float tan_incidence(float n_dot_l) {
+  return min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l, MAX_TAN_INCIDENCE);
+}
+
+float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
+  vec3 s = shadow_coords(world_position);
+  if (outside_shadow_map(s)) return 1.0;
+  float closest = texture(u_shadow_map, s.xy).r;
+  // tuned: 0.005 was fine from the high place but lifted every shadow from the low one
+  return s.z - 0.00002 > closest ? 0.0 : 1.0;
+}

@@ -1,0 +1,12 @@
+// right: emits the caps before the side quads (order does not matter to the stencil count)
+// expect: variant
+void emit_volume(vec3 t0, vec3 n01, vec3 t1, vec3 n12, vec3 t2, vec3 n20) {
+  if (!faces_light(t0, t1, t2)) return;
+  if (u_caps) {
+    emit_near_cap(t0, t1, t2);
+    emit_far_cap(t0, t1, t2);
+  }
+  if (!faces_light(t0, n01, t1)) emit_side(t0, t1);
+  if (!faces_light(t1, n12, t2)) emit_side(t1, t2);
+  if (!faces_light(t2, n20, t0)) emit_side(t2, t0);
+}
