@@ -210,7 +210,7 @@ def main():
                 variant, text = chosen[ex]
                 if ex == carrier and kind not in ("right", "wrong"):
                     if kind == "stock":
-                        variant, text = "stock", read(os.path.join(ROOT, ex))
+                        variant, text = "stock " + os.path.basename(ex), read(os.path.join(ROOT, ex))
                     elif kind == "missing":
                         continue
                     else:
