@@ -165,7 +165,16 @@ int run_render(const RenderOptions& options) {
   }
 }
 
-int run_list_labs(bool show_params) {
+int run_list_labs(bool show_params, bool json) {
+  if (json) {  // for scripts (graders, the corpus test): what a submission of each lab consists of
+    nlohmann::json labs = nlohmann::json::array();
+    for (const auto& lab : all_labs())
+      labs.push_back({{"number", lab.number}, {"slug", lab.slug}, {"folder", lab.folder()}, {"title", lab.title},
+                      {"exercise_files", lab.exercise_files}, {"solution_files", lab.solution_files},
+                      {"offered_includes", lab.offered_includes}, {"has_check", static_cast<bool>(lab.check)}});
+    std::printf("%s\n", nlohmann::json{{"labs", labs}}.dump(2).c_str());
+    return 0;
+  }
   for (const auto& lab : all_labs()) {
     std::printf("%2d  %-22s %s\n", lab.number, lab.title.c_str(), lab.summary.c_str());
     if (!show_params) continue;

@@ -35,6 +35,6 @@ void make_output_dir(const std::string& dir);
 std::string one_line_error(const std::string& message);
 
 int run_render(const RenderOptions& options);
-int run_list_labs(bool show_params);
+int run_list_labs(bool show_params, bool json = false);
 
 }  // namespace shadowlab

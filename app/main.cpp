@@ -87,6 +87,8 @@ int main(int argc, char** argv) {
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
+  bool labs_json = false;
+  labs_cmd->add_flag("--json", labs_json, "The labs as JSON: number, slug, folder, exercise and solution files");
 
   try {
     app.parse(argc, argv);
@@ -99,6 +101,6 @@ int main(int argc, char** argv) {
   if (*check_cmd) return shadowlab::run_check(check);
   if (*bench_cmd) return shadowlab::run_bench(bench);
   if (*grade_cmd) return shadowlab::run_grade(grade);
-  if (*labs_cmd) return shadowlab::run_list_labs(show_params);
+  if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json);
   return shadowlab::run_window(window_options);
 }

@@ -116,6 +116,8 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
   if (name.find("negative_variance") != std::string::npos)
     return {format("%.0f texels have a negative variance", v), "E[z^2] - E[z]^2 must not go below the minimum variance."};
   if (name.find("non_finite") != std::string::npos) return {format("%.0f values are NaN or Inf", v), "no NaN or Inf may come out."};
+  if (name.ends_with("_mismatch"))
+    return {format("%.2f %% of the probe's cases differ from the reference", 100 * v), "compare your function with the lab's text."};
   const bool whole = v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit);
   return {name + format(whole ? " = %.0f" : " = %.4g", v), ""};
 }

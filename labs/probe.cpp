@@ -25,6 +25,50 @@ GlTexture input_texture(const std::vector<glm::vec4>& values, int width, int hei
 
 }  // namespace
 
+GlTexture make_probe_depth_texture(const std::vector<float>& depths, int size) {
+  if (depths.size() != static_cast<std::size_t>(size) * static_cast<std::size_t>(size))
+    throw std::invalid_argument("probe: depth texture of the wrong size");
+  GlTexture t = make_texture_2d(GL_DEPTH_COMPONENT32F, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int width, int height) {
+  std::vector<glm::vec2> padded(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), glm::vec2(1.0f));
+  if (moments.size() > padded.size()) throw std::invalid_argument("probe: more moments than texels");
+  std::copy(moments.begin(), moments.end(), padded.begin());
+  GlTexture t = make_texture_2d(GL_RG32F, width, height, GL_RG, GL_FLOAT, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RG, GL_FLOAT, padded.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+GlSampler make_compare_sampler() {
+  GlSampler s = GlSampler::create();
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return s;
+}
+
+void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare) {
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  set_uniform(program, "u_shadow_map", 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, depth.id());
+  glBindSampler(1, compare.id());
+  set_uniform(program, "u_shadow_map_compare", 1);
+  glActiveTexture(GL_TEXTURE0);
+}
+
 void set_uniform(GLuint program, const char* name, float value) { glUniform1f(glGetUniformLocation(program, name), value); }
 void set_uniform(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
 void set_uniform(GLuint program, const char* name, const glm::mat4& value) {
@@ -34,9 +78,10 @@ void set_uniform(GLuint program, const char* name, const glm::vec3& value) {
   glUniform3f(glGetUniformLocation(program, name), value.x, value.y, value.z);
 }
 
-std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
+std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
   const std::size_t cases = request.in0.size();
-  if (cases == 0) return {};
+  const std::size_t passes = std::max<std::size_t>(request.passes.size(), 1);
+  if (cases == 0) return std::vector<std::vector<float>>(passes);
   if (!request.in1.empty() && request.in1.size() != cases) throw std::invalid_argument("probe: in0 and in1 differ in size");
   ProgramDesc desc{"shaders/fullscreen.vert", {}, request.fragment, {}, {}, hooks.include_rules};
   for (const auto& [name, file] : Renderer::default_includes(hooks.technique, hooks.light.value_or(LightType::Directional)))
@@ -65,15 +110,18 @@ std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request)
   glBindTexture(GL_TEXTURE_2D, in1.id());
   set_uniform(program, "u_probe_in1", kInputUnit1);
   glActiveTexture(GL_TEXTURE0);
-  if (request.set_uniforms) request.set_uniforms(program);
-
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glBindVertexArray(vao.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  std::vector<std::vector<float>> values(passes, std::vector<float>(cases));
   std::vector<glm::vec4> result(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, result.data());
+  for (std::size_t pass = 0; pass < passes; ++pass) {
+    if (pass < request.passes.size() && request.passes[pass]) request.passes[pass](program);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, result.data());
+    for (std::size_t i = 0; i < cases; ++i) values[pass][i] = result[i].x;
+  }
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glUseProgram(0);
@@ -83,9 +131,6 @@ std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request)
     glBindSampler(static_cast<GLuint>(unit), 0);
   }
   glActiveTexture(GL_TEXTURE0);
-
-  std::vector<float> values(cases);
-  for (std::size_t i = 0; i < cases; ++i) values[i] = result[i].x;
   return values;
 }
 

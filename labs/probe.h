@@ -19,14 +19,28 @@ namespace shadowlab {
 struct ProbeRequest {
   std::string fragment;            // e.g. "shaders/probe/visibility.frag"
   std::vector<glm::vec4> in0, in1;  // per case: the shader's u_probe_in0 and u_probe_in1 (in1 may be empty)
-  // Sets the function's uniforms and textures on the bound program (texture units 0-3 are the
-  // check's; the probe's inputs use units 6 and 7).
-  std::function<void(GLuint program)> set_uniforms;
+  // One pass over every case per entry, each setting the function's uniforms and textures on the bound
+  // program (texture units 0-3 are the check's; the probe's inputs use units 6 and 7). Empty: one pass
+  // with the uniforms at their defaults.
+  std::vector<std::function<void(GLuint program)>> passes;
 };
 
 // Runs the probe with the hooks' includes (over the renderer's defaults for its technique and light)
-// and returns one value per case (the fragment's red channel). Throws BuildError when it does not build.
-std::vector<float> run_probe(const LabHooks& hooks, const ProbeRequest& request);
+// and returns, per pass, one value per case (the fragment's red channel). Throws BuildError when it
+// does not build.
+std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request);
+
+// A depth texture for probes: size x size texels, row 0 at v = 0 (GL's order), nearest filtering,
+// clamped to the edge, no comparison (as the renderer's shadow map reads through u_shadow_map).
+GlTexture make_probe_depth_texture(const std::vector<float>& depths, int size);
+// A two-channel float texture for probes (a moments map: E[z], E[z^2] per texel), width x height texels,
+// row 0 at v = 0, nearest filtering, clamped to the edge.
+GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int width, int height);
+
+// Binds `depth` as u_shadow_map (unit 0) and, through a comparing, bilinear sampler, as
+// u_shadow_map_compare (unit 1), as the lit pass does. The sampler must outlive the draw.
+void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare);
+GlSampler make_compare_sampler();
 
 // Sets a uniform by name on the bound program; a uniform the student's code does not use is optimised
 // away, which is fine (setting it is then a no-op).

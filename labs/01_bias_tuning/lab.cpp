@@ -1,12 +1,14 @@
 // Lab 1: bias tuning, acne against peter-panning.
 // Demonstrates: why a constant bias fails at grazing light, a slope-scaled bias in texels, and culling
 // front faces in the shadow pass. Check: the default scene under a grazing light (elevation 10 deg).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 
 #include "labs/check.h"
 #include "labs/lab.h"
+#include "labs/probe.h"
 
 namespace shadowlab {
 
@@ -47,12 +49,79 @@ constexpr const char* kSolution = "labs/01_bias_tuning/solution.glsl";
 // fine maps (a texel's size), on both built-in scenes. The lowest light stays above 6 degrees: below
 // 5.7 the ground itself is lit beyond 84 degrees of incidence, which no check grades (grading_band());
 // below 15 degrees the stacked scene's shadows leave its receiver, so only the default scene is used.
-const std::vector<HeldOutRange> kHeldOut = {{6.0f, 9.0f, {"512", "1024"}, {"default"}},
+const std::vector<HeldOutRange> kHeldOut = {{6.0f, 9.0f, {"256", "512"}, {"default"}},
                                             {9.0f, 20.0f, {"256", "512", "1024", "2048"}, {"default"}},
                                             {20.0f, 45.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}},
-                                            {45.0f, 80.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}}};
+                                            {45.0f, 89.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}}};
+
+// The bias function on its own (labs/probe.h): shadow_bias at these cosines, under five settings of
+// the sliders, against what the lab asks of it.
+constexpr float kCosines[] = {1.0f, 0.9f, 0.7f, 0.5f, 0.3f, 0.2f, 0.1f, 0.05f, 0.01f, 0.001f};
+constexpr std::size_t kAtOne = 0, kAtSteep = 5, kAtGrazing = 9;  // indices: n.l = 1, 0.2, 0.001
+struct Sliders {
+  float constant, slope, texel_depth;
+};
+constexpr Sliders kBase{5e-4f, 2.0f, 1e-3f};
+constexpr Sliders kSettings[] = {kBase, {2e-3f, 2.0f, 1e-3f}, {5e-4f, 4.0f, 1e-3f}, {5e-4f, 2.0f, 2e-3f}};
+// How the growth from n.l = 1 to n.l = 0.2 (tan = 4.9, sec = 5) may deviate from doubling when the
+// slope or the texel doubles, and how far the constant's effect may be from the slider's change.
+constexpr double kProportionTolerance = 0.2;
+constexpr double kConstantTolerance = 0.1;
+// The bias at n.l = 0.001 may exceed the bias at n.l = 1 by at most this many (slope x texel): tan
+// capped near 84 degrees is 9.5-10, 1 / n.l capped at 10 is 10.
+constexpr double kMaxGrazingGrowth = 12.0;
+constexpr double kMinSteepGrowth = 2.0;  // at n.l = 0.2 tan is 4.9: at least 2 (slope x texel) more than at 1
+
+void probe_bias_function(CheckContext& ctx, CheckResult& result) {
+  ProbeRequest request;
+  request.fragment = "shaders/probe/bias.frag";
+  for (float c : kCosines) request.in0.push_back({c, 0, 0, 0});
+  for (const Sliders& s : kSettings)
+    request.passes.push_back([s](GLuint program) {
+      set_uniform(program, "u_bias_constant", s.constant);
+      set_uniform(program, "u_bias_slope", s.slope);
+      set_uniform(program, "u_texel_depth", s.texel_depth);
+    });
+  const auto v = run_probe(ctx.hooks(), request);
+  double bad = 0, not_monotonic = 0;
+  for (const auto& pass : v) {
+    for (std::size_t i = 0; i < pass.size(); ++i) {
+      if (!std::isfinite(pass[i]) || pass[i] < 0.0f) ++bad;
+      if (i > 0 && pass[i] < pass[i - 1] - 1e-7f) ++not_monotonic;
+    }
+  }
+  const double unit = static_cast<double>(kBase.slope) * kBase.texel_depth;  // one (slope x texel)
+  auto growth = [&](std::size_t pass) { return static_cast<double>(v[pass][kAtSteep]) - v[pass][kAtOne]; };
+  const double steep = growth(0) / unit;
+  const double constant_effect = (static_cast<double>(v[1][kAtOne]) - v[0][kAtOne]) / (kSettings[1].constant - kBase.constant);
+  const double slope_ratio = growth(0) != 0.0 ? growth(2) / growth(0) : 0.0;
+  const double texel_ratio = growth(0) != 0.0 ? growth(3) / growth(0) : 0.0;
+  const double grazing = (static_cast<double>(v[0][kAtGrazing]) - v[0][kAtOne]) / unit;
+  result.metrics["bias_function"] = {{"cosines", kCosines}, {"base", v[0]}, {"constant_2e-3", v[1]}, {"slope_4", v[2]},
+                                     {"texel_depth_2e-3", v[3]}};
+  const std::string why = "shadow_bias() probed at n.l from 1 to 0.001 with the sliders varied";
+  result.criteria.push_back({"bias.non_finite_or_negative", bad, Criterion::kAtMost, 0, why,
+                             "the bias must be a finite, non-negative depth at every n.l in (0, 1]."});
+  result.criteria.push_back({"bias.decreasing_with_slope", not_monotonic, Criterion::kAtMost, 0, why,
+                             "the bias must never shrink as the light gets more grazing (n.l smaller)."});
+  result.criteria.push_back({"bias.growth_at_steep_slope", steep, Criterion::kAtLeast, kMinSteepGrowth, why,
+                             "from n.l = 1 to n.l = 0.2 the bias must grow by about tan(a) = 4.9 times "
+                             "u_bias_slope * u_texel_depth: make it grow with the slope, in texels."});
+  result.criteria.push_back({"bias.constant_slider_error", std::abs(constant_effect - 1.0), Criterion::kAtMost,
+                             kConstantTolerance, why, "keep u_bias_constant (the slider Constant bias) as the bias's constant part."});
+  result.criteria.push_back({"bias.slope_slider_error", std::abs(slope_ratio - 2.0), Criterion::kAtMost,
+                             kProportionTolerance, why, "the slope term must be proportional to u_bias_slope (the slider)."});
+  result.criteria.push_back({"bias.texel_size_error", std::abs(texel_ratio - 2.0), Criterion::kAtMost, kProportionTolerance,
+                             why, "the slope term must be proportional to u_texel_depth (one texel's size in depth units)."});
+  result.criteria.push_back({"bias.growth_at_grazing", grazing, Criterion::kAtMost, kMaxGrazingGrowth, why,
+                             "cap tan(a) near 84 degrees (about 10): unbounded, the bias lifts whole shadows off "
+                             "surfaces the light grazes."});
+}
 
 void check_bias(CheckContext& ctx, CheckResult& result) {
+  // 1. The function alone.
+  probe_bias_function(ctx, result);
+  // 2. Images: the lab's grazing light, then held-out lights, map sizes and scenes.
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);

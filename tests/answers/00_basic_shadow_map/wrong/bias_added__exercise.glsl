@@ -1,5 +1,6 @@
 // wrong: adds the bias to the fragment's depth instead of subtracting it (acne gets worse)
 // expect: sign
+// fails: probe.lookup_mismatch *.lit_error
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

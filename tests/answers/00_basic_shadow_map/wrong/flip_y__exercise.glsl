@@ -1,5 +1,6 @@
 // wrong: flips the texture's v (t = 1 - y), a Direct3D habit; GL's texture origin is bottom-left like clip space
 // expect: sign
+// fails: probe.lookup_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

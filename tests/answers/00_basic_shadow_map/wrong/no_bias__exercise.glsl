@@ -1,5 +1,6 @@
 // wrong: drops the bias from the comparison ('the matrix was the bug, the bias is a hack')
 // expect: skipped-half
+// fails: *.lit_error probe.lookup_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

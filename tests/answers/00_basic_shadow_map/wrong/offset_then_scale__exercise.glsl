@@ -1,5 +1,6 @@
 // wrong: adds 0.5 first and then halves, (s + 0.5) * 0.5, instead of s * 0.5 + 0.5
 // expect: compile-fine-but-wrong-formula
+// fails: probe.*
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

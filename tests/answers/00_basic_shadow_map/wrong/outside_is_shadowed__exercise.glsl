@@ -1,5 +1,6 @@
 // wrong: treats points outside the light's map as shadowed (nothing was drawn there, so nothing can hide them)
 // expect: part-ungraded
+// fails: probe.outside_map_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

@@ -1,5 +1,6 @@
 // wrong: tests 'outside the map' on the clip-space point, then remaps: every point with a negative clip coordinate counts as outside and lit
 // expect: structure
+// fails: probe.*
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

@@ -1,5 +1,6 @@
 // wrong: scales by 0.5 but forgets the +0.5 offset of the bias matrix
 // expect: units
+// fails: probe.*
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

@@ -1,5 +1,6 @@
 // wrong: returns 0.3 in shadow 'so shadows are not pitch black' (the lit pass already adds the ambient term)
 // expect: partial-darkening
+// fails: *.shadow_error probe.lookup_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

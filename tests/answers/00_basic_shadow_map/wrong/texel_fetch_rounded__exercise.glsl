@@ -1,5 +1,6 @@
 // wrong: reads the texel with texelFetch at ivec2(round(uv * size)): rounding instead of flooring shifts every lookup by half a texel
 // expect: off-by-half-texel
+// fails: probe.lookup_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

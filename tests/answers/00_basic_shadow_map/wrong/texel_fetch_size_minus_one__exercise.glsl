@@ -1,5 +1,6 @@
 // wrong: reads the texel with texelFetch at ivec2(uv * (size - 1)): the lookup drifts by up to one texel toward the map's far side
 // expect: off-by-one
+// fails: probe.lookup_mismatch
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

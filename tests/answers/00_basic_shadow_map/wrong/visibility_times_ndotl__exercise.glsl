@@ -1,5 +1,6 @@
 // wrong: multiplies the visibility by n.l (Lambert twice: the lit pass already does it), so lit surfaces are too dark
 // expect: partial-darkening
+// fails: *.lit_error
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;

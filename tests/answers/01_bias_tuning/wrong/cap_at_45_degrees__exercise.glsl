@@ -1,5 +1,6 @@
 // wrong: caps tan(a) at 1 (45 degrees) 'to avoid peter-panning': no growth where the light grazes
 // expect: compile-fine-but-wrong-formula
+// fails: bias.growth_at_steep_slope
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

@@ -1,5 +1,6 @@
 // wrong: slope as n.l / sin(a) (cot): the bias shrinks as the light grazes instead of growing
 // expect: sign
+// fails: bias.decreasing_with_slope bias.growth_at_steep_slope
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

@@ -1,5 +1,6 @@
 // wrong: slope term with a magic number in depth units fitted to this scene (0.001 * tan), ignoring the texel size and the slope slider
 // expect: tuned-to-scene
+// fails: bias.slope_slider_error bias.texel_size_error
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

@@ -1,5 +1,6 @@
 // wrong: only the slope term, the constant slider dropped ('the slope does it all')
 // expect: skipped-half
+// fails: bias.constant_slider_error
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

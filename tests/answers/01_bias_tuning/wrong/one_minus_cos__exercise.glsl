@@ -1,5 +1,6 @@
 // wrong: grows the bias with (1 - n.l) instead of tan(a): bounded by one texel's worth, far too small at grazing light
 // expect: compile-fine-but-wrong-formula
+// fails: bias.growth_at_steep_slope
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

@@ -1,5 +1,6 @@
 // wrong: uses sin(a) = sqrt(1 - n.l^2) as the slope, which stops growing at 1 where tan(a) runs away
 // expect: compile-fine-but-wrong-formula
+// fails: bias.growth_at_steep_slope
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

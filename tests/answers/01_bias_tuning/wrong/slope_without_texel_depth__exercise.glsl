@@ -1,5 +1,6 @@
 // wrong: forgets to convert the slope slider from texels to depth units (no u_texel_depth): the bias is whole depth units
 // expect: units
+// fails: bias.texel_size_error
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

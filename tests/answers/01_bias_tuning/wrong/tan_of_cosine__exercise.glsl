@@ -1,5 +1,6 @@
 // wrong: takes tan(n.l), treating the cosine as if it were the angle
 // expect: units
+// fails: bias.decreasing_with_slope bias.growth_at_steep_slope
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

@@ -1,5 +1,6 @@
 // wrong: tan(a) without the cap: at a grazing light the bias grows without bound and nothing there can be shadowed
 // expect: compile-fine-but-wrong-formula
+// fails: bias.growth_at_grazing
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

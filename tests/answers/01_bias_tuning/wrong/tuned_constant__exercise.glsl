@@ -1,5 +1,6 @@
 // wrong: keeps a constant bias and tunes it by hand until the check passes (0.007 at elevation 10)
 // expect: tuned-to-scene
+// fails: bias.growth_at_steep_slope bias.slope_slider_error
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

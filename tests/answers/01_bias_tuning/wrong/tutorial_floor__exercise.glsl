@@ -1,5 +1,6 @@
 // wrong: slope-scaled bias, but keeps the tutorial's floor max(bias, 0.005): a constant tuned for one depth range that overrides the sliders
 // expect: tuned-to-scene
+// fails: bias.constant_slider_error
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection

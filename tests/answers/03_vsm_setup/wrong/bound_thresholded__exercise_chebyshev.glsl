@@ -1,5 +1,6 @@
 // wrong: rounds the bound to 0 or 1 (p > 0.5) 'to get clean shadows': the soft visibility VSM exists for is lost
 // expect: compile-fine-but-wrong-formula
+// fails: chebyshev.bound_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

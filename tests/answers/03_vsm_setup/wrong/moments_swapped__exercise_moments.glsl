@@ -1,5 +1,6 @@
 // wrong: returns (E[z^2], E[z]): the moments in the wrong channels
 // expect: structure
+// fails: moments.*
 vec2 shadow_moments(float z) {
   float dx = dFdx(z);
   float dy = dFdy(z);

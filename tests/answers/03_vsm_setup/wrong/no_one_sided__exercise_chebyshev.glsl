@@ -1,5 +1,6 @@
 // wrong: always returns sigma^2 / (sigma^2 + (z - mu)^2), without the lit case z <= mu: lit surfaces slightly darkened
 // expect: partial-darkening
+// fails: chebyshev.lit_side_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

@@ -1,5 +1,6 @@
 // wrong: the one-sided case reversed: returns 1 when z >= mu (behind the mean) and the bound in front of it
 // expect: sign
+// fails: chebyshev.lit_side_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

@@ -1,5 +1,6 @@
 // wrong: uses the standard deviation sigma where the bound needs sigma^2: sigma / (sigma + (z - mu)^2)
 // expect: units
+// fails: chebyshev.bound_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

@@ -1,5 +1,6 @@
 // wrong: stores the variance (the slope term alone) in green instead of the second moment E[z^2]
 // expect: structure
+// fails: moments.*
 vec2 shadow_moments(float z) {
   float dx = dFdx(z);
   float dy = dFdy(z);

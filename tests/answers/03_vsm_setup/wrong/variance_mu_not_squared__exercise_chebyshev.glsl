@@ -1,5 +1,6 @@
 // wrong: sigma^2 = E[z^2] - mu (mu not squared)
 // expect: compile-fine-but-wrong-formula
+// fails: chebyshev.bound_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

@@ -1,5 +1,6 @@
 // wrong: sigma^2 = mu^2 - E[z^2] (the subtraction reversed), which the clamp then hides as the minimum variance
 // expect: sign
+// fails: chebyshev.bound_mismatch chebyshev.min_variance_mismatch
 uniform float u_min_variance;  // slider "Minimum variance"
 
 float chebyshev_upper_bound(vec2 moments, float z) {

@@ -1,5 +1,6 @@
 // wrong: adds the bias to the fragment's depth instead of subtracting it: lit surfaces about 10 % dark
 // expect: partial-darkening
+// fails: probe.bias_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

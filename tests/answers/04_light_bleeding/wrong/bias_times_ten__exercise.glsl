@@ -1,5 +1,6 @@
 // wrong: multiplies the bias by 10 'to be safe' (found by trying): peter-panning wherever the slider bias is not tiny
 // expect: tuned-to-scene
+// fails: probe.bias_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

@@ -1,5 +1,6 @@
 // wrong: cuts delta off the bound, max(p - delta, 0), without stretching [delta, 1] back to [0, 1]: every lit pixel drawn at 1 - delta
 // expect: partial-darkening
+// fails: probe.remap_mismatch *.lit_error
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

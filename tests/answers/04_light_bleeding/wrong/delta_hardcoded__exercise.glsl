@@ -1,5 +1,6 @@
 // wrong: the remap with the course's 0.125 typed in instead of the slider u_bleed_delta
 // expect: tuned-to-scene
+// fails: probe.remap_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

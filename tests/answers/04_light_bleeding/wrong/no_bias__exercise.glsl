@@ -1,5 +1,6 @@
 // wrong: only the remap; step 1 (subtract the bias from z) skipped
 // expect: skipped-half
+// fails: probe.bias_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

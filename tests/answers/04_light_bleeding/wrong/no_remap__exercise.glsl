@@ -1,5 +1,6 @@
 // wrong: only the bias; step 2 (the light-bleeding remap) skipped
 // expect: skipped-half
+// fails: probe.remap_mismatch *.bleeding_ratio_to_unfixed
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

@@ -1,5 +1,6 @@
 // wrong: (p - delta) / (1 - delta) without the clamp: shadows get negative visibility (darker than the ambient term)
 // expect: compile-fine-but-wrong-formula
+// fails: probe.remap_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

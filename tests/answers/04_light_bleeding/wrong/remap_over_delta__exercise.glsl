@@ -1,5 +1,6 @@
 // wrong: divides by delta instead of (1 - delta): everything above 2 delta becomes fully lit
 // expect: compile-fine-but-wrong-formula
+// fails: probe.remap_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

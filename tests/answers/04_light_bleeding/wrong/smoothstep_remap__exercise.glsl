@@ -1,5 +1,6 @@
 // wrong: smoothstep(delta, 1, p) instead of the linear remap the lab asks for: penumbrae reshaped (darker below the middle, brighter above)
 // expect: compile-fine-but-wrong-formula
+// fails: probe.remap_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

@@ -1,5 +1,6 @@
 // wrong: stretches by (1 + delta) instead of 1 / (1 - delta): lit pixels end at (1 - delta)(1 + delta) = 0.984
 // expect: partial-darkening
+// fails: probe.remap_mismatch *.lit_error
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 

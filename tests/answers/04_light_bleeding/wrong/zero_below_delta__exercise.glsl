@@ -1,5 +1,6 @@
 // wrong: sets p to 0 below delta and keeps it unchanged above: the penumbra jumps from 0 to delta instead of being stretched
 // expect: compile-fine-but-wrong-formula
+// fails: probe.remap_mismatch
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 
