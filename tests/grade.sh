@@ -161,7 +161,7 @@ PY
     [ "$(grep -c "recorded before" "$tmp/stdout")" -eq "$recorded" ] || fail "the rerun graded again what was recorded: $(cat "$tmp/stdout")"
     ;;
   grade_class_small)  # the class in small: 12 generated submissions, every status, GNU parallel, all reports
-    python3 "$src/tests/make_submissions.py" --out "$tmp/class" --count 12 --seed 15 >"$tmp/gen" || fail "generator: $(cat "$tmp/gen")"
+    python3 "$src/tests/make_submissions.py" --bin "$bin" --out "$tmp/class" --count 12 --seed 15 >"$tmp/gen" || fail "generator: $(cat "$tmp/gen")"
     start=$(date +%s)
     "$bin" grade "$tmp"/class/submissions/* --out "$tmp/grades" --jobs 2 >"$tmp/log" 2>&1
     code=$?

@@ -31,52 +31,13 @@ import tarfile
 import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests", "answers"))
+from check_corpus import answers_of, labs_of  # the corpus's own reading of labs and answers  # noqa: E402
 
 
 def read(path):
     with open(path, encoding="utf-8") as f:
         return f.read()
-
-
-def lab_folders():
-    """{number: (folder, [exercise files relative to the root], [solution files or None])}"""
-    labs = {}
-    for name in sorted(os.listdir(os.path.join(ROOT, "labs"))):
-        m = re.match(r"^(\d\d)_\w+$", name)
-        if not m:
-            continue
-        folder = os.path.join(ROOT, "labs", name)
-        source = read(os.path.join(folder, "lab.cpp"))
-        constants = dict(re.findall(r'constexpr const char\*\s+(\w+)\s*=\s*"([^"]+)"', source))
-
-        def files(field):
-            m2 = re.search(field + r"\s*=\s*\{([^}]*)\}", source)
-            if not m2:
-                return []
-            out = []
-            for item in m2.group(1).split(","):
-                item = item.strip()
-                out.append(item.strip('"') if item.startswith('"') else constants.get(item))
-            return out
-
-        exercises = files(r"lab\.exercise_files")
-        solutions = files(r"lab\.solution_files")
-        labs[int(m.group(1))] = (name, exercises, solutions)
-    return labs
-
-
-def corpus(folder, kind):
-    """The corpus's answers of one kind for one lab: {answer name: {exercise file name: text}}. An
-    answer gives one or several of the lab's files; the corpus's rule is that the files it does not
-    give are the solution's."""
-    path = os.path.join(ROOT, "tests", "answers", folder, kind)
-    out = {}
-    if os.path.isdir(path):
-        for f in sorted(os.listdir(path)):
-            if "__" in f:
-                answer, exercise_name = f.split("__", 1)
-                out.setdefault(answer, {})[exercise_name] = read(os.path.join(path, f))
-    return out
 
 
 def function_start(lines, cpp):
@@ -138,39 +99,36 @@ def main():
     ap.add_argument("--count", type=int, default=12)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--labs", default="all", help="all, or a comma-separated list of lab numbers")
+    ap.add_argument("--bin", default=os.environ.get("SHADOWLAB_BIN", os.path.join(ROOT, "build", "app", "shadowlab")),
+                    help="the shadowlab binary (for `shadowlab labs --json`)")
     args = ap.parse_args()
     rng = random.Random(args.seed)
-    labs = lab_folders()
+    labs = {n: lab for n, lab in labs_of(args.bin).items() if lab["has_check"]}
     numbers = sorted(labs) if args.labs == "all" else [int(n) for n in args.labs.split(",")]
-    cpp_labs = [n for n in numbers if any(f.endswith(".cpp") for f in labs[n][1])]
+    cpp_labs = [n for n in numbers if any(f.endswith(".cpp") for f in labs[n]["exercise_files"])]
     glsl_labs = [n for n in numbers if n not in cpp_labs]
 
-    # Per lab: the right and wrong answers on offer, each as the full set of the lab's files.
+    # Per lab: the right and wrong answers on offer, each as the full set of the lab's files (the
+    # corpus's rule: a file an answer does not give is the solution's).
     answers = {}
     for n in numbers:
-        folder, exercises, solutions = labs[n]
-        solution = {}
-        for i, ex in enumerate(exercises):
-            sol = solutions[i] if i < len(solutions) else None
-            if sol and sol.endswith(".glsl") and os.path.isfile(os.path.join(ROOT, sol)):
-                solution[ex] = read(os.path.join(ROOT, sol))  # a drop-in replacement of the exercise file
-
-        def complete(given, name):
+        exercises, solutions = labs[n]["exercise_files"], labs[n]["solution_files"]
+        drop_in = all(sol.endswith(".glsl") for sol in solutions)  # GLSL solutions replace the exercise as is
+        offered = {"right": [], "wrong": []}
+        for (kind, name), given in sorted(answers_of(labs[n]).items()):
             files = {}
-            for ex in exercises:
-                text = given.get(os.path.basename(ex), solution.get(ex))
-                if text is None:
-                    return None  # a C++ lab's answer must give its file
-                files[ex] = (name, text)
-            return files
-
-        rights = [complete(g, a) for a, g in corpus(folder, "right").items()]
-        if len(solution) == len(exercises):
-            rights.append(complete({}, "solution"))
-        wrongs = [complete(g, a) for a, g in corpus(folder, "wrong").items()]
-        answers[n] = {"right": [r for r in rights if r], "wrong": [w for w in wrongs if w]}
-        if not answers[n]["right"]:
-            sys.exit(f"make_submissions: no right answer for lab {n} (tests/answers/{folder}/right/ is empty)")
+            for ex, sol in zip(exercises, solutions):
+                path = given.get(os.path.basename(ex), os.path.join(ROOT, sol) if drop_in else None)
+                if path is None:
+                    break
+                files[ex] = (name, read(path))
+            else:
+                offered[kind].append(files)
+        if drop_in:
+            offered["right"].append({ex: ("solution", read(os.path.join(ROOT, sol))) for ex, sol in zip(exercises, solutions)})
+        answers[n] = offered
+        if not offered["right"]:
+            sys.exit("make_submissions: no right answer for lab %d in tests/answers" % n)
 
     # The rare kinds in fixed numbers, on students drawn from the seed (at least one each).
     count = args.count
@@ -198,7 +156,7 @@ def main():
         name = "student%03d" % s
         files, record = {}, {}
         for n in numbers:
-            folder, exercises, _ = labs[n]
+            exercises = labs[n]["exercise_files"]
             kind = special[s][0] if s in special and special[s][1] == n else rng.choice(kinds)
             if kind == "wrong" and not answers[n]["wrong"]:
                 kind = "stock"

@@ -80,7 +80,7 @@ echo "slurm up: $(sinfo -h -o '%P %D %c %t')"
 
 # Submissions: the grader's own tree (stock exercises: every lab fails) and generated ones.
 subs="$tmp/subs"
-python3 "$src/tests/make_submissions.py" --out "$subs" --count "${SHADOWLAB_SLURM_SUBMISSIONS:-4}" --seed 15 --labs "${SHADOWLAB_SLURM_LABS:-all}" \
+python3 "$src/tests/make_submissions.py" --bin "$bin" --out "$subs" --count "${SHADOWLAB_SLURM_SUBMISSIONS:-4}" --seed 15 --labs "${SHADOWLAB_SLURM_LABS:-all}" \
   || fail "could not generate submissions"
 chmod -R a+rX "$tmp"
 out="$tmp/grades"
