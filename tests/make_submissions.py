@@ -136,13 +136,13 @@ def main():
     students = list(range(count))
     rng.shuffle(students)
     picks = iter(students)
-    if glsl_labs:
-        for _ in range(max(1, count // 40)):
-            special[next(picks)] = ("endless_loop", rng.choice(glsl_labs))
+    wanted = [("endless_loop", glsl_labs)] * max(1, count // 40)
     for kind, times in (("endless_loop", 1), ("crash", max(1, count // 100)), ("forbidden_call", 1), ("syntax_error", 1)):
-        if cpp_labs:
-            for _ in range(times):
-                special[next(picks)] = (kind, rng.choice(cpp_labs))
+        wanted += [(kind, cpp_labs)] * times
+    for kind, where in wanted:  # a small class gets the first ones only
+        student = next(picks, None)
+        if where and student is not None:
+            special[student] = (kind, rng.choice(where))
     refused = next(picks, None)
     forms = {next(picks, None): "zip", next(picks, None): "tar.gz"}  # at least one of each
 
