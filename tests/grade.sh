@@ -26,13 +26,13 @@ lab2() {
   local dir="$tmp/subs/$1/labs/02_ortho_fit"
   mkdir -p "$dir"
   python3 - "$src" "$2" "$dir/exercise.cpp" <<'PY'
-import glob, random, sys
+import glob, sys
 src, kind, out = sys.argv[1:4]
 sys.path.insert(0, src + "/tests")
 from make_submissions import broken
 text = open(sorted(glob.glob(src + "/tests/answers/02_ortho_fit/right/*__exercise.cpp"))[0]).read()
 if kind != "right":
-    text, line = broken(text, kind, True, random.Random(1))
+    text, line = broken(text, kind, True, "ortho_fit_exercise")
     if line:
         print(line)
 open(out, "w").write(text)

@@ -40,38 +40,52 @@ def read(path):
         return f.read()
 
 
-def function_start(lines, cpp):
-    """Index of the line after the first function's opening brace, and the function's return type."""
-    signature = re.compile(r"^\s*(?:[\w:<>]+\s+)*?([\w:<>]+)\s+\w+\s*\(" if cpp else r"^\s*(float|vec[234]|void|bool|int)\s+\w+\s*\(")
+SIGNATURE = re.compile(r"^\s*(?:[\w:<>]+\s+)*?([\w:<>]+)\s+(\w+)\s*\(")
+
+
+def entry_function(stock_text):
+    """The name of the function the lab calls: the first one defined in the stock exercise file."""
+    for line in stock_text.split("\n"):
+        m = SIGNATURE.match(line)
+        if m and not line.lstrip().startswith(("//", "#", "return")) and not line.rstrip().endswith(";"):
+            return m.group(2)
+    raise ValueError("no function in the stock exercise")
+
+
+def function_start(lines, entry):
+    """Index of the line after the opening brace of function `entry`, and its return type."""
     for i, line in enumerate(lines):
-        if line.lstrip().startswith(("//", "#", "uniform", "return")):
-            continue
-        m = signature.match(line)
-        if not m or line.rstrip().endswith(";"):
+        m = SIGNATURE.match(line)
+        if not m or m.group(2) != entry or line.lstrip().startswith("//") or line.rstrip().endswith(";"):
             continue
         for j in range(i, min(i + 6, len(lines))):
             if lines[j].rstrip().endswith("{"):
                 return j + 1, m.group(1)
-    raise ValueError("no function found")
+    raise ValueError("no definition of %s" % entry)
 
 
-def broken(text, kind, cpp, rng):
-    """A right answer made into the given kind of broken one; returns (text, the line to be reported)."""
+def broken(text, kind, cpp, entry):
+    """A right answer made into the given kind of broken one, the damage in function `entry` (the one
+    the lab calls); returns (text, the line to be reported, or None)."""
     lines = text.split("\n")
     if kind == "syntax_error":
         at = len(lines) if lines[-1] != "" else len(lines) - 1
         lines.insert(at, "this line is not code;" if not cpp else "this line is not C++;")
         return "\n".join(lines), at + 1
-    start, ret = function_start(lines, cpp)
+    start, ret = function_start(lines, entry)
     if kind == "semantic_error":
         lines.insert(start, "  float unused_value = undeclared_name;")
         return "\n".join(lines), start + 1
     if kind == "endless_loop" and not cpp:
         value = {"void": "", "float": "0.0", "int": "0", "bool": "false"}.get(ret, ret + "(0.0)")
+        # llvmpipe stops any loop after 65,535 iterations in all (one counter per invocation), so an
+        # endless loop is really a long one there; each iteration here is 32 dependent sines, which
+        # takes minutes even for a function only the check's probes call.
         lines[start:start] = [
             "  float spin = 0.0;",
-            "  for (int i = 0; i < 100000; ++i) for (int j = 0; j < 100000; ++j) for (int k = 0; k < 100000; ++k)",
-            "    spin += sin(float(i ^ j ^ k) + spin);",
+            "  for (int i = 0; i >= 0; ++i) {",
+            "    spin = sin(spin + float(i));" + " spin = sin(spin * 1.0001 + 0.5);" * 31,
+            "  }",
             "  if (spin == -7.0) return %s;" % value,
         ]
         return "\n".join(lines), None
@@ -172,7 +186,8 @@ def main():
                     elif kind == "missing":
                         continue
                     else:
-                        text, line = broken(text, kind, ex.endswith(".cpp"), rng)
+                        stock = read(os.path.join(ROOT, ex))
+                        text, line = broken(text, kind, ex.endswith(".cpp"), entry_function(stock))
                         variant = kind + " in " + variant
                         if line is not None:
                             entry["line"] = line + 1  # the name line below comes first
