@@ -1,8 +1,12 @@
 #include "labs/probe.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
 #include <stdexcept>
 
+#include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/gl_objects.h"
 #include "renderer/shader.h"
@@ -67,6 +71,85 @@ void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampl
   glBindSampler(1, compare.id());
   set_uniform(program, "u_shadow_map_compare", 1);
   glActiveTexture(GL_TEXTURE0);
+}
+
+std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep) {
+  constexpr int kSteps = 600;
+  constexpr double kNdotL[] = {1.0, 0.5};
+  std::vector<double> offsets;
+  for (int j = 0; j < kSteps; ++j) offsets.push_back(sweep.distance * std::pow(10.0, -5.0 + 5.0 * j / (kSteps - 1)));
+  ProbeRequest request;
+  request.fragment = "shaders/probe/visibility.frag";
+  for (double c : kNdotL) {
+    // A normal at the wanted angle to the light: tilted from the direction toward the light.
+    const glm::vec3 to_light = -sweep.direction;
+    glm::vec3 side = glm::cross(to_light, std::abs(to_light.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0));
+    side = glm::normalize(side);
+    const glm::vec3 n = static_cast<float>(c) * to_light + static_cast<float>(std::sqrt(1.0 - c * c)) * side;
+    for (double x : offsets) {
+      const glm::vec3 p = sweep.direction * static_cast<float>(sweep.distance + x);
+      request.in0.push_back({p, static_cast<float>(c)});
+      request.in1.push_back({n, 0.0f});
+    }
+  }
+  for (float angle : sweep.texel_angles)
+    request.passes.push_back([&sweep, angle](GLuint program) { sweep.setup(program, sweep.distance, angle); });
+  const auto v = run_probe(hooks, request);
+  std::vector<BiasThreshold> out;
+  for (std::size_t pass = 0; pass < v.size(); ++pass)
+    for (std::size_t k = 0; k < std::size(kNdotL); ++k) {
+      double bias = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < kSteps; ++j)
+        if (!(v[pass][k * kSteps + static_cast<std::size_t>(j)] >= 0.5f)) {
+          bias = j == 0 ? 0.0 : offsets[static_cast<std::size_t>(j)];
+          break;
+        }
+      out.push_back({sweep.distance, kNdotL[k], sweep.texel_angles[pass], bias});
+    }
+  return out;
+}
+
+void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>& thresholds, double slope) {
+  double least = std::numeric_limits<double>::infinity(), most = 0.0;
+  std::map<double, std::pair<double, double>> per_slope;  // n.l -> (least, most) ratio
+  std::map<double, std::vector<double>> by_n_dot_l;
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& t : thresholds) {
+    const double tan_a = std::sqrt(1.0 - t.n_dot_l * t.n_dot_l) / t.n_dot_l;
+    const double footprint = t.distance * t.texel_angle * (1.0 + slope * tan_a);
+    const double ratio = t.bias / footprint;
+    least = std::min(least, ratio);
+    most = std::max(most, std::isfinite(ratio) ? ratio : 1e30);
+    auto& [lo, hi] = per_slope.try_emplace(t.n_dot_l, std::numeric_limits<double>::infinity(), 0.0).first->second;
+    lo = std::min(lo, ratio);
+    hi = std::max(hi, std::isfinite(ratio) ? ratio : 1e30);
+    by_n_dot_l[t.n_dot_l].push_back(t.bias);
+    list.push_back({{"distance", t.distance}, {"n_dot_l", t.n_dot_l}, {"texel_angle", t.texel_angle},
+                    {"bias", std::isfinite(t.bias) ? t.bias : -1.0}, {"footprint_bias", footprint}});
+  }
+  double spread = 1.0;
+  for (const auto& [c, range] : per_slope) spread = std::max(spread, range.first > 0 ? range.second / range.first : 1e30);
+  // The bias's growth with the slope: median over the cases of bias(n.l = 0.5) / bias(n.l = 1).
+  std::vector<double> growth;
+  const auto& at_one = by_n_dot_l[1.0];
+  const auto& at_half = by_n_dot_l[0.5];
+  for (std::size_t i = 0; i < std::min(at_one.size(), at_half.size()); ++i)
+    growth.push_back(at_one[i] > 0 ? at_half[i] / at_one[i] : 0.0);
+  std::sort(growth.begin(), growth.end());
+  const double slope_growth = growth.empty() ? 0.0 : growth[growth.size() / 2];
+  result.metrics["bias_probe"] = list;
+  const std::string why = "probe: the offset at which a point behind a stored occluder turns shadowed, against "
+                          "distance x texel angle x (1 + slope x tan)";
+  result.criteria.push_back({"bias.too_small", least, Criterion::kAtLeast, 0.5, why,
+                             "the bias must cover a texel's footprint at the fragment's distance (distance x "
+                             "u_texel_angle), or surfaces shadow themselves (acne)."});
+  result.criteria.push_back({"bias.too_large", most, Criterion::kAtMost, 4.0, why,
+                             "the bias is several texels' footprints too large: shadows detach (peter-panning)."});
+  result.criteria.push_back({"bias.not_proportional", spread, Criterion::kAtMost, 1.4, why,
+                             "the bias must grow in proportion to the distance from the light and to u_texel_angle "
+                             "(a texel's footprint), not be a constant tuned to one place or map size."});
+  result.criteria.push_back({"bias.slope_growth", slope_growth, Criterion::kAtLeast, 1.5, why,
+                             "the bias must grow with the slope (u_bias_slope x tan of the angle of incidence)."});
 }
 
 void set_uniform(GLuint program, const char* name, float value) { glUniform1f(glGetUniformLocation(program, name), value); }

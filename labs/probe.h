@@ -42,6 +42,30 @@ GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int 
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare);
 GlSampler make_compare_sampler();
 
+// The bias a positional light's shadow test really applies, in world units, found by sweeping points away
+// from a stored occluder: `setup` binds an occluder at `distance` from the light (a uniform map) and the
+// uniforms of one texel angle; the points lie along `direction` from the light at distance + x, for x
+// from 1e-5 to 1 times the distance (log-spaced), with n . l = 1 and 0.5. Per (n . l, texel angle): the
+// first x at which the point is shadowed (0 when shadowed at once, +inf when never).
+struct BiasSweep {
+  double distance = 5.0;
+  glm::vec3 direction{0, 0, -1};  // unit, from the light
+  std::vector<float> texel_angles;
+  std::function<void(GLuint program, double distance, float texel_angle)> setup;
+};
+struct BiasThreshold {
+  double distance, n_dot_l, texel_angle, bias;
+};
+std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep);
+
+// Grades the thresholds against the footprint bias the lab teaches, distance x texel angle x
+// (1 + slope x tan(angle of incidence)): adds bias.too_small (least ratio, >= 0.5), bias.too_large
+// (largest, <= 4), bias.not_proportional (per n . l, largest over least ratio, <= 1.4: it must scale with
+// distance and texel size as a texel's footprint does) and bias.slope_growth (the bias at n . l = 0.5
+// over the bias at 1, >= 1.5).
+struct CheckResult;
+void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>& thresholds, double slope);
+
 // Sets a uniform by name on the bound program; a uniform the student's code does not use is optimised
 // away, which is fine (setting it is then a no-op).
 void set_uniform(GLuint program, const char* name, float value);

@@ -55,6 +55,21 @@ FitVerification verify_light_fit(const std::function<LightView(const Bounds&, co
       excess = std::max({excess, hi[a] - 1.0, -1.0 - lo[a]});
       gap = std::max({gap, 1.0 - hi[a], 1.0 + lo[a]});
     }
+    // The image axes and world size against the matrix (see FitVerification).
+    const LightView view = fit(bounds, d);
+    const glm::dmat4 vp(m);
+    const glm::dvec3 c(bounds.center());
+    const glm::dvec3 x(view.image_x), y(view.image_y), dl(d);
+    auto ndc_step = [&](const glm::dvec3& step) { return glm::dvec3(vp * glm::dvec4(c + step, 1.0) - vp * glm::dvec4(c, 1.0)); };
+    const glm::dvec3 across_x = ndc_step(x * static_cast<double>(view.world_size.x));
+    const glm::dvec3 across_y = ndc_step(y * static_cast<double>(view.world_size.y));
+    const double kAxisTolerance = 1e-4;
+    const bool axes_ok = std::abs(glm::length(x) - 1.0) < kAxisTolerance && std::abs(glm::length(y) - 1.0) < kAxisTolerance &&
+                         std::abs(glm::dot(x, y)) < kAxisTolerance && std::abs(glm::dot(x, dl)) < kAxisTolerance &&
+                         std::abs(glm::dot(y, dl)) < kAxisTolerance && std::abs(std::abs(across_x.x) - 2.0) < 1e-3 &&
+                         std::abs(across_x.y) < 1e-3 && std::abs(std::abs(across_y.y) - 2.0) < 1e-3 && std::abs(across_y.x) < 1e-3;
+    if (!axes_ok) ++v.inconsistent_axes;
+    if (!(ndc_step(dl).z < 0.0)) ++v.depth_reversed;
     v.worst_excess = std::max(v.worst_excess, excess);
     v.worst_gap = std::max(v.worst_gap, gap);
     if (excess > tolerance) ++v.outside;
@@ -176,13 +191,22 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
     const FitVerification v = verify_light_fit(fit, box);
     const std::string tag = tag_text;
     result.metrics[tag] = {{"directions", v.directions}, {"non_finite", v.non_finite}, {"outside", v.outside},
-                           {"loose", v.loose}, {"worst_excess", v.worst_excess}, {"worst_gap", v.worst_gap}};
+                           {"loose", v.loose}, {"worst_excess", v.worst_excess}, {"worst_gap", v.worst_gap},
+                           {"inconsistent_axes", v.inconsistent_axes}, {"depth_reversed", v.depth_reversed}};
     result.criteria.push_back({tag + ".non_finite_directions", static_cast<double>(v.non_finite), Criterion::kAtMost, 0,
                                "no NaN or Inf for any of 10,006 directions"});
     result.criteria.push_back({tag + ".corners_outside", static_cast<double>(v.outside), Criterion::kAtMost, 0,
                                "every corner in [-1,1]^3 within 1e-5"});
     result.criteria.push_back({tag + ".loose_directions", static_cast<double>(v.loose), Criterion::kAtMost, 0,
                                "the box touches both sides of every axis"});
+    result.criteria.push_back({tag + ".inconsistent_axes", static_cast<double>(v.inconsistent_axes), Criterion::kAtMost, 0,
+                               "image_x, image_y unit and orthogonal to the light; world_size = the map's footprint",
+                               "fill image_x = X, image_y = Y (the view's first two rows) and world_size = (2 hx, 2 hy): the "
+                               "oracle and the bias read them."});
+    result.criteria.push_back({tag + ".depth_reversed", static_cast<double>(v.depth_reversed), Criterion::kAtMost, 0,
+                               "a point nearer the light must get a smaller depth",
+                               "Z must point toward the light (the view looks along -Z, as lookAt's does), so that near "
+                               "and far are not swapped."});
   }
   // 2. Shadows against the oracle at a 1024^2 map, where the fixed box is wrong: the light straight down
   // (its lookAt degenerates), and the scene away from the origin (the box misses it).

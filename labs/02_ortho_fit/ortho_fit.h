@@ -27,6 +27,14 @@ struct FitVerification {
   int loose = 0;          // directions where the box does not touch both sides of some axis
   double worst_excess = 0.0;  // largest |coordinate| - 1 over all corners (> 0: outside)
   double worst_gap = 0.0;     // largest 1 - max|coordinate| over axes (> 0: not tight)
+  // Directions whose image_x, image_y and world_size disagree with the matrix: the axes must be unit,
+  // orthogonal to each other and to the light, and a step of world_size along image_x (image_y) must
+  // cross the map's width (height) in x (y) alone. The oracle's edge band and the bias's texel size read
+  // these fields, so a matrix alone is not the whole answer.
+  int inconsistent_axes = 0;
+  // Directions where moving toward the light does not decrease the depth (near and far swapped: the
+  // map then keeps the farthest surfaces).
+  int depth_reversed = 0;
 };
 
 // The directions verify_light_fit tries: the six axes, then `random_directions` from a fixed seed.

@@ -1,5 +1,6 @@
 // wrong: image_x and image_y swapped (Y, X), so the map's texel axes do not match the matrix
 // expect: part-ungraded
+// fails: *.inconsistent_axes
 #include "labs/02_ortho_fit/ortho_fit.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // wrong: skips step 1: the view stays at the world origin, half-lengths are the largest |V . axis| about the origin
 // expect: skipped-half
+// fails: *.loose_directions
 #include "labs/02_ortho_fit/ortho_fit.h"
 
 #include <algorithm>

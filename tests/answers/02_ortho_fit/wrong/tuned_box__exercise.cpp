@@ -1,5 +1,6 @@
 // wrong: fitted centre and axes, but a hand-tuned half-length of 12 that covers the default scene
 // expect: tuned-to-scene
+// fails: *.loose_directions *.corners_outside
 #include "labs/02_ortho_fit/ortho_fit.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // wrong: half-lengths from the min and max corners only ('the extreme corners'), not all 8: other corners stick out for most directions
 // expect: skipped-half
+// fails: *.corners_outside
 #include "labs/02_ortho_fit/ortho_fit.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // wrong: Z points the way the light travels (-to_light), so the map stores the surfaces farthest from the light
 // expect: sign
+// fails: *.depth_reversed
 #include "labs/02_ortho_fit/ortho_fit.h"
 
 #include <algorithm>

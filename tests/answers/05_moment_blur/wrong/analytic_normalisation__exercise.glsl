@@ -1,5 +1,6 @@
 // wrong: normalises with the continuous Gaussian's 1 / (sigma sqrt(2 pi)) instead of the sum of the discrete, truncated weights
 // expect: compile-fine-but-wrong-formula
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: equal weights (a box filter) instead of the Gaussian
 // expect: compile-fine-but-wrong-formula
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: clamps the coordinates to [0, size] instead of [0, size - 1]: one texel past the edge is read
 // expect: off-by-one
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: always steps along x (ivec2(i, 0)), ignoring direction: the Y pass blurs x again, y never
 // expect: skipped-half
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: divides the weighted sum by the number of taps (2r + 1) instead of the sum of the weights
 // expect: compile-fine-but-wrong-formula
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: mirrors the coordinates at the border (reflect) instead of clamping to the edge
 // expect: structure
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

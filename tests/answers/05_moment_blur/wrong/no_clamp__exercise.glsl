@@ -1,5 +1,6 @@
 // wrong: no clamp of the coordinates: texelFetch outside the texture is undefined (zeros on Mesa) at the map's border
 // expect: structure
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

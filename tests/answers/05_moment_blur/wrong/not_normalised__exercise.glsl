@@ -1,5 +1,6 @@
 // wrong: Gaussian weights exp(-i^2 / (2 sigma^2)) summed without dividing by their sum: the moments are scaled up
 // expect: compile-fine-but-wrong-formula
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

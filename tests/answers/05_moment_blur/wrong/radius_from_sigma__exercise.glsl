@@ -1,5 +1,6 @@
 // wrong: takes the kernel's reach as 2 sigma (int(2 sigma + 0.5)) and ignores the radius slider
 // expect: tuned-to-scene
+// fails: held_out_*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

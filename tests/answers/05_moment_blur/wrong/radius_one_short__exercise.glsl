@@ -1,5 +1,6 @@
 // wrong: loops i = -r .. r - 1 (i < r): 2r taps, the kernel lopsided by one texel
 // expect: off-by-one
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

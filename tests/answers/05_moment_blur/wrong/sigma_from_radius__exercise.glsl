@@ -1,5 +1,6 @@
 // wrong: computes sigma = r / 2 itself ('the kernel spans 2 sigma') and ignores the sigma slider
 // expect: tuned-to-scene
+// fails: held_out_*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

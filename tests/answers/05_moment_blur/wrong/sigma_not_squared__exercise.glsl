@@ -1,5 +1,6 @@
 // wrong: exp(-i^2 / (2 sigma)): sigma where sigma^2 belongs (right only at sigma 1)
 // expect: units
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: blurs the full (2r+1)^2 square in each pass (ignores direction, 2D weights): the map is blurred twice
 // expect: structure
+// fails: radius*.max_texel_error
 uniform int u_blur_radius;   // slider "Blur radius (texels)"
 uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 

@@ -1,5 +1,6 @@
 // wrong: averages the depths of the taps and compares once (filtering depths, which the lab says is meaningless)
 // expect: compile-fine-but-wrong-formula
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

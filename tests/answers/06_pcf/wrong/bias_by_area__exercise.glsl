@@ -1,5 +1,6 @@
 // wrong: scales the bias with the kernel's area (1 + r)^2 instead of its reach 1 + r: peter-panning grows with the kernel
 // expect: compile-fine-but-wrong-formula
+// fails: *.shadow_error
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

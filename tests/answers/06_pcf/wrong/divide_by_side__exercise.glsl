@@ -1,5 +1,6 @@
 // wrong: divides the sum of (2r+1)^2 comparisons by 2r + 1: lit pixels get visibility up to 2r + 1
 // expect: compile-fine-but-wrong-formula
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: weights the taps with a Gaussian (as in lab 5) but still divides by the number of taps instead of the weights' sum: lit pixels come out below 1
 // expect: partial-darkening
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: never uses the comparison sampler: the Hardware checkbox changes nothing
 // expect: skipped-half
+// fails: probe.hardware_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

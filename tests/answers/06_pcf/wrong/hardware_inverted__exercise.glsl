@@ -1,5 +1,6 @@
 // wrong: reads the comparison sampler's result as 'shadowed' (1 - texture(...)), but GL_LEQUAL returns 1 where lit
 // expect: sign
+// fails: probe.hardware_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

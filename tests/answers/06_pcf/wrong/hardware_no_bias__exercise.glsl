@@ -1,5 +1,6 @@
 // wrong: the hardware path compares the raw depth (no bias): acne wherever the hardware comparison is on
 // expect: skipped-half
+// fails: *hw.lit_error
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

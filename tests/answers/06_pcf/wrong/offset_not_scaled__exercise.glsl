@@ -1,5 +1,6 @@
 // wrong: adds the integer offset to the texture coordinate without the texel size: every tap lands a whole map away
 // expect: units
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: keeps lab 1's one-texel bias for every tap: taps far out on a tilted receiver shadow it (moire rings)
 // expect: partial-darkening
+// fails: *.lit_error
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: treats u_pcf_radius as the kernel size N and loops -N..N: a 7x7 kernel at the 3x3 setting, 19x19 at 9x9
 // expect: wrong-radius
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

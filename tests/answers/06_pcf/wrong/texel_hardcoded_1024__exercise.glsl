@@ -1,5 +1,6 @@
 // wrong: one texel hard-coded as 1 / 1024 (the lab's usual map size) instead of 1 / textureSize
 // expect: tuned-to-scene
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: one row of taps along x only (2r + 1 taps): the edge is soft across x, hard across y
 // expect: skipped-half
+// fails: probe.kernel_mismatch
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

@@ -1,5 +1,6 @@
 // wrong: linearises both depths, then a hand-tuned constant 0.1 world units (tried 0.05, then 0.1) as the bias
 // expect: tuned-to-scene
+// fails: bias.not_proportional
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

@@ -1,5 +1,6 @@
 // wrong: linearises both depths but keeps the directional labs' bias, which is in depth units, not world units
 // expect: units
+// fails: bias.*
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

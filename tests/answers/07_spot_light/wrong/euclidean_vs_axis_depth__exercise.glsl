@@ -1,5 +1,6 @@
 // wrong: compares the fragment's Euclidean distance to the light with the stored depth along the light's axis (larger off-axis)
 // expect: units
+// fails: *.lit_error
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

@@ -1,5 +1,6 @@
 // wrong: one texel's footprint taken at the near plane (near * texel angle) instead of at the fragment's distance
 // expect: compile-fine-but-wrong-formula
+// fails: bias.too_small bias.not_proportional
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

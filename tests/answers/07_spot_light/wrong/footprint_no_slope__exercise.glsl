@@ -1,5 +1,6 @@
 // wrong: biases by one texel's footprint at the distance, but drops the slope term
 // expect: skipped-half
+// fails: bias.slope_growth
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

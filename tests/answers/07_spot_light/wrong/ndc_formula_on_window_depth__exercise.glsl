@@ -1,5 +1,6 @@
 // wrong: linearises with the NDC formula 2nf / (f + n - d (f - n)) but feeds it the window depth d (forgot d * 2 - 1)
 // expect: units
+// fails: bias.not_proportional
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

@@ -1,5 +1,6 @@
 // wrong: inverts the projection with near and far swapped, nf / (n + d (f - n)): depth 0 maps to far, 1 to near
 // expect: sign
+// fails: bias.* *.shadow_error
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

@@ -1,5 +1,6 @@
 // wrong: linearises the fragment's depth but compares it with the stored depth as read (still perspective, in [0, 1])
 // expect: skipped-half
+// fails: bias.*
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

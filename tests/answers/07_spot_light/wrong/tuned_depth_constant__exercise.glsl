@@ -1,5 +1,6 @@
 // wrong: stays in window depth and shrinks the constant bias until both places of the check pass (2e-5)
 // expect: tuned-to-scene
+// fails: bias.not_proportional
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

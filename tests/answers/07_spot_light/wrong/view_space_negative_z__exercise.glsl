@@ -1,5 +1,6 @@
 // wrong: keeps view space's negative z for both distances, so 'farther' compares the wrong way
 // expect: sign
+// fails: bias.* *.shadow_error
 #include "lab/bias.glsl"
 
 uniform float u_light_near;   // the spot's fitted near and far planes (world units along its axis)

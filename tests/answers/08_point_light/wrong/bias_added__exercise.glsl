@@ -1,5 +1,6 @@
 // wrong: adds the bias to the fragment's distance instead of subtracting it
 // expect: sign
+// fails: bias.too_small
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

@@ -1,5 +1,6 @@
 // wrong: a hand-tuned constant bias of 0.03 world units (0.02 still failed) instead of one that grows with distance and slope
 // expect: tuned-to-scene
+// fails: bias.not_proportional
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

@@ -1,5 +1,6 @@
 // wrong: reverses the light-to-point vector and flips its y 'because cube maps count t downward' (the faces' orientation is already in the views)
 // expect: sign
+// fails: *.shadow_error
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

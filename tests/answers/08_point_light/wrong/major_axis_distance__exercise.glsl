@@ -1,5 +1,6 @@
 // wrong: the fragment's distance measured along the face's major axis (as a depth would be), not the Euclidean distance the map stores
 // expect: units
+// fails: bias.*
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

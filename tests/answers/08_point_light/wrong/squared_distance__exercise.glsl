@@ -1,5 +1,6 @@
 // wrong: compares the squared distance (dot(v, v), to save the sqrt) with the stored distance
 // expect: units
+// fails: bias.*
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

@@ -1,5 +1,6 @@
 // wrong: one texel's angle typed in as 2 / 1024 (the faces' size in the check) instead of u_texel_angle
 // expect: tuned-to-scene
+// fails: bias.not_proportional
 uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
 uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)

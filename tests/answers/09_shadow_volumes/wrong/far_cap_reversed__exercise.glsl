@@ -1,5 +1,6 @@
 // wrong: reverses the far cap's vertex order itself although emit_far_cap already does: the far cap faces into the volume
 // expect: sign
+// fails: *zfail.interior_agreement
 void emit_volume(vec3 t0, vec3 n01, vec3 t1, vec3 n12, vec3 t2, vec3 n20) {
   if (!faces_light(t0, t1, t2)) return;
   if (!faces_light(t0, n01, t1)) emit_side(t0, t1);

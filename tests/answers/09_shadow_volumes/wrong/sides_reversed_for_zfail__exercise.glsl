@@ -1,5 +1,6 @@
 // wrong: reverses the side quads for z-fail ('it counts the other way round') as well as adding the caps
 // expect: sign
+// fails: *zfail.interior_agreement
 void emit_volume(vec3 t0, vec3 n01, vec3 t1, vec3 n12, vec3 t2, vec3 n20) {
   if (!faces_light(t0, t1, t2)) return;
   if (u_caps) {
