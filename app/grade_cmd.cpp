@@ -223,6 +223,7 @@ json grade_lab(const Run& run, const Lab& lab, const std::string& student, const
     const platform::ChildOutcome o = platform::run_child(argv, limits, log);
     classify(run, o, check_json, log, record);
     record["seconds"] = o.seconds;
+    record["cpu_seconds"] = o.cpu_seconds;
     record["peak_memory_mb"] = o.peak_rss_mb;
     if (o.kind == platform::ChildOutcome::Kind::Exited) record["exit"] = {{"code", o.exit_code}};
     if (o.kind == platform::ChildOutcome::Kind::Signalled) record["exit"] = {{"signal", o.signal_name}};

@@ -151,6 +151,8 @@ void wait_for(pid_t pid, double started, double deadline, ChildOutcome& outcome)
   ::kill(-pid, SIGKILL);  // anything it left behind in its group (a compiler's subprocesses)
   outcome.seconds = now_seconds() - started;
   outcome.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
+  auto secs = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  outcome.cpu_seconds = secs(usage.ru_utime) + secs(usage.ru_stime);
   if (timed_out) {
     outcome.kind = ChildOutcome::Kind::TimedOut;
   } else if (WIFSIGNALED(status)) {

@@ -30,6 +30,7 @@ struct ChildOutcome {
   std::string signal_name;    // "SIGSEGV (segmentation fault)"
   std::string error;          // NotStarted: why
   double seconds = 0.0;       // wall clock
+  double cpu_seconds = 0.0;   // user + system time of the child and its waited-for descendants
   double peak_rss_mb = 0.0;   // the child's (and its waited-for descendants') peak resident memory
 };
 
