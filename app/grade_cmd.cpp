@@ -1,6 +1,7 @@
 #include "app/grade_cmd.h"
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -80,7 +81,8 @@ std::string input_fingerprint(const Run& run, const Lab& lab, const fs::path& ro
   std::error_code ec;
   f.add(std::to_string(fs::file_size(run.self, ec)));
   f.add(std::to_string(fs::last_write_time(run.self, ec).time_since_epoch().count()));
-  f.add(std::to_string(run.options.timeout) + "/" + std::to_string(run.options.memory_mb) + "/" + run.options.images);
+  f.add(std::to_string(run.options.cpu_time) + "/" + std::to_string(run.options.timeout) + "/" +
+        std::to_string(run.options.memory_mb) + "/" + run.options.images);
   f.add(std::to_string(lab.number));
   for (const auto& file : lab.exercise_files) f.add(file + "\n" + read_text(root / file));
   return f.hex();
@@ -123,7 +125,11 @@ void classify(const Run& run, const platform::ChildOutcome& o, const fs::path& c
   if (o.kind == Kind::NotStarted) return set("grader_error", "the check could not start: " + o.error);
   if (o.kind == Kind::TimedOut)
     return set("timed_out", "no result within " + std::to_string(static_cast<int>(run.options.timeout)) +
-                                " s: the check was stopped (an endless loop in the exercise?)");
+                                " s (wall clock): the check was stopped");
+  if (o.kind == Kind::Signalled && (o.signal == SIGXCPU || (o.signal == SIGKILL && o.cpu_seconds >= run.options.cpu_time)))
+    return set("timed_out", "no result after " + std::to_string(static_cast<int>(run.options.cpu_time)) +
+                                " s of CPU time: the check was stopped (an endless loop, or an exercise far slower "
+                                "than the solution)");
   const bool out_of_memory = log_tail.find("bad_alloc") != std::string::npos ||
                              log_tail.find("Cannot allocate memory") != std::string::npos;
   const std::string memory_note =
@@ -174,13 +180,19 @@ json kept_images(const Run& run, const fs::path& folder, const std::string& stat
   return images;
 }
 
-// A file the lab needs, as the submission has it: missing and linked files are the student's problem.
+// A file the lab needs, as the submission has it: a missing file, a link, or a path that leads out of
+// the submission (a linked folder) is the student's problem.
 std::string missing_or_linked(const Lab& lab, const fs::path& root) {
   std::string problem;
+  std::error_code ec;
+  const std::string inside = (fs::weakly_canonical(root, ec) / "").string();
   for (const auto& file : lab.exercise_files) {
     const fs::path p = root / file;
-    if (fs::is_symlink(p)) problem += (problem.empty() ? "" : "; ") + file + ": a link; submit the file itself";
-    else if (!fs::is_regular_file(p)) problem += (problem.empty() ? "" : "; ") + file + ": not in the submission";
+    std::string why;
+    if (fs::is_symlink(p)) why = "a link; submit the file itself";
+    else if (!fs::is_regular_file(p)) why = "not in the submission";
+    else if (fs::weakly_canonical(p, ec).string().rfind(inside, 0) != 0) why = "leads out of the submission (a linked folder)";
+    if (!why.empty()) problem += (problem.empty() ? "" : "; ") + file + ": " + why;
   }
   return problem;
 }
@@ -205,7 +217,8 @@ json grade_lab(const Run& run, const Lab& lab, const std::string& student, const
   }
   json record = lab_record(lab.number, student, "grader_error", "");
   record["input"] = input;
-  record["limits"] = {{"timeout_s", run.options.timeout}, {"memory_mb", run.options.memory_mb}};
+  record["limits"] = {{"cpu_time_s", run.options.cpu_time}, {"timeout_s", run.options.timeout},
+                      {"memory_mb", run.options.memory_mb}};
   if (const std::string problem = missing_or_linked(lab, root); !problem.empty()) {
     record["status"] = "failed";
     record["message"] = problem;
@@ -219,7 +232,8 @@ json grade_lab(const Run& run, const Lab& lab, const std::string& student, const
     const std::vector<std::string> argv = {run.self.string(), "check", "--lab", std::to_string(lab.number),
                                            "--impl", "exercise", "--submission", root.string(),
                                            "--json", check_json.string(), "--out", images.string()};
-    const platform::ChildLimits limits{run.options.timeout, static_cast<std::uint64_t>(run.options.memory_mb) << 20};
+    const platform::ChildLimits limits{run.options.timeout, static_cast<std::uint64_t>(run.options.memory_mb) << 20,
+                                       run.options.cpu_time};
     const platform::ChildOutcome o = platform::run_child(argv, limits, log);
     classify(run, o, check_json, log, record);
     record["seconds"] = o.seconds;
@@ -292,7 +306,8 @@ int grade_with_parallel(const Run& run) {
                                    std::to_string(static_cast<int>(per_submission)), "--joblog",
                                    (run.out / "parallel.joblog").string(), "-0", "--arg-file", list.string(),
                                    run.self.string(), "grade", "--no-merge", "--out", run.out.string(), "--lab",
-                                   run.options.labs, "--timeout", std::to_string(run.options.timeout), "--memory",
+                                   run.options.labs, "--cpu-time", std::to_string(run.options.cpu_time),
+                                   "--timeout", std::to_string(run.options.timeout), "--memory",
                                    std::to_string(run.options.memory_mb), "--images", run.options.images};
   if (run.options.again) argv.push_back("--again");
   argv.push_back("{}");
@@ -314,6 +329,7 @@ Run plan_run(const GradeOptions& options) {
     throw std::invalid_argument("no submission given: shadowlab grade SUBMISSION... --out DIR");
   if (options.jobs < 1) throw std::invalid_argument("--jobs must be 1 or more");
   if (!(options.timeout > 0)) throw std::invalid_argument("--timeout must be a positive number of seconds");
+  if (!(options.cpu_time > 0)) throw std::invalid_argument("--cpu-time must be a positive number of seconds");
   if (options.memory_mb < 256) throw std::invalid_argument("--memory must be at least 256 (MB)");
   if (options.images != "none" && options.images != "failed" && options.images != "all")
     throw std::invalid_argument("--images " + options.images + ": valid: none, failed, all");
@@ -334,6 +350,8 @@ Run plan_run(const GradeOptions& options) {
 }  // namespace
 
 int run_grade(const GradeOptions& options) {
+  // A task of a parallel or Slurm run: it goes when whoever started it goes, and takes its checks along.
+  if (options.no_merge) platform::die_with_parent();
   Run run;
   try {
     run = plan_run(options);

@@ -16,7 +16,8 @@ struct GradeOptions {
   std::string out_dir;
   std::string labs = "all";
   int jobs = 1;               // > 1: that many submissions at once, through GNU parallel
-  double timeout = 60.0;      // seconds per lab (a C++ lab's compile included)
+  double cpu_time = 60.0;     // CPU seconds per lab (a C++ lab's compile included): the same verdict whatever the load
+  double timeout = 300.0;     // wall-clock seconds per lab: the backstop for what does not use CPU
   int memory_mb = 2048;       // address space per lab's process
   std::string images = "failed";  // diff images kept: none, failed (labs not passed), all
   bool merge_only = false;    // --merge: write the reports from what is in out_dir

@@ -76,7 +76,9 @@ int main(int argc, char** argv) {
   grade_cmd->add_option("--out", grade.out_dir, "Folder for the results (created if missing)")->required();
   grade_cmd->add_option("--lab", grade.labs, "all, one lab number, or a comma-separated list (3,4,5)");
   grade_cmd->add_option("--jobs", grade.jobs, "Submissions graded at once, through GNU parallel (default 1)");
-  grade_cmd->add_option("--timeout", grade.timeout, "Seconds one lab may take before it is stopped (default 60)");
+  grade_cmd->add_option("--cpu-time", grade.cpu_time,
+                        "CPU seconds one lab may use before it is stopped: the same verdict whatever the load (default 60)");
+  grade_cmd->add_option("--timeout", grade.timeout, "Wall-clock seconds one lab may take before it is stopped (default 300)");
   grade_cmd->add_option("--memory", grade.memory_mb, "Memory one lab's process may take, MB (default 2048)");
   grade_cmd->add_option("--images", grade.images, "Diff images kept: none, failed (labs not passed; default), all")
       ->check(CLI::IsMember({"none", "failed", "all"}));

@@ -80,6 +80,11 @@ struct ExecPlan {
     struct rlimit as = {limits.address_space_bytes, limits.address_space_bytes};
     ::setrlimit(RLIMIT_AS, &as);
   }
+  if (limits.cpu_seconds > 0) {
+    const auto soft = static_cast<rlim_t>(limits.cpu_seconds + 0.999);
+    struct rlimit cpu = {soft, soft + 5};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+  }
   ::execve(plan.program.c_str(), plan.argv.data(), plan.envp.data());
   const int e = errno;
   [[maybe_unused]] auto n = ::write(report, &e, sizeof e);
@@ -182,7 +187,7 @@ std::string describe_signal(int signal) {
       {SIGKILL, "SIGKILL", "killed"},
       {SIGTERM, "SIGTERM", "terminated"},
       {SIGSYS, "SIGSYS", "a system call grading does not allow: the exercise may only compute"},
-      {SIGXCPU, "SIGXCPU", "CPU time limit"},
+      {SIGXCPU, "SIGXCPU", "CPU time limit reached"},
   };
   for (const auto& n : names)
     if (n.signal == signal) return std::string(n.name) + " (" + n.meaning + ")";
@@ -311,6 +316,12 @@ bool confine_to_computing(std::string& error) {
     return false;
   }
   return true;
+}
+
+void die_with_parent() {
+  const pid_t parent = ::getppid();
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::raise(SIGKILL);  // it died before prctl
 }
 
 fs::path self_executable() { return fs::read_symlink("/proc/self/exe"); }

@@ -20,6 +20,8 @@ namespace shadowlab::platform {
 struct ChildLimits {
   double wall_seconds = 0.0;               // 0: none. The whole process group is killed at the limit.
   std::uint64_t address_space_bytes = 0;   // 0: none. Allocations beyond it fail (RLIMIT_AS).
+  double cpu_seconds = 0.0;                // 0: none. CPU time of the process, all its threads: SIGXCPU at the
+                                           // limit, SIGKILL 5 s later (RLIMIT_CPU). The same whatever the load.
 };
 
 struct ChildOutcome {
@@ -81,6 +83,11 @@ bool confine_to_computing(std::string& error);
 
 // "SIGSEGV (segmentation fault)".
 std::string describe_signal(int signal);
+
+// From now on this process dies (SIGKILL) when its parent does: a task started by GNU parallel or a
+// Slurm script leaves nothing behind when they are killed. Linux: PR_SET_PDEATHSIG; elsewhere a no-op
+// (the parent's process-group or job-object kill covers it).
+void die_with_parent();
 
 // The running executable (Linux: /proc/self/exe; macOS: _NSGetExecutablePath; Windows: GetModuleFileName).
 std::filesystem::path self_executable();
