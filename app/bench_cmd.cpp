@@ -269,10 +269,7 @@ std::string csv_escape(const std::string& s) { return s.find(',') == std::string
 
 int run_bench(const BenchOptions& options) {
   try {
-    std::error_code ec;
-    fs::create_directories(options.out_dir, ec);
-    if (ec || !fs::is_directory(options.out_dir))
-      throw std::runtime_error(options.out_dir + ": cannot create the output folder");
+    make_output_dir(options.out_dir);  // created, proven writable, locked against a second run
     const auto bench_scenes = scenes(options.scene_file);
     std::string error;
     auto context = HeadlessContext::create(&error);

@@ -1,13 +1,14 @@
 #include "app/bench_plot.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 #include <nlohmann/json.hpp>
+
+#include "renderer/platform.h"
+#include "renderer/untrusted.h"
 
 namespace shadowlab {
 
@@ -55,18 +56,24 @@ BenchPlots bench_plots_from_json(const nlohmann::json& report) {
 }
 
 BenchPlots load_bench_plots(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open the file");
-  std::ostringstream s;
-  s << in.rdbuf();
+  // A FIFO or a device would block or never end: refused before reading. A benchmark's results are a
+  // few hundred kilobytes; 64 MiB is far beyond any real one.
+  std::string text;
   try {
-    BenchPlots plots = bench_plots_from_json(nlohmann::json::parse(s.str()));
+    text = platform::read_regular_file(file, 64u << 20);
+  } catch (const platform::FileError& e) {
+    throw std::runtime_error(file.string() + ": cannot open the file: " + e.what());
+  }
+  try {
+    BenchPlots plots = bench_plots_from_json(parse_json_bounded(text, JsonLimits{}));  // nesting bounded
     if (plots.by_scene.empty()) throw std::runtime_error("no points to plot");
     return plots;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": not valid JSON (" + e.what() + ")");
+  } catch (const JsonShapeError& e) {  // not JSON, or nested too deep
+    throw std::runtime_error(file.string() + ": not valid JSON (" + std::string(e.what()) + ")");
+  } catch (const nlohmann::json::exception& e) {  // a field of the wrong type
+    throw std::runtime_error(file.string() + ": not valid JSON (" + printable(e.what(), 240) + ")");
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error(file.string() + ": " + e.what());
+    throw std::runtime_error(file.string() + ": " + printable(e.what(), 400));
   }
 }
 

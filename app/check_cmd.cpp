@@ -79,7 +79,7 @@ int run_check(const CheckOptions& options) {
     if (!options.json_file.empty()) {
       const fs::path folder = fs::path(options.json_file).parent_path();
       try {
-        make_output_dir(folder.empty() ? "." : folder.string());
+        prove_writable_folder(folder.empty() ? "." : folder.string());
       } catch (const std::exception& e) {
         throw std::runtime_error("--json " + options.json_file + ": " + e.what());
       }

@@ -16,6 +16,8 @@
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
+#include "renderer/platform.h"
+#include "renderer/untrusted.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {
@@ -24,7 +26,11 @@ namespace fs = std::filesystem;
 
 Scene load_scene_or_default(const std::string& path) {
   if (path.empty()) return make_default_scene();
-  return load_gltf(path);
+  std::vector<std::string> warnings;
+  Scene scene = load_gltf(path, {}, &warnings);
+  for (const std::string& w : warnings)
+    std::fprintf(stderr, "shadowlab: warning: %s: %s\n", printable(path, 400).c_str(), printable(w, 400).c_str());
+  return scene;
 }
 
 std::string one_line_error(const std::string& message) {
@@ -35,15 +41,31 @@ std::string one_line_error(const std::string& message) {
   return m.substr(0, nl) + " " + m.substr(nl + 1);
 }
 
-void make_output_dir(const std::string& dir) {
+void prove_writable_folder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot create the output folder: " + ec.message());
-  // Probe that we can write before rendering anything.
-  const fs::path probe = fs::path(dir) / ".shadowlab-write-test";
-  std::ofstream(probe) << "";
-  if (!fs::exists(probe)) throw std::runtime_error(dir + ": the output folder is not writable");
-  fs::remove(probe, ec);
+  if (ec || !fs::is_directory(dir))
+    throw std::runtime_error(dir + ": cannot create the output folder" + (ec ? ": " + ec.message() : std::string()));
+  try {
+    platform::probe_writable(dir);
+  } catch (const platform::FileError& e) {
+    throw std::runtime_error(dir + ": the output folder is not writable: " + e.what());
+  }
+}
+
+void make_output_dir(const std::string& dir) {
+  prove_writable_folder(dir);
+  std::string holder;
+  bool locked = false;
+  try {
+    locked = platform::lock_folder(dir, &holder);
+  } catch (const platform::FileError& e) {
+    throw std::runtime_error(dir + ": cannot lock the output folder: " + e.what());
+  }
+  if (!locked)
+    throw std::runtime_error(dir + ": the output folder is in use by another shadowlab run" +
+                             (holder.empty() ? std::string() : " (process " + holder + ")") +
+                             "; wait for it to finish or choose another --out");
 }
 
 namespace {

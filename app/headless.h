@@ -25,10 +25,16 @@ struct RenderOptions {
   std::string bench_file;  // with panel: the Speed against error window on this bench.json
 };
 
-// Loads --scene or builds the default scene; throws with a message naming the file on failure.
+// Loads --scene or builds the default scene; throws with a message naming the file on failure. What
+// the glTF specification says to ignore is ignored with a warning on stderr.
 Scene load_scene_or_default(const std::string& path);
 
-// Creates `dir` if missing and proves it writable before anything is rendered; throws one line naming it.
+// Creates `dir` if missing and proves it writable (a file with a unique name, created exclusively, then
+// removed); throws one line naming it.
+void prove_writable_folder(const std::string& dir);
+// The output folder of a run: prove_writable_folder, then an exclusive lock on it for the rest of the
+// process (.shadowlab.lock), so that two runs never mix their outputs in one folder: the second one
+// stops at once, saying the folder is in use. Throws one line naming it.
 void make_output_dir(const std::string& dir);
 // Errors as one line for the terminal: "heading:\ndetail" (e.g. a shader file that cannot be read)
 // becomes "heading: detail"; longer messages (compile logs with quoted source) keep their lines.

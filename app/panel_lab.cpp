@@ -12,6 +12,7 @@
 #include "app/panel.h"
 #include "app/settings_panel.h"
 #include "renderer/shader.h"
+#include "renderer/untrusted.h"
 
 namespace shadowlab {
 
@@ -178,7 +179,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
   }
   if (!m.scene_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-    ImGui::TextWrapped("%s", m.scene_error.c_str());
+    ImGui::TextWrapped("%s", shortened(m.scene_error, 600).c_str());  // bounded, whatever the caller passed
     ImGui::PopStyleColor();
   }
   draw_task(m, a);

@@ -1,15 +1,12 @@
 #include "app/settings.h"
 
-#include <cerrno>
+#include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
-#include <fcntl.h>
-#include <unistd.h>
+#include "renderer/platform.h"
+#include "renderer/untrusted.h"
 
 namespace shadowlab {
 
@@ -18,67 +15,124 @@ namespace fs = std::filesystem;
 namespace {
 
 // A settings file is a few kilobytes; anything this large is not ours and is not read into memory.
-constexpr std::uintmax_t kMaxSettingsBytes = 16u << 20;
+constexpr std::uint64_t kMaxSettingsBytes = 4u << 20;
+// Settings nest five levels (file, labs, lab, params or presets, preset); a value nested deeper than
+// this is dropped while parsing, before anything recursive (copies, comparisons, dumps) can meet it.
+constexpr int kMaxSettingsDepth = 32;
 
 std::string lab_key(int lab) { return std::to_string(lab); }
 
-// Why `doc` is not a settings file this build can use; empty when it is.
-std::string structure_problem(const nlohmann::json& doc) {
+// Why `doc` cannot be used as a whole (it is then moved aside); empty when it can.
+std::string file_problem(const nlohmann::json& doc) {
   if (!doc.is_object()) return "is not a JSON object";
   const auto version = doc.find("version");
-  if (version == doc.end() || !version->is_number_integer()) return "has no version number";
-  if (version->get<long long>() != kSettingsVersion)
-    return "has version " + version->dump() + "; this build reads version " + std::to_string(kSettingsVersion);
+  // 1.0 is the number 1 (JSON does not tell integers from floats); 1.5 or "1" is no version.
+  if (version == doc.end() || !version->is_number() || version->get<double>() != std::trunc(version->get<double>()))
+    return "has no version number";
+  if (version->get<double>() != kSettingsVersion)
+    return "has version " + printable(version->dump(), 40) + "; this build reads version " + std::to_string(kSettingsVersion);
   const auto labs = doc.find("labs");
-  if (labs == doc.end()) return "";
-  if (!labs->is_object()) return "has a \"labs\" entry that is not an object";
-  for (const auto& [lab, entry] : labs->items()) {
-    if (!entry.is_object()) return "has lab " + lab + " that is not an object";
-    if (entry.contains("params") && !entry["params"].is_object()) return "has lab " + lab + " params that are not an object";
-    if (entry.contains("presets")) {
-      if (!entry["presets"].is_object()) return "has lab " + lab + " presets that are not an object";
-      for (const auto& [name, values] : entry["presets"].items())
-        if (!values.is_object()) return "has lab " + lab + " preset '" + name + "' that is not an object";
-    }
-  }
+  if (labs != doc.end() && !labs->is_object()) return "has a \"labs\" entry that is not an object";
   return "";
 }
 
-// settings.json.bad-20240131-142501 (with -2, -3... if that name is taken).
-fs::path backup_name(const fs::path& path) {
+// Drops the entries of `doc` that this build cannot use, one by one, and says which. The rest stays,
+// unknown keys and labs included (a newer build may know them).
+std::vector<std::string> drop_bad_entries(nlohmann::json& doc) {
+  std::vector<std::string> dropped;
+  doc["version"] = kSettingsVersion;  // 1.0 written back as 1
+  if (!doc.contains("labs")) doc["labs"] = nlohmann::json::object();
+  auto& labs = doc["labs"];
+  for (auto lab = labs.begin(); lab != labs.end();) {
+    const std::string name = "lab " + quote(lab.key(), 40);
+    if (!lab->is_object()) {
+      dropped.push_back(name + " is not an object");
+      lab = labs.erase(lab);
+      continue;
+    }
+    auto& entry = *lab;
+    if (entry.contains("params") && !entry["params"].is_object()) {
+      dropped.push_back(name + " params are not an object");
+      entry.erase("params");
+    }
+    if (entry.contains("presets")) {
+      auto& presets = entry["presets"];
+      if (!presets.is_object()) {
+        dropped.push_back(name + " presets are not an object");
+        entry.erase("presets");
+      } else {
+        for (auto preset = presets.begin(); preset != presets.end();) {
+          if (preset->is_object()) {
+            ++preset;
+            continue;
+          }
+          dropped.push_back(name + " preset " + quote(preset.key(), 60) + " is not an object");
+          preset = presets.erase(preset);
+        }
+      }
+    }
+    ++lab;
+  }
+  return dropped;
+}
+
+// Parses with values deeper than kMaxSettingsDepth dropped, each named in `dropped`; a discarded
+// document when the text is not JSON. nlohmann's parser keeps its own stack: the deep part is skipped
+// as it is read, never built, and then the entry holding it (the value of a lab's parameter, a preset,
+// a lab: the first four object keys down from the root) is removed whole.
+nlohmann::json parse_bounded(const std::string& text, std::vector<std::string>& dropped) {
+  using E = nlohmann::json::parse_event_t;
+  std::vector<bool> arrays;       // per open container, from the root: is it an array
+  std::vector<std::string> keys;  // per open object: the key being read
+  std::vector<std::vector<std::string>> cut;  // the entries that held a dropped value
+  const auto callback = [&](int depth, E event, nlohmann::json& parsed) {
+    const auto level = static_cast<std::size_t>(depth);
+    if (event == E::key) {
+      keys.resize(level);
+      if (level > 0) keys[level - 1] = parsed.is_string() ? parsed.get<std::string>() : "?";
+      return true;
+    }
+    if (event != E::object_start && event != E::array_start) return true;
+    if (depth < kMaxSettingsDepth) {
+      arrays.resize(level);
+      arrays.push_back(event == E::array_start);
+      return true;
+    }
+    if (depth == kMaxSettingsDepth) {  // the outermost dropped value: find the entry that holds it
+      std::vector<std::string> path;
+      for (std::size_t i = 0; i < 4 && i < arrays.size() && i < keys.size() && !arrays[i]; ++i) path.push_back(keys[i]);
+      std::string shown;
+      for (const std::string& k : path) shown += (shown.empty() ? "" : "/") + printable(k, 40);
+      dropped.push_back("the value at " + quote(shown, 160) + " nests deeper than " + std::to_string(kMaxSettingsDepth) +
+                        " levels");
+      cut.push_back(std::move(path));
+    }
+    return false;
+  };
+  nlohmann::json doc = nlohmann::json::parse(text, callback, /*allow_exceptions=*/false);
+  for (const auto& path : cut) {
+    nlohmann::json* at = &doc;
+    for (std::size_t i = 0; at && i + 1 < path.size(); ++i)
+      at = at->is_object() && at->contains(path[i]) ? &(*at)[path[i]] : nullptr;
+    if (at && at->is_object() && !path.empty()) at->erase(path.back());
+  }
+  return doc;
+}
+
+// settings.json.bad-20240131-142501 (with -2, -3... if that name is taken): `path` is moved there, or
+// (with `copy`) its `text` is written there, never over an existing file. Returns the new name.
+fs::path keep_aside(const fs::path& path, const std::string& text, bool copy) {
   char stamp[32];
   const std::time_t now = std::time(nullptr);
   std::tm local{};
   localtime_r(&now, &local);
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
   const std::string base = path.string() + ".bad-" + stamp;
-  fs::path candidate = base;
-  std::error_code ec;
-  for (int n = 2; fs::exists(candidate, ec); ++n) candidate = base + "-" + std::to_string(n);
-  return candidate;
-}
-
-std::string errno_text() { return std::strerror(errno); }
-
-// Writes `text` to `tmp` and forces it to disk, so the rename that follows never exposes an empty file
-// after a power cut. Throws with a one-line message; removes `tmp` on failure.
-void write_synced(const fs::path& target, const fs::path& tmp, const std::string& text) {
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(target.string() + ": cannot write settings: " + tmp.string() + ": " + errno_text());
-  std::size_t done = 0;
-  std::string problem;
-  while (done < text.size() && problem.empty()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) problem = "write failed: " + errno_text();
-    else done += static_cast<std::size_t>(n);
+  for (int n = 1; n < 1000; ++n) {
+    const fs::path candidate = n == 1 ? fs::path(base) : fs::path(base + "-" + std::to_string(n));
+    if (copy ? platform::write_new_file(candidate, text) : platform::rename_no_replace(path, candidate)) return candidate;
   }
-  if (problem.empty() && ::fsync(fd) != 0) problem = "fsync failed: " + errno_text();
-  if (::close(fd) != 0 && problem.empty()) problem = "close failed: " + errno_text();
-  if (!problem.empty()) {
-    ::unlink(tmp.c_str());
-    throw std::runtime_error(target.string() + ": cannot write settings: " + problem);
-  }
+  throw platform::FileError(platform::FileProblem::Io, "no free name for a backup beside it");
 }
 
 }  // namespace
@@ -94,48 +148,58 @@ Settings Settings::load(const fs::path& path) {
   Settings s;
   s.path_ = path;
   if (path.empty()) return s;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (status.type() == fs::file_type::not_found) return s;  // first run
-  if (ec || status.type() != fs::file_type::regular) {
-    s.may_write_ = false;
-    s.warning_ = path.string() + ": is not a readable file" + (ec ? " (" + ec.message() + ")" : std::string()) +
-                 "; defaults are used and settings will not be saved";
-    return s;
-  }
-
-  std::string problem;
-  nlohmann::json doc;
-  if (fs::file_size(path, ec) > kMaxSettingsBytes) {
-    problem = "is larger than " + std::to_string(kMaxSettingsBytes >> 20) + " MiB";
-  } else {
-    std::ifstream in(path, std::ios::binary);
-    if (!in.is_open()) {
-      s.may_write_ = false;  // unreadable, not necessarily bad: never replace what we could not read
-      s.warning_ = path.string() + ": cannot read: " + errno_text() + "; defaults are used and settings will not be saved";
+  const std::string shown = printable(path.string(), 400);
+  std::string text, problem;
+  try {
+    text = platform::read_regular_file(path, kMaxSettingsBytes);
+  } catch (const platform::FileError& e) {
+    using platform::FileProblem;
+    if (e.problem() == FileProblem::NotFound) return s;  // first run
+    if (e.problem() != FileProblem::TooLarge) {
+      // A FIFO, a folder, a file we may not read: not necessarily bad; never replace what we could not read.
+      s.may_write_ = false;
+      s.warning_ = shown + ": cannot read: " + e.what() + "; defaults are used and settings will not be saved";
       return s;
     }
-    std::ostringstream text;
-    text << in.rdbuf();  // an empty file (what a truncating crash leaves) fails to parse below
-    doc = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
-    problem = doc.is_discarded() ? "is not valid JSON" : structure_problem(doc);
+    problem = e.what();
+  }
+
+  std::vector<std::string> dropped;
+  nlohmann::json doc;
+  if (problem.empty()) {
+    doc = parse_bounded(text, dropped);  // an empty file (what a truncating crash leaves) does not parse
+    problem = doc.is_discarded() ? "is not valid JSON" : file_problem(doc);
   }
   if (problem.empty()) {
+    for (std::string& d : drop_bad_entries(doc)) dropped.push_back(std::move(d));
     s.doc_ = std::move(doc);
-    if (!s.doc_.contains("labs")) s.doc_["labs"] = nlohmann::json::object();
     s.saved_ = s.doc_;
+    if (dropped.empty()) return s;
+    // Each bad entry is dropped alone; the file as it was is kept beside it, and the next save writes
+    // the rest back (dirty() is true until then).
+    std::string list;
+    for (std::size_t i = 0; i < dropped.size() && i < 8; ++i) list += (i ? "; " : "") + dropped[i];
+    if (dropped.size() > 8) list += "; and " + std::to_string(dropped.size() - 8) + " more";
+    s.saved_ = nullptr;
+    try {
+      const fs::path backup = keep_aside(path, text, /*copy=*/true);
+      s.warning_ = shown + ": dropped what this build cannot use (" + list + "); the other settings are kept, " +
+                   "the file as it was is kept as " + printable(backup.string(), 400);
+    } catch (const platform::FileError& e) {
+      s.warning_ = shown + ": dropped what this build cannot use (" + list + "); the other settings are kept " +
+                   "(no copy of the file as it was: " + e.what() + ")";
+    }
     return s;
   }
 
   // Keep the bad file: the user may want what is in it, and a newer build may be able to read it.
-  const fs::path backup = backup_name(path);
-  fs::rename(path, backup, ec);
-  if (ec) {
+  try {
+    const fs::path backup = keep_aside(path, text, /*copy=*/false);
+    s.warning_ = shown + ": " + problem + "; kept as " + printable(backup.string(), 400) + ", defaults are used";
+  } catch (const platform::FileError& e) {
     s.may_write_ = false;
-    s.warning_ = path.string() + ": " + problem + "; it could not be moved aside (" + ec.message() +
+    s.warning_ = shown + ": " + problem + "; it could not be moved aside (" + e.what() +
                  "), so it is left untouched, defaults are used and settings will not be saved";
-  } else {
-    s.warning_ = path.string() + ": " + problem + "; kept as " + backup.string() + ", defaults are used";
   }
   return s;
 }
@@ -202,19 +266,13 @@ void Settings::save() const {
   if (ec || !fs::is_directory(folder))
     throw std::runtime_error(target.string() + ": cannot create the settings folder " + folder.string() +
                              (ec ? ": " + ec.message() : std::string()));
-  const fs::path tmp = target.string() + ".tmp";
   // Invalid UTF-8 (a preset name) is replaced rather than thrown on, so one bad name cannot block saving.
-  write_synced(target, tmp, doc_.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-  if (before_rename_for_tests) before_rename_for_tests();
-  if (::rename(tmp.c_str(), target.c_str()) != 0) {
-    const std::string why = errno_text();
-    ::unlink(tmp.c_str());
-    throw std::runtime_error(target.string() + ": cannot replace the settings file: " + why);
-  }
-  // Make the rename itself durable; best effort (some file systems refuse fsync on a folder).
-  if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
+  // A temporary file of its own (two windows saving at once never share one), synced, then renamed.
+  try {
+    platform::write_file_atomic(target, doc_.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
+                                /*durable=*/true, before_rename_for_tests);
+  } catch (const platform::FileError& e) {
+    throw std::runtime_error(target.string() + ": cannot write settings: " + e.what());
   }
   saved_ = doc_;
 }

@@ -3,10 +3,17 @@
 //
 //   file      $SHADOWLAB_SETTINGS, else $XDG_CONFIG_HOME/shadowlab/settings.json, else
 //             ~/.config/shadowlab/settings.json
-//   writing   to settings.json.tmp beside it, flushed to disk, then renamed over the old file: a reader
-//             (or the next run after a crash) sees the old file or the new one, never half of one
-//   bad file  one that does not parse, has no version or a version this build does not know is moved
-//             aside to settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
+//   writing   to a temporary file of its own beside it (.settings.json.tmp-<random>, created
+//             exclusively, so two windows saving at once never share one), flushed to disk, then
+//             renamed over the old file: a reader (or the next run after a crash) sees the old file or
+//             the new one, never half of one
+//   bad file  one that cannot be used as a whole (not JSON, not an object, no version number, a version
+//             this build does not know, "labs" not an object, larger than 4 MiB) is moved aside once to
+//             settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
+//   bad entry a lab, its params or presets, or one preset that is not an object, or any value nested
+//             deeper than 32 levels, is dropped alone; the warning names each, every other lab's
+//             settings are kept, the file as it was is copied aside, and the next save writes the rest
+//   unreadable a FIFO, a folder, a file we may not read: defaults, a warning, and nothing is written
 //
 // CPU only (no GL, no window), so it is tested on its own. Only the window uses it, and only after it
 // started; the headless commands never read or write settings, so their runs are reproducible.
@@ -33,7 +40,8 @@ class Settings {
   Settings() = default;  // no file: nothing is loaded and save() does nothing
 
   // Reads `path`. A missing file is not an error (first run). A bad file is moved aside and warning()
-  // says so; the settings are then empty, so every lab starts from its defaults. Never throws.
+  // says so; the settings are then empty, so every lab starts from its defaults. A bad entry is dropped
+  // alone (see above). Never throws.
   static Settings load(const std::filesystem::path& path);
 
   const std::filesystem::path& path() const { return path_; }

@@ -29,10 +29,15 @@
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/renderer.h"
+#include "renderer/untrusted.h"
 
 namespace shadowlab {
 
 namespace {
+
+// Error texts: at most this much on the terminal, and this much of it in the panel.
+constexpr std::size_t kFullErrorBytes = 4000;
+constexpr std::size_t kPanelErrorBytes = 480;
 
 constexpr const char* kHeadlessHint =
     "headless commands work without one: shadowlab render --out DIR, shadowlab labs (see --help)";
@@ -105,7 +110,8 @@ struct App {
       bench_plots = load_bench_plots(bench.path);
       bench.error.clear();
     } catch (const std::exception& e) {
-      bench.error = e.what();
+      std::fprintf(stderr, "shadowlab: %s\n", printable(e.what(), kFullErrorBytes).c_str());
+      bench.error = shortened(printable(e.what(), kFullErrorBytes), kPanelErrorBytes);
     }
   }
   void open_scene(const std::string& path) {
@@ -116,9 +122,13 @@ struct App {
       camera = OrbitCamera::framing(scene.bounds());
       check_result.reset();
       scene_error.clear();
-      status = "opened " + path + " (" + std::to_string(scene.triangle_count()) + " triangles)";
+      status = "opened " + printable(path, 200) + " (" + std::to_string(scene.triangle_count()) + " triangles)";
     } catch (const std::exception& e) {
-      scene_error = "Cannot open the dropped file: " + one_line_error(e.what()) + " (the current scene stays)";
+      // The whole message on the terminal; the panel shows a bounded part (ImGui's draw lists hold at
+      // most 64k vertices: a 60 MB message made it abort). Loader messages are printable already.
+      const std::string full = printable(one_line_error(e.what()), kFullErrorBytes);
+      std::fprintf(stderr, "shadowlab: cannot open the dropped file: %s\n", full.c_str());
+      scene_error = "Cannot open the dropped file: " + shortened(full, kPanelErrorBytes) + " (the current scene stays)";
     }
   }
 };

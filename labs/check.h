@@ -140,6 +140,16 @@ class CheckContext {
   int uploaded_generation_ = -1;  // the generation the renderer holds now
   std::unique_ptr<Scene> owned_scene_;
   std::unique_ptr<Oracle> oracle_;
+  // The last truth and what it was computed from: a measurement that sees the same pixels under the same
+  // light (a sweep of a shading parameter) reuses it instead of casting every ray again.
+  struct LastTruth {
+    int scene_generation = -1;
+    GBuffer gbuffer;
+    OracleLight light;
+    BandSpec band;
+    Truth truth;
+  };
+  LastTruth last_;
 };
 
 // The least number of interior lit and of interior shadowed pixels a measurement must see to grade
@@ -178,8 +188,8 @@ struct HeldOutRange {
   std::vector<std::string> map_sizes;
   std::vector<std::string> scenes;
 };
-// One case per range (so low and high lights are always both there), azimuth uniform, the rest picked
-// from the range's lists, all drawn from the seed.
+// One case per range (so low and high lights are always both there), azimuth within 75 degrees of the
+// lab's, the rest picked from the range's lists, all drawn from the seed.
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.

@@ -3,23 +3,28 @@
 // buffers, node loops and the like without a word.
 //
 // The order of the checks matters:
-//   1. the file itself (size limit before reading, GLB version), then tinygltf, whose file reads go
-//      through a sandbox that only opens files inside the model's folder;
+//   1. the file itself (a regular file, its size limit before reading, GLB version and chunks); its
+//      JSON measured (depth, values, array sizes) and type-checked against the glTF 2.0 schema, the
+//      buffers' declared sizes summed against the scene's budget; then tinygltf, whose file reads go
+//      through a sandbox that opens files only inside the model's folder, relative to its handle;
 //   2. every index reference in the document, buffer views against their buffers, accessor layouts;
 //   3. the node hierarchy (one parent per node, no loops, depth limit, finite transforms);
-//   4. the scene walk, which lists the triangle primitives to draw and checks their formats and the
-//      declared vertex/index totals against LoadLimits, before anything is allocated for them;
+//   4. the scene walk, which lists the triangle primitives to draw and checks their formats, the
+//      instances and the declared vertex/triangle totals against LoadLimits, before anything is
+//      allocated for them;
 //   5. accessor byte ranges against their buffer views (after 4, so that a file declaring billions of
 //      vertices is refused for the limit it breaks, whatever else is wrong with it);
-//   6. reading: positions must be finite, indices in range; normals are used when they are sound.
+//   6. reading: positions must be finite, indices in range, world positions within max_coordinate;
+//      normals are used when they are sound.
 #include "renderer/gltf_loader.h"
 
 #include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <map>
 #include <limits>
 #include <optional>
 #include <string>
@@ -30,7 +35,12 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/transform.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+
+#include "renderer/gltf_schema.h"
+#include "renderer/platform.h"
+#include "renderer/untrusted.h"
 
 namespace shadowlab {
 namespace {
@@ -52,30 +62,46 @@ std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) { return b > kMax
 
 std::string str(std::uint64_t n) { return std::to_string(n); }
 
-// tinygltf's messages are newline-separated; a LoadError is one line.
-std::string one_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+// ---------------------------------------------------------------------------------------------------
+// The file sandbox. tinygltf resolves a buffer or image URI by url-decoding it, joining it to the base
+// folder we give it ("<base>/<uri>", even when the URI is absolute) and calling FileExists, then
+// ReadWholeFile on the first candidate that exists. It also tries "./<uri>" (the working directory),
+// which is never allowed. So the callbacks recover the URI from the joined path and judge the URI;
+// FileExists only looks at the URI's text, and ReadWholeFile opens the file once, relative to the
+// model's folder's handle (platform::Folder: no link followed out of it, nothing looked up twice).
+
+// tinygltf's dlib::urldecode, which it applies to buffer and image URIs before looking for them: '+'
+// becomes a space, %XY a byte. The same decoding here matches the URIs tinygltf asks for to the
+// buffers that declared them.
+std::string url_decode(const std::string& uri) {
+  const auto hex = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return 0;
+  };
   std::string out;
-  for (char c : text) {
-    if (c == '\n') {
-      out += "; ";
-    } else if (c != '\r') {
-      out += c;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && uri.size() > i + 2) {
+      out += static_cast<char>(hex(uri[i + 1]) << 4 | hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
     }
   }
   return out;
 }
 
-// ---------------------------------------------------------------------------------------------------
-// The file sandbox. tinygltf resolves a buffer or image URI by url-decoding it, joining it to the base
-// folder we give it ("<base>/<uri>", even when the URI is absolute) and calling FileExists, then
-// ReadWholeFile on the first candidate that exists. It also tries "./<uri>" (the working directory),
-// which is never allowed. So the callbacks recover the URI from the joined path and judge the URI.
-
 struct FolderSandbox {
-  std::string base_dir;     // the model's folder, absolute, exactly as handed to tinygltf
-  fs::path canonical_base;  // the same folder with symlinks and dots resolved
-  std::uint64_t max_file_bytes = 0;
+  explicit FolderSandbox(const fs::path& folder) : base_dir(folder.string()), folder(folder) {}
+
+  std::string base_dir;      // the model's folder, absolute, exactly as handed to tinygltf
+  platform::Folder folder;   // the same folder, opened once
+  // Decoded URIs of external buffers and the largest byteLength declared for each: a file larger than
+  // what its buffer declares is refused before it is read.
+  std::map<std::string, std::uint64_t> buffer_uris;
   std::string problem;  // the first refusal; load_gltf reports it once tinygltf returns
 
   // The URI tinygltf joined to base_dir to make `path`, or nothing for any other path.
@@ -85,28 +111,21 @@ struct FolderSandbox {
     return path.substr(prefix.size());
   }
 
-  // Why `uri` may not be read, or an empty string when it may.
-  std::string refusal(const std::string& uri) const {
+  // Why the text of `uri` is refused, or an empty string when the folder may be asked for it.
+  static std::string refusal(const std::string& uri) {
     if (uri.find('\0') != std::string::npos) return "it contains a NUL character";
     // A ':' ahead of the first '/' makes a scheme (RFC 3986: a relative path whose first segment holds
     // a ':' must be written "./a:b"); this also catches drive letters ("C:/...") and an empty scheme.
     const std::size_t colon = uri.find(':');
     if (colon != std::string::npos && colon < uri.find('/'))
-      return "scheme '" + uri.substr(0, colon + 1) +
-             "' is not allowed; only relative paths inside the model's folder and data: URIs are";
+      return "scheme " + quote(uri.substr(0, colon + 1), 32) +
+             " is not allowed; only relative paths inside the model's folder and data: URIs are";
     if (uri.starts_with('/') || uri.starts_with('\\')) return "absolute paths are not allowed";
-    std::error_code ec;
-    const fs::path target = fs::weakly_canonical(canonical_base / uri, ec);
-    if (ec) return "the path cannot be resolved (" + ec.message() + ")";
-    const auto [in_base, in_target] =
-        std::mismatch(canonical_base.begin(), canonical_base.end(), target.begin(), target.end());
-    if (in_base != canonical_base.end() || in_target == target.end())
-      return "it leads outside the model's folder " + canonical_base.string();
     return {};
   }
 
   void refuse(const std::string& uri, const std::string& why) {
-    if (problem.empty()) problem = "URI '" + uri + "' refused: " + why;
+    if (problem.empty()) problem = "URI " + quote(uri) + " refused: " + why;
   }
 };
 
@@ -117,48 +136,48 @@ bool sandbox_file_exists(const std::string& path, void* user) {
   // (malformed, or a MIME type it does not know): nothing to look for; tinygltf reports "File not
   // found" for a buffer and only warns for an image, which we do not use anyway.
   if (!uri || uri->empty() || uri->starts_with("data:")) return false;
-  if (const std::string why = box.refusal(*uri); !why.empty()) {
+  if (const std::string why = FolderSandbox::refusal(*uri); !why.empty()) {
     box.refuse(*uri, why);
     return false;
   }
-  std::error_code ec;
-  return fs::is_regular_file(path, ec);  // never a directory, FIFO or device
+  return true;  // ReadWholeFile opens it, once, and says what is wrong with it
 }
 
 std::string sandbox_expand_path(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
 
 bool sandbox_read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   auto& box = *static_cast<FolderSandbox*>(user);
-  // tinygltf only reads what FileExists accepted; judging again keeps the rule in the function that reads.
   const auto uri = box.uri_of(path);
   if (!uri || uri->empty()) {
     *err = "only files inside the model's folder may be read";
     return false;
   }
-  if (const std::string why = box.refusal(*uri); !why.empty()) {
+  if (const std::string why = FolderSandbox::refusal(*uri); !why.empty()) {
     box.refuse(*uri, why);
     *err = why;
     return false;
   }
-  std::error_code ec;
-  const std::uint64_t size = fs::file_size(path, ec);
-  if (ec) {
-    *err = ec.message();
-    return false;
+  // A buffer is read up to the byteLength it declares; an image only opened and checked (images are
+  // never decoded), and handed on as one placeholder byte.
+  const auto buffer = box.buffer_uris.find(*uri);
+  const bool is_buffer = buffer != box.buffer_uris.end();
+  try {
+    const std::string bytes = box.folder.read(*uri, is_buffer ? buffer->second : 0);
+    if (is_buffer) out->assign(bytes.begin(), bytes.end());
+    else out->assign(1, 0);
+    return true;
+  } catch (const platform::FileError& e) {
+    *err = printable(e.what());
+    if (e.problem() == platform::FileProblem::Outside) {
+      box.refuse(*uri, e.what());
+    } else if (is_buffer && box.problem.empty()) {
+      box.problem = "buffer URI " + quote(*uri) + ": " +
+                    (e.problem() == platform::FileProblem::TooLarge
+                         ? "the file " + std::string(e.what()) + " (the byteLength its buffer declares)"
+                         : std::string(e.what()));
+    }
+    return false;  // an image that cannot be read is only a warning, as tinygltf has it
   }
-  if (size > box.max_file_bytes) {
-    *err = "'" + *uri + "' is " + str(size) + " bytes, above the limit of " + str(box.max_file_bytes) +
-           " bytes (LoadLimits::max_file_bytes)";
-    if (box.problem.empty()) box.problem = *err;
-    return false;
-  }
-  out->resize(size);
-  std::ifstream in(path, std::ios::binary);
-  if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-    *err = "cannot read the file";
-    return false;
-  }
-  return true;
 }
 
 // Textures are not used: images are accepted undecoded, so corrupt image data cannot matter.
@@ -236,22 +255,29 @@ class Loader {
     check_accessor_ranges();
 
     Scene scene;
-    scene.name = path_.string();
+    scene.name = printable(path_.string(), 400);
     scene.meshes.reserve(draws.size());
     for (const Draw& d : draws) scene.meshes.push_back(build_mesh(d));
     if (scene.meshes.empty()) fail("no triangle meshes to draw");
     return scene;
   }
 
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
  private:
-  [[noreturn]] void fail(const std::string& problem) const { throw LoadError(path_.string() + ": " + problem); }
+  // One printable line of bounded length: the parts quoted from the file were cut already, this bounds
+  // the whole (and escapes a file name that holds control characters).
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw LoadError(printable(path_.string(), 400) + ": " + printable(problem, 1200));
+  }
 
   // ---- 1. The file and tinygltf.
 
-  // Debian's tinygltf (2.5) trusts a GLB chunk's declared length: a BIN chunk that claims more bytes than
-  // the file holds makes it copy past the end of the input (found by the fuzzer). Every chunk must fit in
+  // Debian's tinygltf trusts a GLB chunk's declared length: a BIN chunk that claims more bytes than the
+  // file holds makes it copy past the end of the input (found by the fuzzer). Every chunk must fit in
   // the file before tinygltf sees it; other container faults (lengths, headers) are left to its parser.
-  void check_glb_chunks(const std::vector<unsigned char>& bytes) {
+  // Returns the JSON chunk (the first chunk, when its type is JSON), for the checks before tinygltf.
+  std::string_view check_glb_chunks(std::string_view bytes) {
     auto u32 = [&](std::uint64_t at) {
       std::uint32_t v = 0;
       std::memcpy(&v, bytes.data() + at, 4);
@@ -259,6 +285,7 @@ class Loader {
     };
     const std::uint64_t end = bytes.size();  // a wrong header length is the parser's to report
     std::uint64_t at = 12;
+    std::string_view json;
     for (int chunk = 0; at + 8 <= end; ++chunk) {
       const std::uint64_t length = u32(at);
       char type[5] = {};
@@ -268,78 +295,162 @@ class Loader {
       if (at + 8 + length > end)
         fail("GLB container: chunk " + str(chunk) + " (" + type + ") declares " + str(length) + " bytes, but only " +
              str(end - at - 8) + " remain in the file");
+      if (chunk == 0 && std::memcmp(bytes.data() + at + 4, "JSON", 4) == 0)
+        json = bytes.substr(static_cast<std::size_t>(at + 8), static_cast<std::size_t>(length));
       at += 8 + length;
+    }
+    return json;
+  }
+
+  // The model file, read once: a FIFO, a device or a folder is refused before anything is read.
+  std::string read_model_file() const {
+    try {
+      return platform::read_regular_file(path_, limits_.max_file_bytes);
+    } catch (const platform::FileError& e) {
+      switch (e.problem()) {
+        case platform::FileProblem::NotFound: fail("file not found");
+        case platform::FileProblem::TooLarge:
+          fail("the file " + std::string(e.what()) + " (LoadLimits::max_file_bytes)");
+        default: fail(std::string(e.what()));
+      }
     }
   }
 
-  void parse() {
-    std::error_code ec;
-    if (!fs::exists(path_, ec)) fail("file not found");
-    if (!fs::is_regular_file(path_, ec)) fail("not a regular file");
-    const std::uint64_t size = fs::file_size(path_, ec);
-    if (ec) fail("cannot get the file size (" + ec.message() + ")");
-    if (size > limits_.max_file_bytes)
-      fail("the file is " + str(size) + " bytes, above the limit of " + str(limits_.max_file_bytes) +
-           " bytes (LoadLimits::max_file_bytes)");
-    if (size > std::numeric_limits<unsigned int>::max()) fail("files of 4 GiB or more are not supported");
-    if (size == 0) fail("the file is empty");
+  // What tinygltf would build from the JSON, measured before it builds it: depth (its parser of extras
+  // and extensions recurses), values, array sizes, the schema's types, the buffers' total size. Then
+  // tinygltf parses a document that is known to be within the limits.
+  void check_json(std::string_view text, FolderSandbox& box) {
+    if (text.size() > limits_.max_json_bytes)
+      fail("its JSON is " + str(text.size()) + " bytes, above the limit of " + str(limits_.max_json_bytes) +
+           " bytes (LoadLimits::max_json_bytes; put large buffers in a .bin file or a .glb)");
+    // One parse, stopped at the first value past the depth or value limit (tinygltf's parser of extras
+    // recurses: 20,000 nested arrays overflowed its stack).
+    nlohmann::json doc;
+    try {
+      doc = parse_json_bounded(text, {limits_.max_json_depth, static_cast<std::size_t>(limits_.max_json_values)});
+    } catch (const JsonShapeError& e) {
+      const std::string what = e.what();
+      const char* limit = what.find("deeper") != std::string::npos ? " (LoadLimits::max_json_depth)"
+                          : what.find("more than") != std::string::npos ? " (LoadLimits::max_json_values)"
+                                                                        : "";
+      fail("glTF parser error: " + what + limit);
+    }
+    // The top-level arrays, before tinygltf turns each element into a structure of up to ~2 KB.
+    if (doc.is_object()) {
+      for (const auto& [name, value] : doc.items()) {
+        if (!value.is_array()) continue;
+        const bool nodes = name == "nodes", materials = name == "materials";
+        const std::uint64_t limit = nodes ? limits_.max_nodes : materials ? limits_.max_materials : limits_.max_objects;
+        if (value.size() > limit)
+          fail("the file has " + str(value.size()) + " " + printable(name, 40) + ", above the limit of " + str(limit) +
+               " (LoadLimits::" + (nodes ? "max_nodes" : materials ? "max_materials" : "max_objects") + ")");
+      }
+    }
+    try {
+      warnings_ = check_gltf_schema(doc);
+    } catch (const GltfSchemaError& e) {
+      fail(e.what());
+    }
+    // Every buffer's declared size counts against the scene's budget, before any byte is read or decoded.
+    std::uint64_t total = 0;
+    if (const auto buffers = doc.find("buffers"); buffers != doc.end()) {
+      for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const auto& b = (*buffers)[i];
+        // An integer >= 1 (the schema check): as a count, saturated where it does not fit 64 bits.
+        const double declared = b.contains("byteLength") ? b["byteLength"].get<double>() : 0.0;
+        const std::uint64_t length = declared >= 1.8e19 ? kMaxU64 : static_cast<std::uint64_t>(declared);
+        total = saturating_add(total, length);
+        if (total > limits_.max_buffer_bytes)
+          fail("its buffers declare " + (i + 1 < buffers->size() ? "at least " : std::string()) + str(total) +
+               " bytes, above the limit of " + str(limits_.max_buffer_bytes) + " bytes for a scene (LoadLimits::max_buffer_bytes)");
+        if (!b.contains("uri")) continue;
+        const std::string& raw = b["uri"].get_ref<const std::string&>();
+        if (raw.starts_with("data:")) {
+          check_data_uri(raw, length, i);
+        } else {
+          const std::string uri = url_decode(raw);
+          box.buffer_uris[uri] = std::max(box.buffer_uris[uri], length);
+        }
+      }
+    }
+  }
 
-    std::vector<unsigned char> bytes(size);
-    std::ifstream in(path_, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
-      fail("cannot read the file");
+  // A base64 data: URI's decoded size follows from its length: one that disagrees with the buffer's
+  // byteLength is refused before tinygltf decodes it (60 MB of it took seconds, to fail anyway).
+  void check_data_uri(const std::string& uri, std::uint64_t byte_length, std::size_t buffer) const {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos || uri.rfind(";base64", comma) == std::string::npos) return;  // tinygltf refuses it
+    const std::size_t chars = uri.size() - comma - 1;
+    std::size_t padding = 0;
+    for (std::size_t k = uri.size(); k > comma + 1 && uri[k - 1] == '=' && padding < 2; --k) ++padding;
+    const std::uint64_t decoded = chars / 4 * 3 + (chars % 4 == 0 ? 0 : chars % 4 - 1) - (chars % 4 == 0 ? padding : 0);
+    if (decoded != byte_length)
+      fail("buffers[" + str(buffer) + "] has a data: URI holding " + str(decoded) + " bytes, but its byteLength is " +
+           str(byte_length) + " (URI " + quote(uri, 60) + ")");
+  }
+
+  void parse() {
+    const std::string bytes = read_model_file();
+    if (bytes.empty()) fail("the file is empty");
+    if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("files of 4 GiB or more are not supported");
 
     std::string extension = path_.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    const bool magic = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool magic = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const bool glb = magic || extension == ".glb";
-    if (magic && size >= 8) {
+    if (magic && bytes.size() >= 8) {
       // tinygltf ignores the GLB version; glTF 1.0 binaries (version 1) are laid out differently.
       std::uint32_t version = 0;
       std::memcpy(&version, bytes.data() + 4, 4);
       if (version != 2) fail("GLB container version " + str(version) + " is not supported (glTF 2.0 uses version 2)");
     }
-    if (magic && size >= 12) check_glb_chunks(bytes);
+    std::string_view json = glb ? std::string_view() : std::string_view(bytes);
+    if (magic && bytes.size() >= 12) json = check_glb_chunks(bytes);
 
-    FolderSandbox box;
+    std::error_code ec;
     const fs::path folder = fs::absolute(path_, ec).parent_path();
     if (ec) fail("cannot resolve the file's folder (" + ec.message() + ")");
-    box.base_dir = folder.string();
-    box.canonical_base = fs::weakly_canonical(folder, ec);
-    if (ec) fail("cannot resolve the file's folder (" + ec.message() + ")");
-    box.max_file_bytes = limits_.max_file_bytes;
+    std::optional<FolderSandbox> box;
+    try {
+      box.emplace(folder);
+    } catch (const platform::FileError& e) {
+      fail("cannot open the file's folder: " + std::string(e.what()));
+    }
+    // A GLB whose container is broken has no JSON to look at: tinygltf reports what is wrong with it.
+    if (!glb || !json.empty()) check_json(json, *box);
 
     tinygltf::TinyGLTF gltf;
     // WriteWholeFile stays null: loading never writes.
-    gltf.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand_path, &sandbox_read_file, nullptr, &box});
+    gltf.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand_path, &sandbox_read_file, nullptr, &*box});
     gltf.SetImageLoader(&skip_image, nullptr);
     std::string err, warn;
     bool ok = false;
     try {
-      const auto length = static_cast<unsigned int>(size);
-      ok = glb ? gltf.LoadBinaryFromMemory(&model_, &err, &warn, bytes.data(), length, box.base_dir)
-               : gltf.LoadASCIIFromString(&model_, &err, &warn, reinterpret_cast<const char*>(bytes.data()), length,
-                                          box.base_dir);
+      const auto length = static_cast<unsigned int>(bytes.size());
+      const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+      ok = glb ? gltf.LoadBinaryFromMemory(&model_, &err, &warn, data, length, box->base_dir)
+               : gltf.LoadASCIIFromString(&model_, &err, &warn, bytes.data(), length, box->base_dir);
     } catch (const std::exception& e) {
-      fail(std::string("glTF parser error: ") + e.what());
+      fail("glTF parser error: " + printable(e.what()));
     }
-    if (!box.problem.empty()) fail(box.problem);
+    if (!box->problem.empty()) fail(box->problem);
     // tinygltf sometimes records an error and carries on (e.g. a buffer without a URI): still an error.
+    // Its messages quote URIs and names from the file: escaped and cut like everything else.
     if (!ok || !err.empty()) {
-      std::string message = "glTF parser error: " + (err.empty() ? std::string("(no message)") : one_line(err));
-      if (!warn.empty()) message += " (warnings: " + one_line(warn) + ")";
+      std::string message = "glTF parser error: " + (err.empty() ? std::string("(no message)") : printable(err, 400));
+      if (!warn.empty()) message += " (warnings: " + printable(warn, 200) + ")";
       fail(message);
     }
   }
 
   void check_asset() const {
-    if (!model_.asset.version.starts_with("2.")) fail("asset version '" + model_.asset.version + "' is not glTF 2.x");
+    if (!model_.asset.version.starts_with("2.")) fail("asset version " + quote(model_.asset.version, 40) + " is not glTF 2.x");
     // Extensions that change how geometry is stored; any other required extension (materials,
     // texture transforms, lights...) does not change the triangles we draw.
     for (const std::string& ext : model_.extensionsRequired) {
       if (ext == "KHR_draco_mesh_compression" || ext == "KHR_mesh_quantization" || ext == "EXT_meshopt_compression")
-        fail("required extension " + ext + " is not supported");
+        fail("required extension " + quote(ext, 80) + " is not supported");
     }
   }
 
@@ -495,7 +606,7 @@ class Loader {
   // The node's own transform, from its matrix or its translation, rotation and scale.
   glm::dmat4 local_transform(std::size_t i) const {
     const auto& nd = model_.nodes[i];
-    const std::string who = "node " + str(i);
+    const std::string who = node_name(static_cast<int>(i));
     if (!all_finite(nd.matrix) || !all_finite(nd.translation) || !all_finite(nd.rotation) || !all_finite(nd.scale))
       fail(who + " has a transform with a number that is not finite");
     if (!nd.matrix.empty()) {
@@ -581,6 +692,12 @@ class Loader {
 
   // ---- 4. The scene walk.
 
+  // "node 3" or "node 3 ('wheel')", for messages.
+  std::string node_name(int n) const {
+    const std::string& name = model_.nodes[static_cast<std::size_t>(n)].name;
+    return "node " + std::to_string(n) + (name.empty() ? "" : " (" + quote(name, 60) + ")");
+  }
+
   // The root nodes to draw: the default scene's, scene 0's when none is set, or every parentless node
   // when the file has no scenes.
   std::vector<int> scene_roots() const {
@@ -664,7 +781,7 @@ class Loader {
   // against the limits as the walk goes, from the declared counts, before any geometry is allocated.
   std::vector<Draw> walk_scene() const {
     std::vector<Draw> draws;
-    std::uint64_t total_vertices = 0, total_indices = 0;
+    std::uint64_t total_vertices = 0, total_triangles = 0;
     // Node hierarchy checked: a tree walk, finite, each node once.
     std::vector<std::pair<int, glm::dmat4>> stack;
     for (int r : scene_roots()) stack.emplace_back(r, local_[static_cast<std::size_t>(r)]);
@@ -672,6 +789,13 @@ class Loader {
       const auto [n, world] = stack.back();
       stack.pop_back();
       const auto& nd = model_.nodes[static_cast<std::size_t>(n)];
+      // Composed transforms may overflow although each node's is finite (scales of 1e200 twice), and
+      // vertices are transformed in single precision: every entry must be finite as a float.
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+          if (!(std::abs(world[c][r]) <= std::numeric_limits<float>::max()))
+            fail(node_name(n) + "'s world transform overflows (an entry is " + std::to_string(world[c][r]) +
+                 "; single precision ends at 3.4e38)");
       for (int c : nd.children) stack.emplace_back(c, world * local_[static_cast<std::size_t>(c)]);
       if (nd.mesh < 0) continue;
       const auto m = static_cast<std::size_t>(nd.mesh);
@@ -686,13 +810,16 @@ class Loader {
                ", which is not a glTF primitive mode");
         const auto [vertices, triangles] = check_primitive(m, p);
         total_vertices = saturating_add(total_vertices, vertices);
-        total_indices = saturating_add(total_indices, mul_add(3, triangles, 0).value_or(kMaxU64));
+        total_triangles = saturating_add(total_triangles, triangles);
         if (total_vertices > limits_.max_total_vertices)
           fail("the scene has at least " + str(total_vertices) + " vertices, above the limit of " +
-               str(limits_.max_total_vertices) + " (LoadLimits::max_total_vertices)");
-        if (total_indices > limits_.max_total_indices)
-          fail("the scene has at least " + str(total_indices) + " triangle indices, above the limit of " +
-               str(limits_.max_total_indices) + " (LoadLimits::max_total_indices)");
+               str(limits_.max_total_vertices) + " (LoadLimits::max_total_vertices; every node instance of a mesh counts)");
+        if (total_triangles > limits_.max_total_triangles)
+          fail("the scene has at least " + str(total_triangles) + " triangles, above the limit of " +
+               str(limits_.max_total_triangles) + " (LoadLimits::max_total_triangles; every node instance of a mesh counts)");
+        if (draws.size() >= limits_.max_instances)
+          fail("the scene draws more than " + str(limits_.max_instances) +
+               " mesh primitives (one per node instance; LoadLimits::max_instances)");
         draws.push_back({n, nd.mesh, static_cast<int>(p), world});
       }
     }
@@ -777,7 +904,10 @@ class Loader {
     const std::string where = "mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(d.primitive);
 
     Mesh mesh;
-    mesh.name = !gmesh.name.empty() ? gmesh.name : !node.name.empty() ? node.name : "mesh " + std::to_string(d.mesh);
+    // Names come from the file: kept printable and short, since the panel and render.json show them.
+    mesh.name = !gmesh.name.empty() ? printable(gmesh.name, 80)
+                : !node.name.empty() ? printable(node.name, 80)
+                                     : "mesh " + std::to_string(d.mesh);
     mesh.color = material_color(prim.material);
 
     const int position = prim.attributes.at("POSITION");
@@ -821,15 +951,28 @@ class Loader {
 
     // Skins and morph targets are ignored: the lab draws the rest pose under the node's transform.
     transform_mesh(mesh, glm::mat4(d.world));
-    for (const glm::vec3& p : mesh.positions) {
+    // The camera and light fits square the scene's extent (in float): a scene wider than ~1.8e19 gives
+    // NaN matrices and a blank frame. Far below that, max_coordinate keeps the maths and the depth
+    // precision meaningful.
+    const double limit = limits_.max_coordinate;
+    for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
+      const glm::vec3& p = mesh.positions[k];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        fail("node " + std::to_string(d.node) + "'s transform takes " + where + " to non-finite positions");
+        fail(node_name(d.node) + "'s transform takes " + where + " to non-finite positions");
+      const double largest = std::max({std::abs(double{p.x}), std::abs(double{p.y}), std::abs(double{p.z})});
+      if (largest > limit) {
+        char figures[64];
+        std::snprintf(figures, sizeof figures, "%.3g, beyond the limit of %.3g", largest, limit);
+        fail(node_name(d.node) + "'s transform takes " + where + " vertex " + str(k) + " to a coordinate of " + figures +
+             " (LoadLimits::max_coordinate)");
+      }
     }
     return mesh;
   }
 
   fs::path path_;
   LoadLimits limits_;
+  std::vector<std::string> warnings_;  // what the specification says to ignore, for the caller
   tinygltf::Model model_;
   std::vector<std::string> roles_;  // per accessor: what uses it, for messages
   std::vector<int> parent_;         // per node: its parent, or -1
@@ -838,6 +981,11 @@ class Loader {
 
 }  // namespace
 
-Scene load_gltf(const std::filesystem::path& path, const LoadLimits& limits) { return Loader(path, limits).load(); }
+Scene load_gltf(const std::filesystem::path& path, const LoadLimits& limits, std::vector<std::string>* warnings) {
+  Loader loader(path, limits);
+  Scene scene = loader.load();
+  if (warnings) *warnings = loader.warnings();
+  return scene;
+}
 
 }  // namespace shadowlab

@@ -2,10 +2,11 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include <stb_image_write.h>
+
+#include "renderer/platform.h"
 
 namespace shadowlab {
 
@@ -23,16 +24,32 @@ void flip_rows(std::vector<std::uint8_t>& pixels, int width, int height, int byt
   }
 }
 
+namespace {
+
+// Every output goes through one atomic write (platform.h): a unique temporary file created exclusively
+// beside the target, then renamed over it. A link planted at the target or at a temporary name is
+// replaced or refused, never written through; two runs writing one file never share a temporary one.
+void write_output(const fs::path& path, std::string_view bytes, const char* what) {
+  try {
+    platform::write_file_atomic(path, bytes);
+  } catch (const platform::FileError& e) {
+    throw std::runtime_error(path.string() + ": cannot write " + what + ": " + e.what());
+  }
+}
+
+}  // namespace
+
 void write_png(const fs::path& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
   if (rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)
     throw std::runtime_error(path.string() + ": image data does not match " + std::to_string(width) + "x" +
                              std::to_string(height));
-  const fs::path tmp = path.string() + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), width, height, 4, rgba.data(), width * 4))
-    throw std::runtime_error(path.string() + ": cannot write PNG (is the folder writable?)");
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path.string() + ": cannot write PNG: " + ec.message());
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4))
+    throw std::runtime_error(path.string() + ": cannot encode the PNG");
+  write_output(path, png, "the PNG");
 }
 
 void write_npy(const fs::path& path, int width, int height, int channels, const std::vector<float>& data) {
@@ -45,33 +62,19 @@ void write_npy(const fs::path& path, int width, int height, int channels, const 
   const std::size_t padded = ((preamble + header.size() + 1 + 63) / 64) * 64;
   header.append(padded - preamble - header.size() - 1, ' ');
   header.push_back('\n');
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
+  std::string bytes;
   const unsigned char magic[] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0};
-  out.write(reinterpret_cast<const char*>(magic), sizeof magic);
+  bytes.append(reinterpret_cast<const char*>(magic), sizeof magic);
   const auto len = static_cast<std::uint16_t>(header.size());
-  const unsigned char len_bytes[] = {static_cast<unsigned char>(len & 0xff), static_cast<unsigned char>(len >> 8)};
-  out.write(reinterpret_cast<const char*>(len_bytes), 2);
-  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  bytes += static_cast<char>(len & 0xff);
+  bytes += static_cast<char>(len >> 8);
+  bytes += header;
   const std::size_t row = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
   for (int y = height - 1; y >= 0; --y)
-    out.write(reinterpret_cast<const char*>(data.data() + static_cast<std::size_t>(y) * row),
-              static_cast<std::streamsize>(row * sizeof(float)));
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
+    bytes.append(reinterpret_cast<const char*>(data.data() + static_cast<std::size_t>(y) * row), row * sizeof(float));
+  write_output(path, bytes, "the array");
 }
 
-void write_text_atomic(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path.string() + ": cannot write (is the folder writable?)");
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error(path.string() + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path.string() + ": cannot replace: " + ec.message());
-}
+void write_text_atomic(const fs::path& path, const std::string& text) { write_output(path, text, "the file"); }
 
 }  // namespace shadowlab

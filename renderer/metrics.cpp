@@ -47,7 +47,10 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
     const bool truly_lit = truth.lit[i] != 0;
     const float v = sanitize(visibility[i], truly_lit);
     const bool rendered_lit = v >= 0.5f;
-    const double error = std::abs(static_cast<double>(v) - (truly_lit ? 1.0 : 0.0));
+    // The continuous errors see values outside [0, 1] too (a shadow darker than the ambient term, a lit
+    // surface brighter than lit): only NaN is replaced, by the wrong answer.
+    const float raw = std::isnan(visibility[i]) ? (truly_lit ? 0.0f : 1.0f) : visibility[i];
+    const double error = std::abs(static_cast<double>(raw) - (truly_lit ? 1.0 : 0.0));
     if (truly_lit) {
       ++all_lit;
       all_acne += !rendered_lit;

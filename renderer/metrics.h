@@ -36,8 +36,9 @@ struct Metrics {
 };
 
 // visibility: one value per pixel in [0, 1], same layout as the truth.
-// Only valid pixels count. Values are clamped to [0, 1]; a NaN counts as the wrong answer (0 where the
-// truth is lit, 1 where it is shadowed). Rates with a zero denominator are 0. Throws
+// Only valid pixels count. The lit/shadowed decisions clamp values to [0, 1]; the mean errors (mae_*,
+// lit_error, shadow_error) take them as they are, so out-of-range visibility is an error too. A NaN counts
+// as the wrong answer (0 where the truth is lit, 1 where it is shadowed). Rates with a zero denominator are 0. Throws
 // std::invalid_argument when the sizes do not match. compare() and diff_image() agree pixel by pixel.
 Metrics compare(const Truth& truth, const std::vector<float>& visibility);
 

@@ -1,5 +1,7 @@
 #include "renderer/shader.h"
 
+#include "renderer/platform.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -26,13 +28,17 @@ namespace {
 
 fs::path resolve(const fs::path& p) { return p.is_absolute() ? p : data_dir() / p; }
 
+// Shader sources may come from a student's submission: only regular files are read (a FIFO or a device
+// would block or never end), and none larger than any shader could be.
+constexpr std::uint64_t kMaxShaderBytes = 1u << 20;
+
 bool read_text(const fs::path& path, std::string& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
+  try {
+    out = platform::read_regular_file(path, kMaxShaderBytes);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -102,12 +108,13 @@ struct Expander {
     }
     std::string text;
     if (!read_text(path, text)) {
-      error = display_path(path) + ": cannot read shader file";
+      error = display_path(path) + ": cannot read shader file (missing, not a regular file, or over 1 MiB)";
       return false;
     }
     const int index = static_cast<int>(files.size());
     files.push_back(path);
-    static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    // A trailing // comment is allowed after the name, as on any other line.
+    static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
     const auto lines = split_lines(text);
     if (lines.size() >= static_cast<std::size_t>(kShaderLineStride)) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN SHARED CASE
+# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN CASE
 set -uo pipefail
-bin="$1"; shared="$2"; case_name="$3"
+bin="$1"; case_name="$2"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 src="$(cd "$(dirname "$0")/.." && pwd)"  # the source tree: shaders/ and labs/
 # No test ever reads or writes the user's own settings file.
@@ -109,7 +109,7 @@ PY
   missing_scene) expect_error "nope.gltf" "$bin" render --out "$tmp/out" --scene "$tmp/nope.gltf" ;;
   invalid_scene)
     for f in glTF-SDK/gltf/MissingMeshRef.gltf glTF-Validator/node/node_loop.gltf; do
-      expect_error "$(basename "$f")" "$bin" render --out "$tmp/out" --scene "$shared/assets/invalid/$f"
+      expect_error "$(basename "$f")" "$bin" render --out "$tmp/out" --scene "$src/assets/invalid/$f"
     done
     ;;
   unwritable_out)
@@ -209,6 +209,28 @@ PY
     mkdir -p "$tmp/data"; cp -r "$src/labs" "$src/shaders" "$tmp/data/"; rm "$tmp/data/shaders/lit.frag"
     SHADOWLAB_DATA_DIR="$tmp/data" "$bin" check --lab 1 --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 3 ] || fail "a broken grader: exit $rc, expected 3 ($(cat "$tmp/out" "$tmp/err"))"
+    ;;
+  check_not_measurable)  # a scene with nothing to grade (one degenerate triangle) fails as not measurable
+    python3 - "$tmp/degenerate.gltf" <<'PY'
+import base64, json, struct, sys
+points = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 2, 0, 0)  # three points on a line: no area
+gltf = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [2, 0, 0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(points)}],
+        "buffers": [{"byteLength": len(points),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(points).decode()}]}
+json.dump(gltf, open(sys.argv[1], "w"))
+PY
+    "$bin" check --lab 0,1,7 --impl solution --scene "$tmp/degenerate.gltf" --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "nothing to grade: exit $rc, expected 1 ($(cat "$tmp/out" "$tmp/err"))"
+    python3 -c "
+import json, sys
+for r in json.load(open(sys.argv[1]))['labs']:
+    failed = [c['metric'] for c in r['criteria'] if not c['passed']]
+    assert r['status'] == 'failed' and any(m.endswith('graded_pixels') for m in failed), (r['lab'], r['status'], failed)
+" "$tmp/check.json" || fail "a lab passed, or failed otherwise than as not measurable"
     ;;
   check_bad_lab) expect_error "valid: all," "$bin" check --lab 99 ;;
   bad_choices)  # a bad value names the valid ones, in both commands
@@ -454,6 +476,88 @@ PY
       && fail "exit 0 with a bad --bench file"
     grep -qF "bad.json: not valid JSON" "$tmp/err" || fail "the error does not name the file: $(cat "$tmp/err")"
     [ ! -e "$SHADOWLAB_SETTINGS" ] || fail "a failed start wrote the settings file"
+    ;;
+  hostile_models)  # issue 18: every hostile model refused by render in one printable line, within 10 s and 1 GB
+    [ -x "${SHADOWLAB_HOSTILE_CASES:-}" ] || fail "SHADOWLAB_HOSTILE_CASES is not the hostile_cases tool"
+    "$SHADOWLAB_HOSTILE_CASES" "$tmp/cases" >"$tmp/manifest" || fail "could not write the cases"
+    [ "$(wc -l <"$tmp/manifest")" -ge 20 ] || fail "too few cases: $(cat "$tmp/manifest")"
+    printf '%-26s %8s %10s  %s\n' case seconds "max RSS" "message (first 100 bytes)"
+    while IFS=$'\t' read -r name file mention; do
+      # timeout: a FIFO that blocked would hang here (the bug); 60 s is far past the 10 s asked.
+      timeout 60 /usr/bin/time -f "%e %M" -o "$tmp/time" "$bin" render --out "$tmp/o" --width 64 --height 64 \
+        --scene "$file" >"$tmp/out" 2>"$tmp/err" </dev/null
+      rc=$?
+      [ "$rc" -eq 1 ] || fail "$name: exit $rc (1 expected): $(head -c 600 "$tmp/err")"
+      grep -qF -- "$mention" "$tmp/err" || fail "$name: stderr lacks '$mention': $(head -c 600 "$tmp/err")"
+      grep -qF -- "$file" "$tmp/err" || fail "$name: the file is not named: $(head -c 600 "$tmp/err")"
+      one_line
+      LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$tmp/err" && fail "$name: control characters on the terminal"
+      [ "$(wc -c <"$tmp/err")" -lt 2500 ] || fail "$name: $(wc -c <"$tmp/err") bytes of error"
+      read -r secs kb < <(tail -n 1 "$tmp/time")  # GNU time puts "Command exited with non-zero status 1" first
+      awk -v s="$secs" -v k="$kb" 'BEGIN { exit !(s < 10 && k < 1048576) }' || fail "$name: ${secs} s, ${kb} KB (limits 10 s, 1 GB)"
+      printf '%-26s %8s %7d MB  %s\n' "$name" "$secs" $((kb / 1024)) "$(head -c 100 "$tmp/err" | sed "s|$tmp/cases/||")"
+    done <"$tmp/manifest"
+    ;;
+  concurrent_out)  # issue 18: two checks (of the solution, which passes) into one --out: both succeed, or one says the folder is in use
+    png_reader
+    for round in 1 2 3 4 5; do
+      "$bin" check --lab 1 --impl solution --out "$tmp/same" >"$tmp/a.out" 2>"$tmp/a.err" & a=$!
+      "$bin" check --lab 1 --impl solution --out "$tmp/same" >"$tmp/b.out" 2>"$tmp/b.err" & b=$!
+      wait $a; ra=$?; wait $b; rb=$?
+      for x in a b; do
+        grep -q "not writable\|cannot write\|Segmentation\|Aborted" "$tmp/$x.err" && fail "round $round: $(cat "$tmp/$x.err")"
+      done
+      ok=0; busy=0
+      for r in "$ra:a" "$rb:b"; do
+        code=${r%%:*}; who=${r##*:}
+        if [ "$code" -eq 0 ]; then ok=$((ok + 1))
+        elif grep -q "the output folder is in use by another shadowlab run" "$tmp/$who.err"; then busy=$((busy + 1))
+        else fail "round $round: exit $code: $(cat "$tmp/$who.err")"; fi
+      done
+      [ "$ok" -ge 1 ] || fail "round $round: neither run succeeded"
+      python3 -c "import sys; sys.path.insert(0, sys.argv[1]); from png_read import load; w, h, _ = load(sys.argv[2]); assert w > 0 and h > 0" \
+        "$tmp" "$tmp/same/$(ls "$tmp/same" | grep -m1 'final.png$')" || fail "round $round: a corrupt PNG"
+      ls -A "$tmp/same" | grep -q "\.tmp-" && fail "round $round: temporary files left: $(ls -A "$tmp/same")"
+      echo "round $round: $ok succeeded, $busy told the folder is in use"
+    done
+    ;;
+  out_symlinks)  # issue 18: links planted in the output folder are replaced, never written through
+    mkdir -p "$tmp/out"; echo precious >"$tmp/victim"
+    for f in final.png final.png.tmp shadow_map.png render.json render.json.tmp .shadowlab-write-test; do ln -s "$tmp/victim" "$tmp/out/$f"; done
+    "$bin" render --out "$tmp/out" --width 64 --height 64 >/dev/null || fail "render failed"
+    [ "$(cat "$tmp/victim")" = precious ] || fail "the victim was written through a link"
+    for f in final.png shadow_map.png render.json; do [ -f "$tmp/out/$f" ] && [ ! -L "$tmp/out/$f" ] || fail "$f is still a link"; done
+    ;;
+  bench_fifo)  # issue 18: --bench given a FIFO waited forever (render --panel and the window)
+    mkfifo "$tmp/bench.json"
+    timeout 30 "$bin" render --panel --bench "$tmp/bench.json" --out "$tmp/o" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "render --panel --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    grep -qF "bench.json: cannot open the file: is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
+    command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
+    timeout 60 xvfb-run -a "$bin" --bench "$tmp/bench.json" --frames 2 >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "window --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    grep -qF "is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
+    ;;
+  window_drop_hostile)  # issue 18: a dropped model with a huge or hostile error text: no abort, bounded panel text
+    [ -x "${SHADOWLAB_HOSTILE_CASES:-}" ] || fail "SHADOWLAB_HOSTILE_CASES is not the hostile_cases tool"
+    "$SHADOWLAB_HOSTILE_CASES" "$tmp/cases" >/dev/null || fail "could not write the cases"
+    png_reader
+    window --script "frames:2,drop:$tmp/cases/long_uri.gltf,frames:2,drop:$tmp/cases/data_uri_60mb.gltf,frames:2,drop:$tmp/cases/data_uri_30mb.gltf,frames:2,drop:$tmp/cases/escape_uri.gltf,frames:2,drop:$tmp/cases/deep_extras.gltf,frames:2,screenshot:$tmp/shot.png"
+    [ "$(grep -c "cannot open the dropped file" "$tmp/err")" -eq 5 ] || fail "not every error on the terminal: $(cat "$tmp/err")"
+    [ "$(wc -c <"$tmp/err")" -lt 5000 ] || fail "$(wc -c <"$tmp/err") bytes of errors for 5 files"
+    grep -qF '(20004 bytes)' "$tmp/err" || fail "the long URI is not cut: $(head -c 600 "$tmp/err")"
+    grep -qF '\x1B[2J' "$tmp/err" || fail "the escape sequence is not shown escaped"
+    LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$tmp/err" && fail "control characters on the terminal"
+    python3 - "$tmp" <<'PY' || fail "no error shown in the panel"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load
+w, h, rows = load(f"{sys.argv[1]}/shot.png")
+red = sum(1 for y in range(20, 500) for x in range(20, 430)
+          if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
+print("red pixels in the panel:", red)
+assert red > 200
+PY
     ;;
   *) fail "unknown case $case_name" ;;
 esac

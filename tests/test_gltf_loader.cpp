@@ -19,24 +19,20 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/gltf_doc.h"
+#include "tests/test_util.h"
+
 namespace shadowlab {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using namespace shadowlab::test;
 
-const fs::path kAssets = fs::path(SHADOWLAB_SHARED_DIR) / "assets";
-const fs::path kModels = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "models";  // in the repository
-
-// Loads a file expected to be refused and returns the LoadError message ("" if it loaded).
-std::string load_error(const fs::path& path, const LoadLimits& limits = {}) {
-  try {
-    load_gltf(path, limits);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "";
-}
+// The peers' invalid suites and the valid models live in the repository (assets/invalid and
+// assets/models, each with their licenses).
+const fs::path kInvalid = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "invalid";
+const fs::path kModels = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "models";
 
 void expect_sane(const Scene& scene) {
   for (const Mesh& m : scene.meshes) {
@@ -120,7 +116,7 @@ const std::map<std::string, Verdict>& invalid_file_verdicts() {
       // JSON
       {"glTF-Validator/json/bom.gltf", {true, "no triangle meshes", "tinygltf tolerates the BOM; no meshes"}},
       {"glTF-Validator/json/empty_file.gltf", {true, "empty", "empty file"}},
-      {"glTF-Validator/json/invalid_object.gltf", {true, "parser", "root is an array"}},
+      {"glTF-Validator/json/invalid_object.gltf", {true, "the document is an array", "root is an array (schema)"}},
       {"glTF-Validator/json/invalid_syntax.gltf", {true, "parser", "JSON syntax error"}},
       // GLB container
       {"glTF-Validator/glb/bom.glb", {true, "no triangle meshes", "tinygltf tolerates the BOM; no meshes"}},
@@ -144,18 +140,18 @@ const std::map<std::string, Verdict>& invalid_file_verdicts() {
       {"glTF-Validator/root/empty_object.gltf", {true, "parser", "no asset"}},
       // buffers
       {"glTF-Validator/buffer/invalid_uri_data.gltf", {true, "File not found : data:", "malformed data: URI"}},
-      {"glTF-Validator/buffer/invalid_uri_data_bytelength.gltf", {true, "parser", "data size differs from byteLength"}},
+      {"glTF-Validator/buffer/invalid_uri_data_bytelength.gltf", {true, "has a data: URI holding 1 bytes, but its byteLength is 2", "data size differs from byteLength"}},
       {"glTF-Validator/buffer/invalid_uri_scheme.gltf", {true, "refused", "URI ':' has an empty scheme"}},
       {"glTF-Validator/buffer/no_bin_chunk.glb", {true, "parser", "buffer refers to a missing BIN chunk"}},
       {"glTF-Validator/buffer/not_found.gltf", {true, "not_found.bin", "buffer file missing"}},
       {"glTF-Validator/buffer/wrong_bytelength.glb", {true, "byteLength", "BIN chunk shorter than the buffer"}},
-      {"glTF-Validator/buffer/zero_bytelength.gltf", {true, "uri", "buffer without data"}},
+      {"glTF-Validator/buffer/zero_bytelength.gltf", {true, "buffers[0].byteLength is 0", "byteLength below the schema's minimum of 1"}},
       {"glTF-Validator/buffer/valid.gltf", {true, "no triangle meshes", "valid, but no meshes"}},
       // buffer views
       {"glTF-Validator/buffer_view/invalid_length.gltf", {true, "past the end of buffer 0", "view past its buffer"}},
       {"glTF-Validator/buffer_view/invalid_stride_too_big.gltf", {true, "byteStride", "stride above byteLength"}},
       {"glTF-Validator/buffer_view/unresolved_buffer.gltf", {true, "buffer 1", "dangling buffer"}},
-      {"glTF-Validator/buffer_view/zero_bytelength.gltf", {true, "uri", "buffer without data (and an empty view)"}},
+      {"glTF-Validator/buffer_view/zero_bytelength.gltf", {true, "bufferViews[0].byteLength is 0", "byteLength below the schema's minimum of 1"}},
       // accessors
       {"glTF-Validator/accessor/alignment.gltf", {true, "uri", "buffer without data (and misaligned accessors)"}},
       {"glTF-Validator/accessor/byteoffset_no_bufferview.gltf",
@@ -225,7 +221,7 @@ const std::map<std::string, Verdict>& invalid_file_verdicts() {
 }
 
 TEST(GltfInvalidFiles, EveryFileGetsItsVerdict) {
-  const fs::path root = kAssets / "invalid";
+  const fs::path root = kInvalid;
   const auto& verdicts = invalid_file_verdicts();
 
   // The table, the files on disk and EXPECTED.tsv must list the same files.
@@ -273,128 +269,7 @@ TEST(GltfInvalidFiles, EveryFileGetsItsVerdict) {
 // ---------------------------------------------------------------------------------------------------
 // Hand-made files.
 
-std::string base64(const std::vector<std::uint8_t>& bytes) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t b0 = bytes[i], b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0,
-                        b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
-    const std::uint32_t n = b0 << 16 | b1 << 8 | b2;
-    out += alphabet[n >> 18 & 63];
-    out += alphabet[n >> 12 & 63];
-    out += i + 1 < bytes.size() ? alphabet[n >> 6 & 63] : '=';
-    out += i + 2 < bytes.size() ? alphabet[n & 63] : '=';
-  }
-  return out;
-}
-
-constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
-
-// A glTF document with one buffer, built up by the tests and written as a .gltf. The buffer is
-// embedded as a base64 data: URI unless a test gives it another URI.
-struct Doc {
-  json j = {{"asset", {{"version", "2.0"}}}};
-  std::vector<std::uint8_t> bin;
-
-  // Appends bytes (4-byte aligned) as a new buffer view; returns the view's index.
-  int view(const void* data, std::size_t size) {
-    while (bin.size() % 4 != 0) bin.push_back(0);
-    const std::size_t offset = bin.size();
-    bin.resize(offset + size);
-    std::memcpy(bin.data() + offset, data, size);
-    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}});
-    return static_cast<int>(j["bufferViews"].size()) - 1;
-  }
-  int accessor(int view, int component_type, std::uint64_t count, const char* type) {
-    j["accessors"].push_back(
-        {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}});
-    return static_cast<int>(j["accessors"].size()) - 1;
-  }
-  int vec3s(const std::vector<glm::vec3>& v) {
-    std::vector<float> floats;
-    for (const glm::vec3& p : v) floats.insert(floats.end(), {p.x, p.y, p.z});
-    return accessor(view(floats.data(), floats.size() * sizeof(float)), kFloat, v.size(), "VEC3");
-  }
-  template <class T>
-  int indices(const std::vector<T>& v, int component_type) {
-    return accessor(view(v.data(), v.size() * sizeof(T)), component_type, v.size(), "SCALAR");
-  }
-  int mesh(const std::vector<json>& primitives) {
-    j["meshes"].push_back({{"primitives", primitives}});
-    return static_cast<int>(j["meshes"].size()) - 1;
-  }
-  int node(const json& n) {
-    j["nodes"].push_back(n);
-    return static_cast<int>(j["nodes"].size()) - 1;
-  }
-  void scene(const std::vector<int>& roots) {
-    j["scenes"] = json::array({{{"nodes", roots}}});
-    j["scene"] = 0;
-  }
-  // The buffer, embedded unless `uri` is given.
-  void buffer(const std::string& uri = "") {
-    j["buffers"] = json::array({{{"byteLength", bin.size()},
-                                 {"uri", uri.empty() ? "data:application/octet-stream;base64," + base64(bin) : uri}}});
-  }
-  fs::path write(const fs::path& file) {
-    if (!j.contains("buffers")) buffer();
-    fs::create_directories(file.parent_path());
-    std::ofstream(file) << j.dump(1);
-    return file;
-  }
-};
-
-void write_bytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-}
-
-const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-
-// A document drawing kTriangle under one node: POSITION is accessor 0 in bufferView 0 (36 bytes); the
-// indices {0, 1, 2}, of the given component type (or none when 0), are accessor 1 in bufferView 1.
-Doc triangle_doc(int index_type = 0) {
-  Doc d;
-  json prim = {{"attributes", {{"POSITION", d.vec3s(kTriangle)}}}};
-  if (index_type == kUnsignedByte) prim["indices"] = d.indices(std::vector<std::uint8_t>{0, 1, 2}, index_type);
-  if (index_type == kUnsignedShort) prim["indices"] = d.indices(std::vector<std::uint16_t>{0, 1, 2}, index_type);
-  if (index_type == kUnsignedInt) prim["indices"] = d.indices(std::vector<std::uint32_t>{0, 1, 2}, index_type);
-  d.scene({d.node({{"mesh", d.mesh({prim})}})});
-  return d;
-}
-
-// A GLB container: header, the JSON chunk (padded with spaces to 4 bytes), a BIN chunk holding `bin` whose
-// header declares `bin_declared` bytes (its true size unless a test lies), the header's length the file's.
-std::vector<std::uint8_t> make_glb(std::string text, const std::vector<std::uint8_t>& bin, std::size_t bin_declared) {
-  while (text.size() % 4 != 0) text += ' ';
-  std::vector<std::uint8_t> glb;
-  const auto u32 = [&](std::size_t v) {
-    for (int k = 0; k < 4; ++k) glb.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
-  };
-  glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
-  u32(2);
-  u32(12 + 8 + text.size() + 8 + bin.size());
-  u32(text.size());
-  glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
-  glb.insert(glb.end(), text.begin(), text.end());
-  u32(bin_declared);
-  glb.insert(glb.end(), {'B', 'I', 'N', 0});
-  glb.insert(glb.end(), bin.begin(), bin.end());
-  return glb;
-}
-
-class GltfHandMade : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("shadowlab_gltf_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class GltfHandMade : public TempDirTest {};
 
 TEST_F(GltfHandMade, IndexWidthsAndNonIndexedGiveTheSameTriangle) {
   std::vector<Scene> scenes;
@@ -517,29 +392,42 @@ TEST_F(GltfHandMade, MemoryBombIsRefusedForItsLimit) {
   Doc d = triangle_doc(kUnsignedShort);
   d.j["accessors"][0]["count"] = 4'000'000'000ull;  // 48 GB of positions declared, 36 bytes present
   const std::string message = load_error(d.write(dir_ / "bomb.gltf"));
-  EXPECT_NE(message.find("4000000000 vertices, above the limit of 50000000 (LoadLimits::max_total_vertices)"),
+  EXPECT_NE(message.find("4000000000 vertices, above the limit of 4000000 (LoadLimits::max_total_vertices"),
             std::string::npos)
       << message;
   // The same for indices.
   Doc e = triangle_doc(kUnsignedInt);
   e.j["accessors"][1]["count"] = 3'000'000'000ull;
-  EXPECT_NE(load_error(e.write(dir_ / "bomb2.gltf")).find("(LoadLimits::max_total_indices)"), std::string::npos);
+  EXPECT_NE(load_error(e.write(dir_ / "bomb2.gltf")).find("1000000000 triangles, above the limit of 4000000 (LoadLimits::max_total_triangles"),
+            std::string::npos);
 }
 
 TEST_F(GltfHandMade, FileSizeLimit) {
   const fs::path file = triangle_doc().write(dir_ / "small.gltf");
   EXPECT_NE(load_error(file, LoadLimits{.max_file_bytes = 100})
-                .find("above the limit of 100 bytes (LoadLimits::max_file_bytes)"),
+                .find("small.gltf: the file is " + std::to_string(fs::file_size(file)) +
+                      " bytes, above the limit of 100 bytes (LoadLimits::max_file_bytes)"),
             std::string::npos);
-  // External buffers are held to the same limit before they are read.
+  // External buffers count against the scene's buffer budget, by what they declare, before any is read.
   Doc d = triangle_doc();
   const std::vector<std::uint8_t> padding(10'000);
   d.view(padding.data(), padding.size());
   write_bytes(dir_ / "tri.bin", d.bin);
   d.buffer("tri.bin");
   const fs::path external = d.write(dir_ / "external.gltf");
-  const std::string message = load_error(external, LoadLimits{.max_file_bytes = fs::file_size(external)});
-  EXPECT_NE(message.find("external.gltf: 'tri.bin' is 10036 bytes, above the limit"), std::string::npos) << message;
+  EXPECT_EQ(load_gltf(external).triangle_count(), 1u);
+  const std::string message = load_error(external, LoadLimits{.max_buffer_bytes = 10'000});
+  EXPECT_NE(message.find("external.gltf: its buffers declare 10036 bytes, above the limit of 10000 bytes for a scene "
+                         "(LoadLimits::max_buffer_bytes)"),
+            std::string::npos)
+      << message;
+  // A file larger than its buffer declares is refused unread.
+  d.j["buffers"][0]["byteLength"] = 36;
+  const std::string longer = load_error(d.write(dir_ / "longer.gltf"));
+  EXPECT_NE(longer.find("longer.gltf: buffer URI 'tri.bin': the file is 10036 bytes, above the limit of 36 bytes "
+                        "(the byteLength its buffer declares)"),
+            std::string::npos)
+      << longer;
 }
 
 TEST_F(GltfHandMade, NanPositionIsRefused) {

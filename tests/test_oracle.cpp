@@ -563,7 +563,9 @@ TEST(Metrics, ZeroDenominatorsAndBadInput) {
   EXPECT_THROW((void)diff_image(hand_truth(), std::vector<float>(11, 0.0f)), std::invalid_argument);
 }
 
-TEST(Metrics, NanCountsAsWrongAndValuesAreClamped) {
+// NaN is the wrong answer; out-of-range values decide lit/shadowed as if clamped but count in full in the
+// mean errors (1.5 on a lit pixel is 0.5 too bright, -0.5 in a shadow 0.5 too dark).
+TEST(Metrics, NanCountsAsWrongAndOutOfRangeValuesAreErrors) {
   Truth t;
   t.width = 4;
   t.height = 1;
@@ -574,7 +576,9 @@ TEST(Metrics, NanCountsAsWrongAndValuesAreClamped) {
   const Metrics m = compare(t, {nan, nan, 1.5f, -0.5f});
   EXPECT_DOUBLE_EQ(m.acne_rate, 0.5);
   EXPECT_DOUBLE_EQ(m.leak_rate, 0.5);
-  EXPECT_DOUBLE_EQ(m.mae_interior, 0.5);  // errors 1, 1, 0, 0
+  EXPECT_DOUBLE_EQ(m.mae_interior, 0.75);  // errors 1, 1, 0.5, 0.5
+  EXPECT_DOUBLE_EQ(m.lit_error, 0.75);
+  EXPECT_DOUBLE_EQ(m.shadow_error, 0.75);
 }
 
 TEST(Metrics, JsonHasEveryField) {

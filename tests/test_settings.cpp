@@ -2,36 +2,42 @@
 // that cannot be written. CPU only.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "app/settings.h"
 #include "renderer/params.h"
+#include "tests/test_util.h"
 
 namespace shadowlab {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_all(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+using test::read_all;
+using test::write_all;
 
 std::vector<fs::path> backups_of(const fs::path& file) {
   std::vector<fs::path> found;
   for (const auto& e : fs::directory_iterator(file.parent_path()))
     if (e.path().filename().string().rfind(file.filename().string() + ".bad-", 0) == 0) found.push_back(e.path());
+  return found;
+}
+
+// The temporary files beside `file` (".settings.json.tmp-<pid>-<random>").
+std::vector<fs::path> temporaries_of(const fs::path& file) {
+  std::vector<fs::path> found;
+  for (const auto& e : fs::directory_iterator(file.parent_path()))
+    if (e.path().filename().string().rfind("." + file.filename().string() + ".tmp-", 0) == 0) found.push_back(e.path());
   return found;
 }
 
@@ -85,7 +91,7 @@ TEST_F(SettingsTest, RoundTripKeepsValuesPresetsAndOtherLabs) {
   EXPECT_TRUE(s.dirty());
   s.save();  // creates config/shadowlab/
   EXPECT_FALSE(s.dirty());
-  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+  EXPECT_TRUE(temporaries_of(file).empty());
 
   const nlohmann::json on_disk = nlohmann::json::parse(read_all(file));
   EXPECT_EQ(on_disk["version"], kSettingsVersion);
@@ -149,7 +155,8 @@ TEST_F(SettingsTest, BadFileIsKeptAsideWithAWarningAndDefaultsAreUsed) {
       {"[1, 2]", "not a JSON object"},
       {"{\"labs\": {}}", "no version"},
       {"{\"version\": 1, \"labs\": []}", "not an object"},
-      {"{\"version\": 1, \"labs\": {\"1\": {\"presets\": {\"x\": 3}}}}", "preset 'x'"},
+      {"{\"version\": \"1\", \"labs\": {}}", "no version"},
+      {"{\"version\": 1.5, \"labs\": {}}", "no version"},
   };
   for (const auto& [text, reason] : cases) {
     SCOPED_TRACE(text);
@@ -208,6 +215,117 @@ TEST_F(SettingsTest, ValuesThatNoLongerApplyAreReportedAndTheRestApplied) {
   EXPECT_DOUBLE_EQ(p.get("light.elevation"), params().get("light.elevation"));
 }
 
+// One bad entry (issue 18): it is dropped alone, named in the warning; every other lab's values and
+// presets are kept and written back on the next save; the file as it was is copied aside once.
+TEST_F(SettingsTest, BadEntriesAreDroppedAloneAndTheRestIsWrittenBack) {
+  fs::create_directories(file.parent_path());
+  const std::string text = R"({"version": 1.0, "labs": {
+      "1": {"params": {"shadow.bias": 0.02}, "presets": {"good": {"shadow.bias": 0.03}, "x": 3}},
+      "2": 5,
+      "3": {"params": [], "presets": {"kept": {"shadow.bias": 0.04}}},
+      "4": {"params": {"shadow.bias": 0.01}, "presets": "nope"}}})";
+  write_all(file, text);
+  Settings s = Settings::load(file);
+  const std::string w = s.warning();
+  for (const char* part : {"lab '2' is not an object", "lab '3' params are not an object", "lab '1' preset 'x' is not an object",
+                           "lab '4' presets are not an object", "the other settings are kept"})
+    EXPECT_NE(w.find(part), std::string::npos) << part << " in: " << w;
+  EXPECT_EQ(w.find('\n'), std::string::npos) << "one line";
+  ASSERT_EQ(backups_of(file).size(), 1u);
+  EXPECT_EQ(read_all(backups_of(file)[0]), text) << "the file as it was, byte for byte";
+  EXPECT_NE(w.find(backups_of(file)[0].string()), std::string::npos);
+  EXPECT_EQ(read_all(file), text) << "loading alone changes nothing on disk";
+
+  ParamSet p = params();
+  EXPECT_TRUE(s.apply_lab(1, p).empty());
+  EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.02);
+  EXPECT_EQ(s.preset_names(1), std::vector<std::string>{"good"});
+  EXPECT_EQ(s.preset_names(3), std::vector<std::string>{"kept"});
+  EXPECT_TRUE(s.apply_lab(4, p).empty());
+  EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.01);
+  EXPECT_TRUE(s.dirty()) << "what was dropped is written back at the next save";
+  s.save();
+
+  const Settings again = Settings::load(file);
+  EXPECT_EQ(again.warning(), "") << "dropped once: the saved file is clean";
+  EXPECT_EQ(again.document()["version"], 1);
+  EXPECT_FALSE(again.document()["labs"].contains("2"));
+  EXPECT_EQ(again.preset_names(1), std::vector<std::string>{"good"});
+  EXPECT_EQ(again.preset_names(3), std::vector<std::string>{"kept"});
+  EXPECT_EQ(backups_of(file).size(), 1u);
+}
+
+// A value nested 100,000 deep (a 200 KB file) used to crash every start: it is dropped alone, the
+// rest kept. A file that is nothing but nesting is moved aside once.
+TEST_F(SettingsTest, DeepNestingIsDroppedNotCrashedOn) {
+  fs::create_directories(file.parent_path());
+  const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+  write_all(file, R"({"version": 1, "labs": {"0": {"params": {"shadow.bias": 0.02}}, "1": {"params": {"shadow.bias": )" +
+                      deep + "}}}}");
+  Settings s = Settings::load(file);
+  EXPECT_NE(s.warning().find("the value at 'labs/1/params/shadow.bias' nests deeper than 32 levels"), std::string::npos)
+      << s.warning();
+  ParamSet p = params();
+  EXPECT_TRUE(s.apply_lab(0, p).empty());
+  EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.02);
+  s.save();
+  EXPECT_EQ(Settings::load(file).warning(), "");
+  EXPECT_LT(fs::file_size(file), 1000u);
+
+  for (const std::size_t levels : {100'000u, 1'000'000u}) {
+    fs::remove_all(file.parent_path());
+    fs::create_directories(file.parent_path());
+    write_all(file, std::string(levels, '[') + std::string(levels, ']'));
+    const Settings bad = Settings::load(file);
+    EXPECT_NE(bad.warning().find("is not a JSON object; kept as"), std::string::npos) << bad.warning();
+    EXPECT_EQ(backups_of(file).size(), 1u);
+    EXPECT_EQ(Settings::load(file).warning(), "") << "moved aside once: the next start finds no file";
+  }
+}
+
+// Not a regular file: a FIFO would block a plain open forever; it is refused unopened, and nothing is
+// written over it.
+TEST_F(SettingsTest, FifoIsRefusedWithoutWaiting) {
+  fs::create_directories(file.parent_path());
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  Settings s = Settings::load(file);
+  EXPECT_NE(s.warning().find("is a FIFO, not a regular file"), std::string::npos) << s.warning();
+  s.store_lab(1, params());
+  EXPECT_THROW(s.save(), std::runtime_error);
+  EXPECT_TRUE(fs::is_fifo(file));
+}
+
+// Two windows saving at once (issue 18: "cannot replace the settings file", a shared temporary name):
+// every save of both succeeds and the file is always whole.
+TEST_F(SettingsTest, ConcurrentSavesAllSucceed) {
+  save_bias(0.01);
+  std::atomic<int> failures{0};
+  const auto saver = [&](double bias) {
+    Settings s = Settings::load(file);
+    ParamSet p = params();
+    for (int i = 0; i < 200; ++i) {
+      p.set("shadow.bias", bias + i * 1e-5);
+      s.store_lab(1, p);
+      try {
+        s.save();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "save failed: %s\n", e.what());
+        ++failures;
+      }
+    }
+  };
+  std::thread a(saver, 0.02), b(saver, 0.04);
+  int whole = 0;
+  for (int i = 0; i < 200; ++i) whole += nlohmann::json::parse(read_all(file), nullptr, false).is_discarded() ? 0 : 1;
+  a.join();
+  b.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(whole, 200) << "a reader saw a half-written file";
+  EXPECT_TRUE(temporaries_of(file).empty());
+  const double bias = loaded_bias();
+  EXPECT_TRUE(std::abs(bias - (0.02 + 199e-5)) < 1e-9 || std::abs(bias - (0.04 + 199e-5)) < 1e-9) << bias;
+}
+
 // The process dies (SIGKILL) after the temporary file is written and before the rename: the temporary
 // file is there, the real file is the previous one, whole, and loads; the next save goes through.
 TEST_F(SettingsTest, CrashBetweenWriteAndRenameLeavesTheOldFileIntact) {
@@ -223,15 +341,15 @@ TEST_F(SettingsTest, CrashBetweenWriteAndRenameLeavesTheOldFileIntact) {
         s.save();
       },
       ::testing::KilledBySignal(SIGKILL), "");
-  const fs::path tmp = file.string() + ".tmp";
-  ASSERT_TRUE(fs::exists(tmp)) << "the child got as far as writing the new file";
-  EXPECT_NE(read_all(tmp).find("0.09"), std::string::npos);
+  const std::vector<fs::path> temporaries = temporaries_of(file);
+  ASSERT_EQ(temporaries.size(), 1u) << "the child got as far as writing the new file";
+  EXPECT_NE(read_all(temporaries[0]).find("0.09"), std::string::npos);
   EXPECT_EQ(read_all(file), before);
   EXPECT_DOUBLE_EQ(loaded_bias(), 0.01);
 
-  save_bias(0.03);  // the leftover temporary file does not get in the way
+  save_bias(0.03);  // the leftover temporary file does not get in the way (nor is it reused)
   EXPECT_DOUBLE_EQ(loaded_bias(), 0.03);
-  EXPECT_FALSE(fs::exists(tmp));
+  EXPECT_EQ(temporaries_of(file), temporaries);
 }
 
 // Runs `body` in a child process (gtest's default "fast" death tests fork, so the child sees this
@@ -270,7 +388,7 @@ TEST_F(SettingsTest, UnwritableFolderGivesAClearErrorAndKeepsTheOldFile) {
     return false;
   });
   EXPECT_EQ(read_all(file), before);
-  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+  EXPECT_TRUE(temporaries_of(file).empty());
 
   // A bad file that cannot be moved aside is left alone, and nothing is written over it.
   write_all(file, "not json");

@@ -3,6 +3,7 @@
 // only what its lab offers.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -180,6 +181,21 @@ TEST_F(IncludeConfinementTest, OnlyOfferedNamesAreFollowed) {
   write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"\nfloat student(float x) { return helper(x); }\n");
   const ProgramBuild ok = build(dir / "exercise.glsl", "helper.glsl");
   EXPECT_TRUE(ok.program) << ok.error;
+}
+
+TEST_F(IncludeConfinementTest, AnIncludeMayEndInAComment) {
+  write("helper.glsl", "float helper(float x) { return x; }\n");
+  write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"  // the helper\nfloat student(float x) { return helper(x); }\n");
+  const ProgramBuild ok = build(dir / "exercise.glsl", "helper.glsl");
+  EXPECT_TRUE(ok.program) << ok.error;
+}
+
+// A student's "file" that is a FIFO is refused, not read (reading it would block for ever).
+TEST_F(IncludeConfinementTest, AFifoIsNotRead) {
+  ASSERT_EQ(::mkfifo((dir / "exercise.glsl").c_str(), 0600), 0);
+  const ProgramBuild b = build(dir / "exercise.glsl");
+  EXPECT_FALSE(b.program);
+  EXPECT_NE(b.error.find("not a regular file"), std::string::npos) << b.error;
 }
 
 // Through a real lab: lab 6's exercise, as a submission's file that includes the renderer's own PCF.

@@ -22,7 +22,7 @@ constexpr const char* kExerciseMoments = "labs/03_vsm_setup/exercise_moments.gls
 constexpr const char* kExerciseChebyshev = "labs/03_vsm_setup/exercise_chebyshev.glsl";
 constexpr const char* kVisibility = "labs/03_vsm_setup/visibility.glsl";
 
-// The issue's bound for E[z] against the plain depth map: both are gl_FragCoord.z of the same triangle
+// The bound for E[z] against the plain depth map: both are gl_FragCoord.z of the same triangle
 // stored in 32-bit floats, so anything above float rounding means the moments pass stores something else.
 constexpr double kMaxFirstMomentError = 1e-5;
 // E[z^2] against z^2 + (1/4)(dz/dx^2 + dz/dy^2) with the derivatives taken as finite differences of
@@ -216,7 +216,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   result.criteria.insert(result.criteria.end(), {
       {"moments.non_finite_texels", static_cast<double>(c.non_finite), Criterion::kAtMost, 0, "no NaN or Inf"},
       {"moments.max_first_moment_error", c.max_first_error, Criterion::kAtMost, rg16 ? 1e-3 : kMaxFirstMomentError,
-       rg16 ? "RG16F: half-float rounding of z in [0, 1]" : "E[z] is the plain depth: issue's 1e-5 (RG32F)"},
+       rg16 ? "RG16F: half-float rounding of z in [0, 1]" : "E[z] is the plain depth, to float32 rounding (RG32F)"},
       {"moments.max_second_moment_error", c.max_second_error, Criterion::kAtMost, rg16 ? 1e-3 : kMaxSecondMomentError,
        "z^2 + slope term from finite differences; float rounding bound, see the README"},
       {"moments.background_texels_not_clear_value", static_cast<double>(c.background_wrong), Criterion::kAtMost, 0,

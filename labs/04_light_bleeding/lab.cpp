@@ -24,7 +24,7 @@ constexpr const char* kExercise = "labs/04_light_bleeding/exercise.glsl";
 constexpr const char* kSolution = "shaders/vsm/visibility.glsl";       // the renderer's own VSM test
 constexpr const char* kUnfixed = "labs/03_vsm_setup/visibility.glsl";  // lab 3's test: no bias, no remap
 
-// The issue's targets: the fix must remove at least three quarters of the bleeding, and leave at most
+// The targets: the fix must remove at least three quarters of the bleeding, and leave at most
 // 1 % of the interior shadow bleeding, without making more than 0.5 % of the lit interior shadowed.
 constexpr double kMaxBleedingRatio = 0.25;
 constexpr double kMaxBleeding = 0.01;
@@ -166,9 +166,9 @@ void check_light_bleeding(CheckContext& ctx, CheckResult& result) {
     result.metrics[tag] = to_json(m.metrics);
     const double ratio = u.metrics.bleeding_rate > 0 ? m.metrics.bleeding_rate / u.metrics.bleeding_rate : 1.0;
     result.criteria.push_back({tag + ".bleeding_ratio_to_unfixed", ratio, Criterion::kAtMost, kMaxBleedingRatio,
-                               "issue: at most 1/4 of lab 3's bleeding"});
+                               "the fix removes at least three quarters of lab 3's bleeding"});
     result.criteria.push_back(
-        {tag + ".bleeding_rate", m.metrics.bleeding_rate, Criterion::kAtMost, kMaxBleeding, "issue target 1 %"});
+        {tag + ".bleeding_rate", m.metrics.bleeding_rate, Criterion::kAtMost, kMaxBleeding, "at most 1 % of the shadowed interior bleeds"});
     result.criteria.push_back({tag + ".lit_error", m.metrics.lit_error, Criterion::kAtMost, kMaxAcne,
                                "0.5 %: lit interior pixels must stay lit, and fully"});
     require_measurable(result, tag, m.metrics);

@@ -2,7 +2,8 @@
 // Demonstrates: blurring the moments rather than the lighting, two passes (X, then Y) with their own
 // shaders through a ping-pong texture, radius and sigma sliders, and that radius 0 costs nothing.
 // Check: the GPU's blurred moments against a CPU Gaussian (normalised weights, clamp to edge) for radii
-// 1, 2, 4, 8, 16; at radius 0 no blur pass runs and no blur target exists; per-pass GPU time and the
+// 1, 2, 4, 8, 16 at sigma = r / 2 and three held-out (radius, sigma) pairs; reported: at radius 0 no
+// blur pass runs and no blur target exists (the renderer's doing, tested in BlurTest); per-pass time and the
 // oracle's edge error by radius are reported.
 #include "labs/lab.h"
 
@@ -23,7 +24,7 @@ namespace {
 constexpr const char* kExercise = "labs/05_moment_blur/exercise.glsl";
 constexpr const char* kSolution = "shaders/vsm/gaussian_blur.glsl";  // the renderer's own blur
 
-// The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
+// The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
 // about 33 * 2^-24 = 2e-6 at worst; a kernel that is not normalised, not clamped at the edge or one
 // texel off is off by 1e-3 and more near every depth edge.
 constexpr double kMaxTexelError = 1e-4;
@@ -34,7 +35,8 @@ constexpr int kMaxHeldOutRadius = 8;
 constexpr double kHeldOutSigmaPerRadius[2] = {0.3, 1.5};
 constexpr double kMaxSigma = 8.0;  // the slider's range
 // Repeats of the blurred frame for its GPU time (the median is reported).
-constexpr int kTimingRepeats = 3;
+// (`shadowlab bench` measures the blur's cost properly; the check reports one frame's time.)
+constexpr int kTimingRepeats = 1;
 
 // Sigma for a radius in the check: the kernel spans +-2 sigma, the usual cut-off (weights at the end
 // are e^-2 = 0.14 of the centre).
@@ -159,13 +161,10 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
   result.metrics["blur"] = {{"map_size", n}, {"format", params.get_choice("vsm.format")}, {"radii", radii}};
   result.metrics["radius0"] = {
       {"blur_passes", blur_at_zero}, {"blur_target", target_at_zero}, {"extra_textures_when_blurring", extra_textures}};
-  result.criteria.push_back({"radius0.blur_passes_run", static_cast<double>(blur_at_zero), Criterion::kAtMost, 0,
-                             "radius 0 runs no blur pass (FrameStats counter)"});
-  result.criteria.push_back({"radius0.blur_target_allocated", target_at_zero ? 1.0 : 0.0, Criterion::kAtMost, 0,
-                             "radius 0 allocates no ping-pong texture"});
-  result.criteria.push_back({"blur.passes_per_blurred_map",
-                             static_cast<double>(blur_passes_run) / (static_cast<double>(cases.size()) * kTimingRepeats),
-                             Criterion::kAtLeast, 2, "X and Y: two passes per blurred shadow map"});
+  // Reported, not graded: the renderer, not the student's blur function, decides how many passes run
+  // and which targets exist (its own tests hold these: BlurTest.*, SkipTest.*).
+  result.metrics["blur"]["passes_per_blurred_map"] =
+      static_cast<double>(blur_passes_run) / (static_cast<double>(cases.size()) * kTimingRepeats);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ namespace {
 constexpr const char* kExercise = "labs/09_shadow_volumes/exercise.glsl";
 constexpr const char* kSolution = "shaders/volume/volume.glsl";  // the renderer's own volumes
 
-// The target: shadow volumes are exact hard shadows, so they must agree with the ray-cast truth
+// The target: shadow volumes are exact hard shadows, so they must agree with the ray-cast truth
 // on at least 99.5 % of the pixels away from shadow edges.
 constexpr double kMinAgreement = 0.995;
 // Shadow volumes have no texels: the edge band is the pixels whose truth changes within this many screen
