@@ -253,7 +253,8 @@ json grade_lab(const Run& run, const Lab& lab, const std::string& student, const
 int grade_submission(const Run& run, const std::string& path) {
   const std::string name = submission_name(path);
   const fs::path dir = run.out / "students" / name;
-  fs::create_directories(dir);
+  // The student's folder is this run's alone (the tasks of a parallel or Slurm run share --out).
+  make_output_dir(dir.string());
   std::error_code ec;
   json submission = {{"name", name}, {"source", fs::absolute(path, ec).string()}, {"labs", run.labs}};
   fs::path unpacked;
@@ -341,7 +342,10 @@ Run plan_run(const GradeOptions& options) {
     if (!fresh)
       throw std::invalid_argument("two submissions would be reported as '" + it->first + "': " + it->second + " and " + s);
   }
-  make_output_dir(options.out_dir);
+  // The whole --out is locked by the run that merges; its parallel or Slurm tasks (--no-merge) each
+  // lock only their student's folder.
+  if (options.no_merge) prove_writable_folder(options.out_dir);
+  else make_output_dir(options.out_dir);
   run.out = fs::absolute(options.out_dir);
   run.self = platform::self_executable();
   return run;
