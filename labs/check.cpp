@@ -139,8 +139,9 @@ std::string Criterion::explain() const {
 
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits) {
   result.metrics[tag] = to_json(m);
-  result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, ""});
-  result.criteria.push_back({tag + ".shadow_error", m.shadow_error, Criterion::kAtMost, limits.shadow_error, limits.why, ""});
+  result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, limits.lit_advice});
+  result.criteria.push_back(
+      {tag + ".shadow_error", m.shadow_error, Criterion::kAtMost, limits.shadow_error, limits.why, limits.shadow_advice});
   require_measurable(result, tag, m);
 }
 

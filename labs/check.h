@@ -163,6 +163,9 @@ struct HardLimits {
   double lit_error = 0.001;     // acne: 0.1 % of the lit interior, or darkening of 0.001 on average
   double shadow_error = 0.005;  // leak: 0.5 % of the shadowed interior
   std::string why = "lab 1's bounds: 0.1 % acne, 0.5 % leak, interior pixels";
+  // What the student should change when each fails (empty: the metric's usual advice).
+  std::string lit_advice = {};
+  std::string shadow_advice = {};
 };
 // Adds `<tag>.lit_error`, `<tag>.shadow_error` and `<tag>.graded_pixels` (not measurable below
 // kMinGradedPixels) to the result, and the measurement's metrics under result.metrics[tag].

@@ -118,6 +118,12 @@ void probe_bias_function(CheckContext& ctx, CheckResult& result) {
                              "surfaces the light grazes."});
 }
 
+const HardLimits kLimits{
+    .lit_advice = "acne: the bias is too small for this light or map size. Make it grow with the slope (tan of the angle "
+                  "of incidence) and with the texel's size (u_texel_depth), not a constant tuned to one light.",
+    .shadow_advice = "shadows detach (peter-panning): the bias is too large here. Scale the slope term by the texel's "
+                     "size (u_texel_depth) and cap tan near grazing angles; check the culling too."};
+
 void check_bias(CheckContext& ctx, CheckResult& result) {
   // 1. The function alone.
   probe_bias_function(ctx, result);
@@ -126,25 +132,16 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
   const LabHooks hooks = ctx.hooks();
-  const HardLimits limits;
   const auto m = ctx.measure(params, hooks, "lab01_grazing");
-  grade_hard_shadow(result, "grazing", m.metrics, limits);
+  grade_hard_shadow(result, "grazing", m.metrics, kLimits);
   result.metrics["grazing"]["render_ms"] = m.render_ms;
   result.metrics["grazing"]["oracle_ms"] = m.oracle_ms;
   for (const auto& c : draw_directional_cases(ctx, kHeldOut)) {
     const auto h = ctx.measure(c.apply(ctx, params), hooks, "lab01_" + c.tag);
-    grade_hard_shadow(result, c.tag, h.metrics, limits);
+    grade_hard_shadow(result, c.tag, h.metrics, kLimits);
     result.conditions.push_back(c.to_json());
   }
   ctx.use_default_scene();
-  for (auto& c : result.criteria) {
-    if (c.metric.ends_with(".lit_error"))
-      c.advice = "acne: the bias is too small for this light or map size. Make it grow with the slope (tan of the angle "
-                 "of incidence) and with the texel's size (u_texel_depth), not a constant tuned to one light.";
-    if (c.metric.ends_with(".shadow_error"))
-      c.advice = "shadows detach (peter-panning): the bias is too large here. Scale the slope term by the texel's "
-                 "size (u_texel_depth) and cap tan near grazing angles; check the culling too.";
-  }
 }
 
 }  // namespace

@@ -173,6 +173,11 @@ constexpr KernelCase kCases[] = {{"1", false}, {"3", false}, {"5", false}, {"7",
 constexpr KernelCase kHeldOutKernels[] = {{"5", false}, {"9", false}, {"3", true}};
 const std::vector<HeldOutRange> kHeldOut = {{20.0f, 45.0f, {"512", "1024"}, {"default", "stacked"}},
                                             {45.0f, 80.0f, {"512", "1024"}, {"default", "stacked"}}};
+const HardLimits kLimits{
+    .why = "lab 1's bounds, interior beyond the kernel's reach",
+    .lit_advice = "acne inside lit areas: a tap k texels away reads the receiver k texels along its slope, so the bias "
+                  "must grow with the kernel's reach (lab 1's bias times 1 + r).",
+    .shadow_advice = "light inside shadows: average the comparisons (0 or 1 each), not the depths, and keep the bias small."};
 // Images are graded at this size: the band's many samples per pixel make the oracle dearer.
 constexpr int kWidth = 640, kHeight = 360;
 
@@ -185,9 +190,7 @@ void measure_kernel(CheckContext& ctx, CheckResult& result, const ParamSet& para
   const int radius = (c.kernel[0] - '0') / 2;
   const auto m = ctx.measure(p, ctx.hooks(), "lab06_" + tag + "_" + impl_name(ctx.impl), nullptr,
                              kernel_band(radius, c.hardware), kWidth, kHeight);
-  HardLimits limits;
-  limits.why = "lab 1's bounds, interior beyond the kernel's reach";
-  grade_hard_shadow(result, tag, m.metrics, limits);
+  grade_hard_shadow(result, tag, m.metrics, kLimits);
   std::size_t band = 0, soft = 0;  // reported: how much of the band the filter softened
   for (std::size_t i = 0; i < m.visibility.size(); ++i) {
     if (!m.truth.valid[i] || m.truth.interior[i]) continue;
@@ -218,13 +221,6 @@ void check_pcf(CheckContext& ctx, CheckResult& result) {
   }
   ctx.use_default_scene();
   result.metrics["kernels"] = kernels;
-  for (auto& c : result.criteria) {
-    if (c.metric.ends_with(".lit_error"))
-      c.advice = "acne inside lit areas: a tap k texels away reads the receiver k texels along its slope, so the bias "
-                 "must grow with the kernel's reach (lab 1's bias times 1 + r).";
-    if (c.metric.ends_with(".shadow_error"))
-      c.advice = "light inside shadows: average the comparisons (0 or 1 each), not the depths, and keep the bias small.";
-  }
 }
 
 }  // namespace

@@ -67,6 +67,11 @@ void probe_bias(CheckContext& ctx, CheckResult& result) {
   grade_bias_thresholds(result, thresholds, kProbeSlope);
 }
 
+const HardLimits kLimits{
+    .lit_advice = "acne: compare distances (invert the projection with u_light_near and u_light_far) and bias by a "
+                  "texel's footprint at the fragment's distance (distance x u_texel_angle), growing with the slope.",
+    .shadow_advice = "light leaks into shadows: the bias is too large, or the depths are compared the wrong way."};
+
 void check_spot(CheckContext& ctx, CheckResult& result) {
   probe_bias(ctx, result);
   const LabHooks hooks = ctx.hooks();
@@ -102,17 +107,10 @@ void check_spot(CheckContext& ctx, CheckResult& result) {
     const auto m = ctx.measure(p, hooks, "lab07_" + tag + "_" + impl_name(ctx.impl));
     const glm::mat4& proj = ctx.renderer.light_view().projection;
     const float near_plane = proj[3][2] / (proj[2][2] - 1.0f), far_plane = proj[3][2] / (proj[2][2] + 1.0f);
-    grade_hard_shadow(result, tag, m.metrics);
+    grade_hard_shadow(result, tag, m.metrics, kLimits);
     result.metrics[tag]["interior_agreement"] = interior_agreement(m.metrics);
     result.metrics[tag]["light"] = {{"position", {place.x, place.y, place.z}}, {"cone_deg", place.cone_deg},
                                     {"near", near_plane}, {"far", far_plane}};
-  }
-  for (auto& c : result.criteria) {
-    if (c.metric.ends_with(".lit_error"))
-      c.advice = "acne: compare distances (invert the projection with u_light_near and u_light_far) and bias by a "
-                 "texel's footprint at the fragment's distance (distance x u_texel_angle), growing with the slope.";
-    if (c.metric.ends_with(".shadow_error"))
-      c.advice = "light leaks into shadows: the bias is too large, or the depths are compared the wrong way.";
   }
 }
 

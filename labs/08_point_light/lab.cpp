@@ -75,6 +75,12 @@ void probe_bias(CheckContext& ctx, CheckResult& result) {
   grade_bias_thresholds(result, thresholds, kProbeSlope);
 }
 
+const HardLimits kLimits{
+    .lit_advice = "acne: compare the fragment's distance to the light with the stored distance, biased by a texel's "
+                  "footprint at that distance (distance x u_texel_angle), growing with the slope.",
+    .shadow_advice = "shadows missing: look the cube up along the direction from the light to the fragment (the shadow "
+                     "pass looked outward from the light), and compare distances, not depths."};
+
 void check_point(CheckContext& ctx, CheckResult& result) {
   probe_bias(ctx, result);
   ParamSet params = ctx.params();
@@ -88,7 +94,7 @@ void check_point(CheckContext& ctx, CheckResult& result) {
     p.set("point.single_pass", single);
     const std::string tag = single ? "one_pass" : "six_passes";
     const auto m = ctx.measure(p, hooks, "lab08_" + tag + "_" + impl_name(ctx.impl), nullptr, grading_band(), 960, 540, &camera);
-    grade_hard_shadow(result, tag, m.metrics);
+    grade_hard_shadow(result, tag, m.metrics, kLimits);
     result.metrics[tag]["interior_agreement"] = interior_agreement(m.metrics);
     int size = 0;
     for (int f = 0; f < 6; ++f) faces[single][f] = r.read_cube_face(f, &size);
@@ -127,16 +133,8 @@ void check_point(CheckContext& ctx, CheckResult& result) {
     p.set_from_string("shadow.map_size", size);
     const auto m = ctx.measure(p, hooks, std::string("lab08_") + tag + "_" + impl_name(ctx.impl), nullptr, grading_band(),
                                960, 540, &camera);
-    grade_hard_shadow(result, tag, m.metrics);
+    grade_hard_shadow(result, tag, m.metrics, kLimits);
     result.conditions.push_back({{"tag", tag}, {"light_position", {at.x, at.y, at.z}}, {"map_size", size}});
-  }
-  for (auto& c : result.criteria) {
-    if (c.metric.ends_with(".lit_error"))
-      c.advice = "acne: compare the fragment's distance to the light with the stored distance, biased by a texel's "
-                 "footprint at that distance (distance x u_texel_angle), growing with the slope.";
-    if (c.metric.ends_with(".shadow_error"))
-      c.advice = "shadows missing: look the cube up along the direction from the light to the fragment (the shadow "
-                 "pass looked outward from the light), and compare distances, not depths.";
   }
 }
 
