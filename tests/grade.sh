@@ -224,11 +224,13 @@ PY
       || fail "memory: $(status_of "$tmp/memory" hog 2): $(message_of "$tmp/memory" hog 2)"
     ;;
   grade_class_small)  # the class in small: 12 generated submissions, every status, GNU parallel, all reports
-    python3 "$src/tests/make_submissions.py" --bin "$bin" --out "$tmp/class" --count 12 --seed 15 >"$tmp/gen" || fail "generator: $(cat "$tmp/gen")"
+    # (SHADOWLAB_CLASS_SIZE=300 for the whole class; SHADOWLAB_CLASS_JOBS for other than 2 jobs)
+    count=${SHADOWLAB_CLASS_SIZE:-12} jobs=${SHADOWLAB_CLASS_JOBS:-2}
+    python3 "$src/tests/make_submissions.py" --bin "$bin" --out "$tmp/class" --count "$count" --seed 15 >"$tmp/gen" || fail "generator: $(cat "$tmp/gen")"
     start=$(date +%s)
-    "$bin" grade "$tmp"/class/submissions/* --out "$tmp/grades" --jobs 2 >"$tmp/log" 2>&1
+    "$bin" grade "$tmp"/class/submissions/* --out "$tmp/grades" --jobs "$jobs" >"$tmp/log" 2>&1
     code=$?
-    echo "12 submissions graded in $(($(date +%s) - start)) s, exit $code"
+    echo "$count submissions graded in $(($(date +%s) - start)) s with $jobs jobs, exit $code"
     [ "$code" -eq 1 ] || fail "exit $code (some labs fail by design: expected 1): $(tail -5 "$tmp/log")"
     python3 "$src/tests/check_grades.py" "$tmp/grades" "$tmp/class/expected.json" || fail "reports differ from the expected statuses"
     ;;
