@@ -12,6 +12,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/exit_codes.h"
 #include "app/headless.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
@@ -21,6 +22,7 @@
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
+#include "renderer/platform.h"
 
 namespace shadowlab {
 
@@ -220,7 +222,7 @@ nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int fram
     for (const auto& p : renderer.render(hidden, request).passes)
       if (p.name == "lit") lit_ms.push_back(p.gpu_ms);
 
-  const std::string text = load_lab_text(lab);
+  const LabText text = load_lab_text(lab);
   PanelModel model;
   model.lab = &lab;
   model.params = &shown;
@@ -268,9 +270,11 @@ std::string csv_escape(const std::string& s) { return s.find(',') == std::string
 }  // namespace
 
 int run_bench(const BenchOptions& options) {
+  bool usage_checked = false;  // the output folder and the scenes are the command line's: exit 2 when unusable
   try {
     make_output_dir(options.out_dir);  // created, proven writable, locked against a second run
     const auto bench_scenes = scenes(options.scene_file);
+    usage_checked = true;
     std::string error;
     auto context = HeadlessContext::create(&error);
     if (!context) throw std::runtime_error(error);
@@ -288,19 +292,29 @@ int run_bench(const BenchOptions& options) {
     {
       Renderer renderer;
       std::size_t done = 0;
+      // On a terminal one line is rewritten in place; in a log (not a terminal) a line every tenth of
+      // the sweep, and no carriage returns.
+      const bool terminal = platform::is_terminal(stderr);
+      std::size_t next_logged = 0;
       for (const auto& s : bench_scenes) {
         renderer.set_scene(s.scene);
         const Oracle oracle(s.scene);
         for (const auto& t : techs) {
           for (int size : t.uses_map ? sizes : std::vector<int>{0}) {
             ++done;
-            std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.name.c_str(), size,
-                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (terminal) {
+              std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.name.c_str(),
+                           size, elapsed);
+            } else if (done >= next_logged || done == total) {
+              std::fprintf(stderr, "[%zu/%zu] %s %s %d (%.0f s)\n", done, total, s.name.c_str(), t.name.c_str(), size, elapsed);
+              next_logged = done + std::max<std::size_t>(1, total / 10);
+            }
             points.push_back(measure(renderer, oracle, t, s, size, frames));
           }
         }
       }
-      std::fprintf(stderr, "\n");
+      if (terminal) std::fprintf(stderr, "\n");
       skipping = measure_skipping(renderer, bench_scenes.front().scene, options.quick ? 12 : 36);
       overlays = measure_overlays(renderer, bench_scenes.front().scene, options.quick ? 5 : 15);
       // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
@@ -399,8 +413,8 @@ int run_bench(const BenchOptions& options) {
     }
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "\nshadowlab bench: %s\n", e.what());
-    return 1;
+    std::fprintf(stderr, "%sshadowlab bench: %s\n", platform::is_terminal(stderr) ? "\n" : "", e.what());
+    return usage_checked ? kExitRuntime : kExitUsage;
   }
 }
 

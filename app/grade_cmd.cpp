@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/check_cmd.h"
+#include "app/exit_codes.h"
 #include "app/grade_report.h"
 #include "app/headless.h"
 #include "app/submission.h"
@@ -27,7 +28,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr int kExitAllPassed = 0, kExitSomeFailed = 1, kExitUsage = 2, kExitGraderError = 3;
+constexpr int kExitAllPassed = kExitOk, kExitSomeFailed = kExitCheckFailed, kExitGraderError = kExitRuntime;
 
 struct Run {
   GradeOptions options;

@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/exit_codes.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
 #include "app/split_view.h"
@@ -19,6 +20,7 @@
 #include "renderer/platform.h"
 #include "renderer/untrusted.h"
 #include "renderer/renderer.h"
+#include "renderer/shader.h"
 
 namespace shadowlab {
 
@@ -79,6 +81,9 @@ nlohmann::json matrix_json(const glm::mat4& m) {
 }  // namespace
 
 int run_render(const RenderOptions& options) {
+  // Everything the command line names is checked first (exit 2 when it cannot be used); what fails
+  // after that is the tool's own failure (exit 3).
+  bool usage_checked = false;
   try {
     const Lab* lab = find_lab(options.lab);
     if (!lab) {
@@ -92,6 +97,7 @@ int run_render(const RenderOptions& options) {
     std::optional<BenchPlots> bench_plots;
     if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
     make_output_dir(options.out_dir);
+    usage_checked = true;
 
     std::string error;
     auto context = HeadlessContext::create(&error);
@@ -115,8 +121,15 @@ int run_render(const RenderOptions& options) {
       std::vector<std::uint8_t> color = renderer.read_color();
       if (options.panel) {
         // The window's panel, drawn by the same function over the same frame.
-        const std::string text = load_lab_text(*lab);
+        const LabText text = load_lab_text(*lab);
+        ImGuiOffscreen offscreen(options.width, options.height);
+        const UiScale scale = plan_ui_scale(options.ui_scale, 1.0f, 1.0f);
+        const UiFonts fonts = offscreen.use_fonts(data_dir() / "assets" / "fonts", scale);
         PanelModel model;
+        model.fonts = &fonts;
+        model.ui_scale = scale.style;
+        model.gl_summary = gl_summary();
+        model.gl_fallbacks = gl_fallbacks();
         model.lab = lab;
         model.impl = impl;
         model.params = &params;
@@ -133,7 +146,6 @@ int run_render(const RenderOptions& options) {
           model.bench = &bench;
           model.bench_plots = &*bench_plots;
         }
-        ImGuiOffscreen offscreen(options.width, options.height);
         color = offscreen.render(
             [&] {
               draw_lab_panel(model);
@@ -172,7 +184,13 @@ int run_render(const RenderOptions& options) {
             {"view", matrix_json(renderer.light_view().view)},
             {"projection", matrix_json(renderer.light_view().projection)}}},
           {"stats", stats.to_json()},
-          {"gl", {{"renderer", gl.renderer}, {"version", gl.version}, {"context", context->platform()}}},
+          {"gl",
+           {{"renderer", gl.renderer},
+            {"version", gl.version},
+            {"major", gl.major},
+            {"minor", gl.minor},
+            {"context", context->platform()},
+            {"fallbacks", gl_fallbacks()}}},
           {"matrix_layout", "column-major"},
       };
       write_text_atomic(out / "render.json", j.dump(2) + "\n");
@@ -183,7 +201,7 @@ int run_render(const RenderOptions& options) {
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab render: %s\n", one_line_error(e.what()).c_str());
-    return 1;
+    return usage_checked ? kExitRuntime : kExitUsage;
   }
 }
 

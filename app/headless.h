@@ -23,6 +23,7 @@ struct RenderOptions {
   bool panel = false;
   bool panel_check = false;
   std::string bench_file;  // with panel: the Speed against error window on this bench.json
+  float ui_scale = 1.0f;   // with panel: the text and widget scale (2: as on a 200 % monitor)
 };
 
 // Loads --scene or builds the default scene; throws with a message naming the file on failure. What
@@ -40,6 +41,7 @@ void make_output_dir(const std::string& dir);
 // becomes "heading: detail"; longer messages (compile logs with quoted source) keep their lines.
 std::string one_line_error(const std::string& message);
 
+// Exit codes (app/exit_codes.h): 0 written; 2 the command line cannot be used as given; 3 runtime error.
 int run_render(const RenderOptions& options);
 int run_list_labs(bool show_params, bool json = false);
 

@@ -1,12 +1,13 @@
 #include "app/imgui_offscreen.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "renderer/gl.h"
 #include "renderer/gl_objects.h"
 #include "renderer/image_io.h"
 #include <imgui.h>
-#include <backends/imgui_impl_opengl3.h>
+#include <imgui_impl_opengl3.h>
 
 namespace shadowlab {
 
@@ -28,6 +29,16 @@ ImGuiOffscreen::~ImGuiOffscreen() {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext(static_cast<ImGuiContext*>(context_));
   ImGui::SetCurrentContext(static_cast<ImGuiContext*>(previous_context_));
+}
+
+UiFonts ImGuiOffscreen::use_fonts(const std::filesystem::path& folder, const UiScale& scale) {
+  ImGui::SetCurrentContext(static_cast<ImGuiContext*>(context_));
+  std::string warning;
+  UiFonts fonts = build_ui_fonts(*ImGui::GetIO().Fonts, folder, scale.raster, &warning);
+  if (!warning.empty()) std::fprintf(stderr, "shadowlab: warning: %s\n", warning.c_str());
+  ImGui_ImplOpenGL3_DestroyFontsTexture();  // made again, from the new atlas, by the next NewFrame
+  apply_ui_style(scale);
+  return fonts;
 }
 
 std::vector<std::uint8_t> ImGuiOffscreen::render(const std::function<void()>& draw,

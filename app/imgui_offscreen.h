@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <vector>
+
+#include "app/ui_fonts.h"
 
 namespace shadowlab {
 
@@ -20,6 +23,11 @@ class ImGuiOffscreen {
   // a background (either cleared, or `background` RGBA8 top row first, width x height) and returns RGBA8
   // pixels, top row first.
   std::vector<std::uint8_t> render(const std::function<void()>& draw, const std::vector<std::uint8_t>* background = nullptr);
+
+  // Loads the panel's fonts from `folder` and scales the style, as the window does for a monitor of
+  // that scale. Call before render(). A missing font file falls back to ImGui's own font, with a warning
+  // on stderr.
+  UiFonts use_fonts(const std::filesystem::path& folder, const UiScale& scale);
 
  private:
   int width_, height_;

@@ -8,7 +8,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
+#include <imgui_impl_glfw.h>
 
 namespace shadowlab {
 
@@ -53,7 +53,7 @@ InputScript::InputScript(const std::string& text) {
         if (s.a < 1 || s.b < 1) throw bad();
       } else if (s.kind == "screenshot" || s.kind == "drop") {
         if (s.arg.empty()) throw bad();
-      } else if (s.kind != "iconify" && s.kind != "restore") {
+      } else if (s.kind != "iconify" && s.kind != "restore" && s.kind != "check") {
         throw bad();
       }
     } catch (const std::invalid_argument&) {
@@ -100,6 +100,9 @@ std::string InputScript::advance(GLFWwindow* window, double now) {
       glfwIconifyWindow(window);
     } else if (s.kind == "restore") {
       glfwRestoreWindow(window);
+    } else if (s.kind == "check") {
+      check_requested_ = true;
+      wait_until_frame_ = frames_drawn_ + 1;
     }
     if (!screenshot.empty()) break;
   }

@@ -8,10 +8,12 @@
 //   iconify / restore   minimise the window / bring it back
 //   wait:S         let S seconds pass (a minimised window draws no frames)
 //   drop:F         drop file F on the window (through the window's drop callback)
+//   check          press the panel's Check button (the same request the button makes)
 // When the script ends the window closes.
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 struct GLFWwindow;
@@ -30,6 +32,8 @@ class InputScript {
   // Call after each drawn frame.
   void frame_drawn() { ++frames_drawn_; }
   bool finished() const { return next_ >= steps_.size() && pending_release_ < 0; }
+  // True once after a `check` step.
+  bool take_check_request() { return std::exchange(check_requested_, false); }
 
  private:
   struct Step {
@@ -42,6 +46,7 @@ class InputScript {
   long frames_drawn_ = 0;
   long wait_until_frame_ = 0;
   double wait_until_time_ = 0.0;
+  bool check_requested_ = false;
 };
 
 // GLFW key code for a script's key name; -1 if unknown.

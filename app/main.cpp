@@ -3,17 +3,74 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include "app/bench_cmd.h"
 #include "app/check_cmd.h"
+#include "app/exit_codes.h"
 #include "app/grade_cmd.h"
 #include "app/headless.h"
+#include "app/panel_lab.h"
 #include "app/window.h"
+
+namespace {
+
+#ifndef SHADOWLAB_VERSION
+#define SHADOWLAB_VERSION "unknown"
+#endif
+#ifndef SHADOWLAB_EMBREE_VERSION
+#define SHADOWLAB_EMBREE_VERSION "?"
+#endif
+
+std::string version_text() {
+  return std::string("shadowlab ") + SHADOWLAB_VERSION + "\nbuilt with Dear ImGui " + IMGUI_VERSION + ", GLFW " +
+         glfwGetVersionString() + ", Embree " + SHADOWLAB_EMBREE_VERSION + "; headless OpenGL through " +
+#if SHADOWLAB_HAS_EGL
+         "EGL (a hidden GLFW window where EGL fails)";
+#else
+         "a hidden GLFW window (built without EGL: needs a display)";
+#endif
+}
+
+std::string main_footer() {
+  std::string keys;
+  for (const auto& [key, what] : shadowlab::window_keys()) keys += "  " + key + std::string(12 - std::min<std::size_t>(11, key.size()), ' ') + what + "\n";
+  return "Exit codes (every command):\n"
+         "  0  ok (check: every selected lab passed)\n"
+         "  1  check: some lab failed (a criterion, or your file does not build)\n"
+         "  2  usage: an unknown option or bad value, a file named on the command line that is missing or\n"
+         "     invalid, an output folder that cannot be written\n"
+         "  3  runtime error: no OpenGL context or window, a file of the program missing, the grader broke\n"
+         "\n"
+         "Environment:\n"
+         "  SHADOWLAB_DATA_DIR        folder holding shaders/, labs/, assets/ (default: the source tree it was built from)\n"
+         "  SHADOWLAB_SETTINGS        the window's settings file (default: settings.json in the user's config folder:\n"
+         "                            $XDG_CONFIG_HOME/shadowlab or ~/.config/shadowlab on Linux,\n"
+         "                            ~/Library/Application Support/shadowlab on macOS, %APPDATA%\\shadowlab on Windows)\n"
+         "  DISPLAY, WAYLAND_DISPLAY  where the window opens (Linux); headless commands need none with EGL\n"
+         "  MESA_GL_VERSION_OVERRIDE  with MESA_GLSL_VERSION_OVERRIDE, caps Mesa's OpenGL (4.1 / 410: macOS's level)\n"
+         "\n"
+         "Window keys:\n" + keys +
+         "\n"
+         "Examples:\n"
+         "  shadowlab --lab 1                          open the window on lab 1\n"
+         "  shadowlab check --lab 1                    grade your lab 1 exercise\n"
+         "  shadowlab render --lab 4 --out out/lab4    one frame of lab 4, headless\n"
+         "  shadowlab labs --params                    every lab and parameter\n"
+         "Each command has --help, with an example.";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"shadowlab: a teaching lab for real-time shadows in OpenGL.\n"
                "Without a command it opens the window; the commands below run headless (no display, no GPU)."};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", version_text(), "Print the version and the libraries it was built with, and exit");
+  app.footer(main_footer());
+  app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
 
   shadowlab::WindowOptions window_options;
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
@@ -43,6 +100,12 @@ int main(int argc, char** argv) {
       ->needs(panel_flag);
   render_cmd->add_flag("--buffers", render.buffers,
                        "Also write world positions, normals and visibility as float32 .npy files");
+  render_cmd->add_option("--ui-scale", render.ui_scale, "With --panel: text and widget scale (2: as on a 200 % monitor)")
+      ->check(CLI::Range(0.5, 4.0))
+      ->needs(panel_flag);
+  render_cmd->footer("Exit: 0 written; 2 usage (bad option, unusable --scene/--out); 3 runtime error (no OpenGL context).\n"
+                     "Example: shadowlab render --lab 1 --impl exercise --panel --check --out out/lab1\n"
+                     "Headless through EGL on Linux (no display needed); elsewhere a hidden window (needs a display).");
 
   shadowlab::CheckOptions check;
   CLI::App* check_cmd = app.add_subcommand("check", "Grade labs headless against the ray-cast oracle. Exit 0: all passed; 1: some failed (or your file does not build); 2: usage error; 3: grader error");
@@ -58,12 +121,17 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--json", check.json_file, "Write the results as JSON to this file");
   check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
   check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
+  check_cmd->footer("Exit: 0 all passed; 1 some failed (or your file does not build); 2 usage; 3 grader error.\n"
+                    "Example: shadowlab check --lab 1 --json out/check1.json");
 
   shadowlab::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
+  bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out); 3 runtime error.\n"
+                    "Progress goes to stderr: one line rewritten on a terminal, a line per tenth of the sweep in a log.\n"
+                    "Example: shadowlab bench --quick --out out/bench");
 
   shadowlab::GradeOptions grade;
   CLI::App* grade_cmd = app.add_subcommand(
@@ -91,12 +159,15 @@ int main(int argc, char** argv) {
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
   bool labs_json = false;
   labs_cmd->add_flag("--json", labs_json, "The labs as JSON: number, slug, folder, exercise and solution files");
+  labs_cmd->footer("Exit: 0.\nExample: shadowlab labs --params   (the keys --set takes, with their ranges)");
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints the help, or the error
-    return code == 0 ? 0 : 2;      // every usage error exits 2 (CLI11's own codes are 100 and up)
+    app.exit(e);  // prints CLI11's message and where to find --help
+    return shadowlab::kExitUsage;  // CLI11's own codes (105-109 and others) are not ours
   }
 
   if (*render_cmd) return shadowlab::run_render(render);

@@ -20,7 +20,40 @@ namespace {
 
 const ImVec4 kGreen(0.45f, 0.85f, 0.45f, 1.0f), kRed(1.0f, 0.45f, 0.4f, 1.0f), kHint(0.95f, 0.8f, 0.45f, 1.0f);
 
+// Wrapped text in the disabled colour (hints): TextDisabled does not wrap.
+void hint_wrapped(const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+}
 
+void draw_keys() {
+  std::string line = "Keys:";
+  const auto& keys = window_keys();
+  for (std::size_t i = 0; i < keys.size(); ++i) line += (i ? "; " : " ") + keys[i].first + " " + keys[i].second;
+  hint_wrapped(line + ". Not while typing in a field.");
+}
+
+// Which OpenGL the view runs on, and what runs differently there (the course's floor is 3.3 core; macOS
+// stops at 4.1, which has no compute shaders).
+void draw_gl(const PanelModel& m) {
+  if (m.gl_summary.empty()) return;
+  if (m.gl_fallbacks.empty()) {
+    hint_wrapped(m.gl_summary + ": every feature runs as designed.");
+    return;
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, kHint);
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted((m.gl_summary + ", with fallbacks:").c_str());
+  for (const auto& f : m.gl_fallbacks) {
+    ImGui::Bullet();  // then the text as one wrapped block beside it (BulletText does not wrap)
+    ImGui::TextUnformatted(f.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+}
 
 void draw_nav(PanelModel& m, PanelActions& a) {
   if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) a.open_lab = neighbour_lab(*m.lab, -1);
@@ -36,17 +69,28 @@ void draw_nav(PanelModel& m, PanelActions& a) {
   ImGui::SameLine();
   if (ImGui::ArrowButton("##next", ImGuiDir_Right)) a.open_lab = neighbour_lab(*m.lab, +1);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Next lab (N)");
-  ImGui::TextDisabled("keys: 0-9 lab, N/P next/previous, S split, M magnifier, F11 fullscreen, F12 screenshot");
+  if (m.interactive) {
+    draw_keys();
+    float percent = m.text_size * 100.0f;
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
+    if (ImGui::SliderFloat("Text size", &percent, 50.0f, 300.0f, "%.0f %%", ImGuiSliderFlags_AlwaysClamp)) {
+      a.text_size = percent / 100.0f;
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Scales the panel's text and widgets, on top of the monitor's own scale (Ctrl+click to type a value)");
+  }
+  draw_gl(m);
 }
 
 void draw_task(PanelModel& m, PanelActions& a) {
   if (!ImGui::CollapsingHeader("Your task", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const std::string task = m.lab_text ? task_section(*m.lab_text) : std::string();
+  const bool has_task = m.lab_text && !m.lab_text->task_markdown.empty();
   ImGui::PushTextWrapPos(0.0f);
   if (m.lab->exercise_files.empty()) {
     ImGui::TextUnformatted("A read-along lab: nothing to edit. Read the text, then try the presets below.");
   } else {
-    ImGui::TextUnformatted(task.empty() ? "Make the Check pass by editing the file(s) below." : task.c_str());
+    if (has_task) m.lab_text->task.draw(m.fonts);
+    else ImGui::TextUnformatted("Make the Check pass by editing the file(s) below.");
     ImGui::Spacing();
     bool cpp = false;  // C++ exercises need a rebuild; shaders reload when saved
     for (const auto& file : m.lab->exercise_files) cpp |= file.ends_with(".cpp") || file.ends_with(".h");
@@ -67,12 +111,31 @@ void draw_task(PanelModel& m, PanelActions& a) {
 void draw_check(PanelModel& m, PanelActions& a) {
   if (!m.lab->check || !ImGui::CollapsingHeader("Check", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (m.interactive) {
+    const bool running = m.check_progress.running;
+    if (running) ImGui::BeginDisabled();
     if (ImGui::Button("Check")) a.check = true;
+    if (running) ImGui::EndDisabled();
     ImGui::SameLine();
   }
   ImGui::TextDisabled("same as: shadowlab check --lab %d --impl %s", m.lab->number, impl_name(m.impl));
+  if (m.check_progress.running) {
+    // The check runs on a worker thread with a GL context of its own: the view keeps drawing meanwhile.
+    const CheckProgress& p = m.check_progress;
+    char label[96];
+    if (p.expected > 0.0) {
+      std::snprintf(label, sizeof label, "checking: %.1f s (last time %.1f s)", p.seconds, p.expected);
+      ImGui::ProgressBar(static_cast<float>(std::min(0.99, p.seconds / p.expected)), ImVec2(-1.0f, 0.0f), label);
+    } else {
+      std::snprintf(label, sizeof label, "checking: %.1f s", p.seconds);
+      // No estimate yet: a bar that sweeps once a second.
+      ImGui::ProgressBar(static_cast<float>(p.seconds - static_cast<double>(static_cast<long>(p.seconds))),
+                         ImVec2(-1.0f, 0.0f), label);
+    }
+    if (!m.check) return;
+    ImGui::TextDisabled("The previous result, until this one is ready:");
+  }
   if (!m.check) {
-    ImGui::TextDisabled("Not checked yet: press Check to grade against the ray-cast truth.");
+    hint_wrapped("Not checked yet: press Check to grade against the ray-cast truth.");
     return;
   }
   const CheckResult& r = *m.check;
@@ -160,8 +223,14 @@ void draw_stats(PanelModel& m) {
 
 PanelActions draw_lab_panel(PanelModel& m) {
   PanelActions a;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(430, std::min(ImGui::GetIO().DisplaySize.y - 20.0f, 840.0f)), ImGuiCond_FirstUseEver);
+  // The panel's width follows the text size; set again when the scale changes.
+  const ImGuiCond cond = m.resize ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(10, 10), cond);
+  ImGui::SetNextWindowSize(ImVec2(std::min(430.0f * m.ui_scale, std::max(display.x * 0.6f, 300.0f)),
+                                  // Pictures (not interactive) use the whole height.
+                                  m.interactive ? std::min(display.y - 20.0f, 840.0f * m.ui_scale) : display.y - 20.0f),
+                           cond);
   ImGui::Begin("shadowlab");
   draw_nav(m, a);
   if (m.stats) {
@@ -185,9 +254,8 @@ PanelActions draw_lab_panel(PanelModel& m) {
   draw_task(m, a);
   draw_check(m, a);
   if (m.lab_text && ImGui::CollapsingHeader("Lab text", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(m.lab_text->c_str());
-    ImGui::PopTextWrapPos();
+    const std::string link = m.lab_text->document.draw(m.fonts);
+    if (!link.empty()) a.copied_link = link;
   }
   draw_parameters(m, a);
   draw_compare(m, a);
@@ -201,7 +269,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
     if (ImGui::Button("Screenshot (F12)")) a.screenshot = true;
     ImGui::SameLine();
     if (ImGui::Button("Fullscreen (F11)")) a.fullscreen = true;
-    ImGui::TextDisabled("Drop a .gltf/.glb on the window to open it. Mouse: left orbit, right/middle pan, wheel zoom.");
+    hint_wrapped("Drop a .gltf/.glb on the window to open it. Mouse: left drag orbits, right or middle drag pans, the wheel zooms.");
   }
   if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
   ImGui::End();
@@ -221,49 +289,48 @@ const Lab* neighbour_lab(const Lab& lab, int step) {
 
 
 std::string task_section(const std::string& markdown) {
-  std::istringstream in(markdown);
-  std::string line, out;
-  bool inside = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("#", 0) == 0) {
-      if (inside) break;
-      inside = line.find("Your task") != std::string::npos || line.find("Your part") != std::string::npos;
-      continue;
-    }
-    if (inside) out += line + "\n";
-  }
+  std::string out = markdown_section(markdown, {"Your task", "Your part"});
+  const auto first = out.find_first_not_of("\n ");
+  if (first == std::string::npos) return "";
+  out.erase(0, first);
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  return out.substr(std::min(out.size(), out.find_first_not_of("\n ")));
-}
-
-std::string reflow_markdown(const std::string& text) {
-  std::istringstream in(text);
-  std::string out, line;
-  bool joinable = false;  // the previous line was paragraph text
-  while (std::getline(in, line)) {
-    const bool blank = line.find_first_not_of(' ') == std::string::npos;
-    const bool structural = !blank && (line[0] == '#' || line[0] == '|' || line.rfind("    ", 0) == 0 ||
-                                       line.rfind("- ", 0) == 0 ||
-                                       (std::isdigit(static_cast<unsigned char>(line[0])) && line.find(". ") < 4));
-    const bool continuation = !blank && !structural && line[0] == ' ';
-    if (joinable && !blank && (!structural || continuation)) {
-      out += ' ' + line.substr(line.find_first_not_of(' '));
-    } else {
-      if (!out.empty()) out += '\n';
-      out += line;
-    }
-    joinable = !blank && line[0] != '#' && line[0] != '|' && line.rfind("    ", 0) != 0;
-  }
   return out;
 }
 
-std::string load_lab_text(const Lab& lab) {
+LabText make_lab_text(std::string markdown) {
+  LabText t;
+  t.task_markdown = task_section(markdown);
+  t.task = MarkdownDocument(t.task_markdown);
+  // The lab text without the task's body, which the panel shows at its top.
+  const auto [begin, end] = markdown_section_range(markdown, {"Your task", "Your part"});
+  t.document = MarkdownDocument(t.task_markdown.empty() ? markdown
+                                                        : markdown.substr(0, begin) + "*At the top of the panel, under Your task.*\n\n" +
+                                                              markdown.substr(end));
+  t.markdown = std::move(markdown);
+  return t;
+}
+
+LabText load_lab_text(const Lab& lab) {
   std::ifstream in(lab.text_path());
-  if (!in) return "# Lab " + std::to_string(lab.number) + " - " + lab.title + "\n\n" + lab.summary +
-                  "\n\n(This lab's text, " + lab.folder() + "/README.md, is not written yet.)";
+  if (!in)
+    return make_lab_text("# Lab " + std::to_string(lab.number) + " - " + lab.title + "\n\n" + lab.summary + "\n\n(This lab's text, `" +
+                         lab.folder() + "/README.md`, is not written yet.)\n");
   std::ostringstream s;
   s << in.rdbuf();
-  return reflow_markdown(s.str());
+  return make_lab_text(s.str());
+}
+
+const std::vector<std::pair<std::string, std::string>>& window_keys() {
+  static const std::vector<std::pair<std::string, std::string>> keys = {
+      {"0-9", "open a lab"},
+      {"N / P", "next / previous lab (also Page Down / Page Up)"},
+      {"S", "split view"},
+      {"M", "magnifier"},
+      {"H", "hide this panel (H again shows it)"},
+      {"F11", "fullscreen"},
+      {"F12", "screenshot"},
+  };
+  return keys;
 }
 
 CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene) {

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "app/bench_plot.h"
+#include "app/markdown.h"
+#include "app/ui_fonts.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/params.h"
@@ -28,6 +30,21 @@ struct CompareState {
   bool magnifier = false;
 };
 
+// A lab's text: its README.md as written (Markdown), parsed once, and its "Your task" section.
+struct LabText {
+  std::string markdown;
+  MarkdownDocument document{""};
+  std::string task_markdown;  // empty when the text has no such section
+  MarkdownDocument task{""};
+};
+
+// The Check as it runs in the window (on a worker thread): the panel shows how long it has been running.
+struct CheckProgress {
+  bool running = false;
+  double seconds = 0.0;   // since it started
+  double expected = 0.0;  // how long this lab's last check took (0: not known yet)
+};
+
 // What the panel shows; pointers may be null where a caller has nothing (headless: no settings).
 struct PanelModel {
   const Lab* lab = nullptr;
@@ -37,7 +54,14 @@ struct PanelModel {
   std::size_t triangles = 0;
   std::string scene_name;
   std::string scene_error;  // the last dropped file that could not be opened
-  const std::string* lab_text = nullptr;  // reflowed Markdown
+  const LabText* lab_text = nullptr;
+  const UiFonts* fonts = nullptr;  // null: the current font in every role
+  float ui_scale = 1.0f;           // the panel's default width and the size control follow it
+  bool resize = false;             // the scale changed: set the panel's width again
+  float text_size = 1.0f;          // the user's text size (1 = 100 %), shown by the size control
+  std::string gl_summary;          // "OpenGL 4.5 core, llvmpipe"
+  std::vector<std::string> gl_fallbacks;  // what runs differently on this context (see context.h)
+  CheckProgress check_progress;
   const CheckResult* check = nullptr;
   std::string shader_error;
   std::string status;
@@ -57,6 +81,8 @@ struct PanelActions {
   bool fullscreen = false;
   bool compare_changed = false;  // the split view's other side must be rebuilt
   bool load_bench = false;       // load BenchPanelState::path into the Speed against error window
+  std::optional<float> text_size;  // the user moved the text size control (1 = 100 %)
+  std::string copied_link;         // a link in the lab text was clicked (its target is on the clipboard)
 };
 
 PanelActions draw_lab_panel(PanelModel& model);
@@ -68,11 +94,13 @@ const Lab* neighbour_lab(const Lab& lab, int step);
 // empty when the text has none.
 std::string task_section(const std::string& markdown);
 
-// Lab texts are Markdown hard-wrapped at 100 columns; the panel wraps by itself, so join the lines of
-// each paragraph. Headings, list items, indented code and table rows keep their own lines.
-std::string reflow_markdown(const std::string& text);
-// The lab's README.md reflowed, or a line saying it has no text yet.
-std::string load_lab_text(const Lab& lab);
+// The lab's README.md, parsed, or a text saying it has none yet.
+LabText load_lab_text(const Lab& lab);
+// The same from text (tests, other sources).
+LabText make_lab_text(std::string markdown);
+
+// Every key the window takes, in the words the panel and --help use: {"0-9", "open a lab"}, ...
+const std::vector<std::pair<std::string, std::string>>& window_keys();
 
 // Runs the lab's check in the current GL context with a renderer of its own, as `shadowlab check` does.
 CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene);

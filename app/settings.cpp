@@ -123,13 +123,13 @@ nlohmann::json parse_bounded(const std::string& text, std::vector<std::string>& 
 // (with `copy`) its `text` is written there, never over an existing file. Returns the new name.
 fs::path keep_aside(const fs::path& path, const std::string& text, bool copy) {
   char stamp[32];
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
+  const std::tm local = platform::local_time(std::time(nullptr));
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  const std::string base = path.string() + ".bad-" + stamp;
+  fs::path base = path;  // appended to as a path: on Windows it stays UTF-16
+  base += std::string(".bad-") + stamp;
   for (int n = 1; n < 1000; ++n) {
-    const fs::path candidate = n == 1 ? fs::path(base) : fs::path(base + "-" + std::to_string(n));
+    fs::path candidate = base;
+    if (n > 1) candidate += "-" + std::to_string(n);
     if (copy ? platform::write_new_file(candidate, text) : platform::rename_no_replace(path, candidate)) return candidate;
   }
   throw platform::FileError(platform::FileProblem::Io, "no free name for a backup beside it");
@@ -138,10 +138,9 @@ fs::path keep_aside(const fs::path& path, const std::string& text, bool copy) {
 }  // namespace
 
 fs::path default_settings_path() {
-  if (const char* p = std::getenv("SHADOWLAB_SETTINGS"); p && *p) return p;
-  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return fs::path(x) / "shadowlab" / "settings.json";
-  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".config" / "shadowlab" / "settings.json";
-  return {};
+  if (fs::path p = platform::env_path("SHADOWLAB_SETTINGS"); !p.empty()) return p;
+  const fs::path folder = platform::user_config_folder();  // per operating system (platform.h)
+  return folder.empty() ? fs::path() : folder / "settings.json";
 }
 
 Settings Settings::load(const fs::path& path) {

@@ -1,8 +1,9 @@
 // Settings that are never lost: each lab's parameter values and the user's named presets, in one JSON
 // file with a version field.
 //
-//   file      $SHADOWLAB_SETTINGS, else $XDG_CONFIG_HOME/shadowlab/settings.json, else
-//             ~/.config/shadowlab/settings.json
+//   file      $SHADOWLAB_SETTINGS, else settings.json in the user's config folder: on Linux
+//             $XDG_CONFIG_HOME/shadowlab/, else ~/.config/shadowlab/; on macOS
+//             ~/Library/Application Support/shadowlab/; on Windows in %APPDATA%\shadowlab
 //   writing   to a temporary file of its own beside it (.settings.json.tmp-<random>, created
 //             exclusively, so two windows saving at once never share one), flushed to disk, then
 //             renamed over the old file: a reader (or the next run after a crash) sees the old file or
@@ -32,7 +33,8 @@ namespace shadowlab {
 
 constexpr int kSettingsVersion = 1;
 
-// Where settings live (see above); empty when neither SHADOWLAB_SETTINGS, XDG_CONFIG_HOME nor HOME is set.
+// Where settings live (see above); empty when neither SHADOWLAB_SETTINGS nor the variables the
+// folder is made from (XDG_CONFIG_HOME, HOME; APPDATA on Windows) are set.
 std::filesystem::path default_settings_path();
 
 class Settings {

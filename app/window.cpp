@@ -3,23 +3,28 @@
 // app/camera_input.cpp, and scripted input for tests app/input_script.cpp; this file wires them up.
 #include "app/window.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "renderer/gl.h"  // before GLFW, so GLFW does not include a GL header of its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
 
 #include "app/camera_input.h"
+#include "app/exit_codes.h"
 #include "app/headless.h"
 #include "app/input_script.h"
+#include "app/keys.h"
 #include "app/panel_lab.h"
 #include "app/settings_panel.h"
 #include "app/split_view.h"
@@ -28,7 +33,9 @@
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
+#include "renderer/platform.h"
 #include "renderer/renderer.h"
+#include "renderer/shader.h"
 #include "renderer/untrusted.h"
 
 namespace shadowlab {
@@ -42,11 +49,13 @@ constexpr std::size_t kPanelErrorBytes = 480;
 constexpr const char* kHeadlessHint =
     "headless commands work without one: shadowlab render --out DIR, shadowlab labs (see --help)";
 
-// Creates the window with the highest core profile the driver gives, 4.6 down to 3.3.
-GLFWwindow* create_window() {
+// Creates a window with the highest core profile the driver gives, 4.6 down to 3.3. A hidden one holds
+// the context the Check runs in on its worker thread. On failure GLFW's reason is kept (take_glfw_error).
+GLFWwindow* create_window(bool visible) {
   const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
   for (const auto& v : versions) {
     glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v[0]);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v[1]);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -54,10 +63,81 @@ GLFWwindow* create_window() {
 #ifndef NDEBUG
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
 #endif
-    if (GLFWwindow* w = glfwCreateWindow(1440, 860, "shadowlab", nullptr, nullptr)) return w;
+    if (GLFWwindow* w = glfwCreateWindow(visible ? 1440 : 1, visible ? 860 : 1, "shadowlab", nullptr, nullptr)) {
+      take_glfw_error();  // the versions refused before this one are not an error
+      return w;
+    }
   }
   return nullptr;
 }
+
+// The Check in the window: run_lab_check on a worker thread, in the context of a hidden window of its
+// own (created, like every window, on the main thread; made current on the worker). It shares no GL
+// objects with the view: it builds its own renderer, as `shadowlab check` does, and hands back a
+// CheckResult. The view keeps drawing meanwhile; the panel shows the time running and the last run's.
+class CheckWorker {
+ public:
+  CheckWorker() = default;
+  CheckWorker(const CheckWorker&) = delete;
+  CheckWorker& operator=(const CheckWorker&) = delete;
+  ~CheckWorker() {
+    if (thread_.joinable()) thread_.join();  // a check cannot be cancelled; closing waits for it
+    if (context_) glfwDestroyWindow(context_);
+  }
+
+  bool running() const { return thread_.joinable(); }
+  const Lab* lab() const { return lab_; }
+  double seconds() const { return glfwGetTime() - started_; }
+
+  // Starts a check; false (and `error` says why) when no context could be made for it.
+  bool start(const Lab& lab, Impl impl, const Scene& scene, std::string* error) {
+    if (running()) return false;
+    if (!context_) {
+      GLFWwindow* current = glfwGetCurrentContext();
+      context_ = create_window(false);
+      glfwMakeContextCurrent(current);
+      if (!context_) {
+        *error = "cannot create a context for the Check: " + take_glfw_error();
+        return false;
+      }
+    }
+    lab_ = &lab;
+    impl_ = impl;
+    done_ = false;
+    started_ = glfwGetTime();
+    thread_ = std::thread([this, scene] {
+      glfwMakeContextCurrent(context_);
+      try {
+        result_ = run_lab_check(*lab_, impl_, scene);
+      } catch (const std::exception& e) {
+        CheckResult r;
+        r.lab = lab_->number;
+        r.error = e.what();
+        result_ = std::move(r);
+      }
+      glFinish();
+      glfwMakeContextCurrent(nullptr);
+      done_ = true;
+    });
+    return true;
+  }
+
+  // The result once the worker has finished (the thread is joined); nothing while it runs.
+  std::optional<CheckResult> take_result() {
+    if (!running() || !done_) return std::nullopt;
+    thread_.join();
+    return std::move(result_);
+  }
+
+ private:
+  GLFWwindow* context_ = nullptr;
+  std::thread thread_;
+  std::atomic<bool> done_{false};
+  const Lab* lab_ = nullptr;
+  Impl impl_ = Impl::Exercise;
+  double started_ = 0.0;
+  std::optional<CheckResult> result_;
+};
 
 // The state of one session in the window. Plain members, no statics: the loop below owns it.
 struct App {
@@ -67,7 +147,7 @@ struct App {
   Impl impl = Impl::Exercise;
   ParamSet params;
   OrbitCamera camera;
-  std::string lab_text;
+  LabText lab_text;
   std::string status;       // last screenshot path or error
   std::string scene_error;  // the last dropped file that could not be opened
   bool screenshot_requested = false;
@@ -75,6 +155,17 @@ struct App {
   std::string screenshot_path;  // empty: a timestamped name
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
+  CheckWorker check_worker;
+  std::map<int, double> check_seconds;  // per lab, how long its last check took: the progress bar's estimate
+  // Text: fonts rasterised for the monitor's content scale and the user's size (the panel's control).
+  UiFonts fonts;
+  UiScale ui_scale;
+  float text_size = 1.0f;
+  float content_scale = 0.0f;  // what the fonts were built for; 0: not yet
+  float pixels_per_point = 0.0f;
+  bool resize_panel = false;
+  std::string gl_summary;
+  std::vector<std::string> gl_fallbacks;
   double last_poll = 0.0;
   SettingsSession settings;  // each lab's values and the user's presets, kept in the settings file
   CompareState compare;
@@ -88,7 +179,7 @@ struct App {
   void open_lab(const Lab& next) {
     if (lab) settings.leave_lab(lab->number, params);
     lab = &next;
-    check_result.reset();
+    check_result.reset();  // a check still running for the previous lab is dropped when it ends
     params = lab_params(next);
     settings.open_lab(next.number, params);
     lab_text = load_lab_text(next);
@@ -149,25 +240,57 @@ void toggle_fullscreen(App& app) {
   glfwSetWindowMonitor(app.window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-// Keys, unless ImGui wants the keyboard (typing in a field). ImGui 1.86 indexes keys by GLFW key codes.
+// Keys (the list the panel shows is window_keys()), unless ImGui wants the keyboard (typing in a field).
 void handle_keys(App& app) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12)) app.screenshot_requested = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen(app);
+  if (key_pressed(Key::F12, true)) app.screenshot_requested = true;
+  if (key_pressed(Key::F11)) toggle_fullscreen(app);
   for (int n = 0; n <= 9; ++n) {
     const Lab* lab = find_lab(n);
-    if (lab && lab != app.lab && ImGui::IsKeyPressed(GLFW_KEY_0 + n, false)) app.open_lab(*lab);
+    if (lab && lab != app.lab && digit_pressed(n)) app.open_lab(*lab);
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_N, false) || ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN, false))
-    app.open_lab(*neighbour_lab(*app.lab, +1));
-  if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_PAGE_UP, false))
-    app.open_lab(*neighbour_lab(*app.lab, -1));
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
+  if (key_pressed(Key::N) || key_pressed(Key::PageDown)) app.open_lab(*neighbour_lab(*app.lab, +1));
+  if (key_pressed(Key::P) || key_pressed(Key::PageUp)) app.open_lab(*neighbour_lab(*app.lab, -1));
+  if (key_pressed(Key::S)) {
     app.compare.split = !app.compare.split;
     app.rebuild_split();
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_M, false)) app.compare.magnifier = !app.compare.magnifier;
-  if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) app.panel_hidden = !app.panel_hidden;
+  if (key_pressed(Key::M)) app.compare.magnifier = !app.compare.magnifier;
+  if (key_pressed(Key::H)) app.panel_hidden = !app.panel_hidden;
+}
+
+// With the panel hidden, one line in the corner says how to get it back.
+void draw_hidden_hint() {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(10.0f, display.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+  if (ImGui::Begin("##panel hidden", nullptr, flags)) ImGui::TextUnformatted("Panel hidden: press H to show it");
+  ImGui::End();
+}
+
+// Fonts and style for the window's monitor and the user's text size; rebuilt (between frames) when
+// either changes, e.g. when the window moves to a monitor with another scale.
+void update_ui_scale(App& app) {
+  float sx = 1.0f, sy = 1.0f;
+  glfwGetWindowContentScale(app.window, &sx, &sy);
+  int ww = 0, wh = 0, fw = 0, fh = 0;
+  glfwGetWindowSize(app.window, &ww, &wh);
+  glfwGetFramebufferSize(app.window, &fw, &fh);
+  const float ppp = ww > 0 && fw > 0 ? static_cast<float>(fw) / static_cast<float>(ww) : 1.0f;
+  const UiScale next = plan_ui_scale(sx, ppp, app.text_size);
+  if (app.content_scale == sx && app.pixels_per_point == ppp && next.raster == app.ui_scale.raster && app.fonts.body) return;
+  app.content_scale = sx;
+  app.pixels_per_point = ppp;
+  app.ui_scale = next;
+  std::string warning;
+  app.fonts = build_ui_fonts(*ImGui::GetIO().Fonts, data_dir() / "assets" / "fonts", next.raster, &warning);
+  if (!warning.empty()) std::fprintf(stderr, "shadowlab: warning: %s\n", warning.c_str());
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  apply_ui_style(next);
+  app.resize_panel = true;
 }
 
 void draw_panel(App& app) {
@@ -180,6 +303,18 @@ void draw_panel(App& app) {
   model.scene_name = app.renderer->scene().name;
   model.scene_error = app.scene_error;
   model.lab_text = &app.lab_text;
+  model.fonts = &app.fonts;
+  model.ui_scale = app.ui_scale.style;
+  model.resize = app.resize_panel;
+  model.text_size = app.text_size;
+  model.gl_summary = app.gl_summary;
+  model.gl_fallbacks = app.gl_fallbacks;
+  if (app.check_worker.running() && app.check_worker.lab() == app.lab) {
+    model.check_progress.running = true;
+    model.check_progress.seconds = app.check_worker.seconds();
+    const auto last = app.check_seconds.find(app.lab->number);
+    model.check_progress.expected = last == app.check_seconds.end() ? 0.0 : last->second;
+  }
   model.check = app.check_result ? &*app.check_result : nullptr;
   model.shader_error = app.renderer->shader_error();
   model.status = app.status;
@@ -189,6 +324,9 @@ void draw_panel(App& app) {
   model.bench_plots = app.bench_plots ? &*app.bench_plots : nullptr;
   const bool bench_was_open = app.bench.open;
   const PanelActions actions = draw_lab_panel(model);
+  app.resize_panel = false;
+  if (actions.text_size) app.text_size = *actions.text_size;  // fonts rebuilt before the next frame
+  if (!actions.copied_link.empty()) app.status = "copied to the clipboard: " + actions.copied_link;
   if (actions.load_bench || (app.bench.open && !bench_was_open && !app.bench_plots && app.bench.error.empty()))
     app.load_bench();
   if (actions.open_lab && actions.open_lab != app.lab) app.open_lab(*actions.open_lab);
@@ -213,8 +351,8 @@ void save_screenshot(App& app, int width, int height) {
   std::string path = app.screenshot_path;
   if (path.empty()) {
     char name[64];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    const std::tm now = platform::local_time(std::time(nullptr));
+    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", &now);
     path = name;
   }
   try {
@@ -265,6 +403,12 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       glfwWaitEventsTimeout(0.1);
       continue;
     }
+    update_ui_scale(app);
+    if (auto result = app.check_worker.take_result()) {
+      const Lab* checked = app.check_worker.lab();
+      app.check_seconds[result->lab] = result->seconds;
+      if (checked == app.lab && result->impl == app.impl) app.check_result = std::move(result);
+    }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -278,8 +422,11 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       app.settings.autosave(app.lab->number, app.params);
     }
     if (!app.panel_hidden) draw_panel(app);
+    else draw_hidden_hint();
+    if (script.take_check_request()) app.check_requested = true;
     if (app.check_requested) {
-      app.check_result = run_lab_check(*app.lab, app.impl, app.renderer->scene());
+      std::string error;
+      if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), &error)) app.status = error;
       app.check_requested = false;
     }
     render_view(app, width, height);
@@ -308,38 +455,40 @@ int run_window(const WindowOptions& options) {
   const Lab* lab = find_lab(options.lab);
   if (!lab) {
     std::fprintf(stderr, "shadowlab: no lab %d (see `shadowlab labs`)\n", options.lab);
-    return 2;
+    return kExitUsage;
   }
   std::optional<InputScript> script;
   try {
     script.emplace(options.script);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", e.what());
-    return 2;
+    return kExitUsage;
   }
   Scene scene;
   try {
     scene = load_scene_or_default(options.scene_file);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
-    return 1;
+    return kExitUsage;
   }
   std::optional<BenchPlots> bench;  // asked for on the command line: read it now, or say why not
   try {
     if (!options.bench_file.empty()) bench = load_bench_plots(options.bench_file);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", e.what());
-    return 1;
+    return kExitUsage;
   }
+  capture_glfw_errors();
   if (!glfwInit()) {
-    std::fprintf(stderr, "shadowlab: no display to open a window on (DISPLAY is not set); %s\n", kHeadlessHint);
-    return 1;
+    std::fprintf(stderr, "shadowlab: cannot open a window: %s; %s\n", take_glfw_error().c_str(), kHeadlessHint);
+    return kExitRuntime;
   }
-  GLFWwindow* window = create_window();
+  GLFWwindow* window = create_window(true);
   if (!window) {
-    std::fprintf(stderr, "shadowlab: cannot create an OpenGL 3.3 core window; %s\n", kHeadlessHint);
+    std::fprintf(stderr, "shadowlab: cannot create an OpenGL 3.3 core window: %s; %s\n", take_glfw_error().c_str(),
+                 kHeadlessHint);
     glfwTerminate();
-    return 1;
+    return kExitRuntime;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
@@ -350,7 +499,6 @@ int run_window(const WindowOptions& options) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // window layout is not worth a file in the user's folder
-  ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -358,6 +506,8 @@ int run_window(const WindowOptions& options) {
   try {
     App app;
     app.window = window;
+    app.gl_summary = gl_summary();
+    app.gl_fallbacks = gl_fallbacks();
     app.renderer = std::make_unique<Renderer>();
     app.renderer->set_scene(scene);
     app.camera = OrbitCamera::framing(scene.bounds());
@@ -380,7 +530,7 @@ int run_window(const WindowOptions& options) {
     app.settings.leave_lab(app.lab->number, app.params);  // on exit
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
-    exit_code = 1;
+    exit_code = kExitRuntime;
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

@@ -12,7 +12,15 @@
 #include <string>
 #include <thread>
 
+// Embree 3 or 4 (cmake/Dependencies.cmake finds either; SHADOWLAB_EMBREE_MAJOR says which). The two
+// differ here only in the header's folder, how one shadow ray is cast (below: cast_occluded) and the
+// error codes Embree 4 added (error_name's default). Embree 4's side is written from its documented API
+// (rtcOccluded1(3embree4): the arguments struct is optional) and not built here.
+#if SHADOWLAB_EMBREE_MAJOR >= 4
+#include <embree4/rtcore.h>
+#else
 #include <embree3/rtcore.h>
+#endif
 
 namespace shadowlab {
 
@@ -35,8 +43,21 @@ const char* error_name(RTCError code) {
     case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
     case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
     case RTC_ERROR_CANCELLED: return "cancelled";
+    default: break;  // Embree 4 has more
   }
   return "unrecognised error";
+}
+
+// The seam between Embree 3 and 4: one occlusion query for one ray. Embree 3 takes an intersection
+// context; Embree 4 replaced it with an optional arguments struct whose defaults are what we want.
+void cast_occluded(RTCScene scene, RTCRay& ray) {
+#if SHADOWLAB_EMBREE_MAJOR >= 4
+  rtcOccluded1(scene, &ray, nullptr);
+#else
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1(scene, &context, &ray);
+#endif
 }
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -90,8 +111,6 @@ struct Oracle::Impl {
 
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const {
     if (!(max_distance > 0.0f)) return false;  // also NaN
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay ray{};
     ray.org_x = origin.x;
     ray.org_y = origin.y;
@@ -105,7 +124,7 @@ struct Oracle::Impl {
     ray.mask = 0xFFFFFFFFu;
     ray.id = 0;
     ray.flags = 0;
-    rtcOccluded1(scene, &context, &ray);
+    cast_occluded(scene, ray);
     return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit and leaves it alone otherwise
   }
 };

@@ -1,4 +1,4 @@
-// The oracle: exact hard-shadow visibility by ray casting on the CPU (Embree 3).
+// The oracle: exact hard-shadow visibility by ray casting on the CPU (Embree 3 or 4).
 //
 // Input is what the camera sees (world position and normal per pixel, read back from the renderer's
 // G-buffer) and the light; output is, per pixel, whether the point is truly lit, and whether it lies in

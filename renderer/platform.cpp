@@ -25,6 +25,13 @@
 #include <sstream>
 #endif
 
+#include <cstdlib>
+#if defined(_WIN32)
+#include <io.h>  // _isatty, _fileno
+#else
+#include <unistd.h>  // isatty
+#endif
+
 namespace shadowlab::platform {
 
 namespace fs = std::filesystem;
@@ -360,6 +367,16 @@ namespace {
 
 int process_id() { return 0; }  // the random part alone keeps names apart
 
+// Creates `path` for writing, failing if anything has that name (C11's "x"; MSVC's CRT has it too).
+// On Windows the path goes as UTF-16, never through the ANSI code page.
+std::FILE* open_new(const fs::path& path) {
+#if defined(_WIN32)
+  return _wfopen(path.c_str(), L"wbx");
+#else
+  return std::fopen(path.c_str(), "wbx");
+#endif
+}
+
 [[noreturn]] void fail_ec(const std::error_code& ec) {
   throw FileError(ec == std::errc::no_such_file_or_directory ? FileProblem::NotFound
                   : ec == std::errc::permission_denied       ? FileProblem::Denied
@@ -423,7 +440,7 @@ void write_file_atomic(const fs::path& target, std::string_view bytes, bool,
   if (name.empty() || name == "." || name == "..") throw FileError(FileProblem::NotRegular, "names a folder, not a file");
   const fs::path tmp = target.parent_path() / temporary_name(name);
   {
-    std::FILE* f = std::fopen(tmp.string().c_str(), "wbx");  // C11 exclusive create
+    std::FILE* f = open_new(tmp);
     if (!f) throw FileError(FileProblem::Io, "cannot create a temporary file");
     const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
     if (std::fclose(f) != 0 || !ok) {
@@ -443,7 +460,7 @@ void write_file_atomic(const fs::path& target, std::string_view bytes, bool,
 }
 
 bool write_new_file(const fs::path& path, std::string_view bytes) {
-  std::FILE* f = std::fopen(path.string().c_str(), "wbx");
+  std::FILE* f = open_new(path);
   if (!f) {
     std::error_code ec;
     if (fs::exists(fs::symlink_status(path, ec))) return false;
@@ -472,5 +489,48 @@ bool rename_no_replace(const fs::path& from, const fs::path& to) {
 }
 
 #endif
+
+fs::path env_path(const char* name) {
+#if defined(_WIN32)
+  const std::wstring wide(name, name + std::strlen(name));  // our variable names are ASCII
+  const wchar_t* value = _wgetenv(wide.c_str());
+  return value && *value ? fs::path(value) : fs::path();
+#else
+  const char* value = std::getenv(name);
+  return value && *value ? fs::path(value) : fs::path();
+#endif
+}
+
+fs::path user_config_folder() {
+#if defined(_WIN32)
+  const fs::path appdata = env_path("APPDATA");  // the roaming profile: C:\Users\NAME\AppData\Roaming
+  return appdata.empty() ? fs::path() : appdata / "shadowlab";
+#elif defined(__APPLE__)
+  const fs::path home = env_path("HOME");
+  return home.empty() ? fs::path() : home / "Library" / "Application Support" / "shadowlab";
+#else
+  if (const fs::path xdg = env_path("XDG_CONFIG_HOME"); !xdg.empty()) return xdg / "shadowlab";
+  const fs::path home = env_path("HOME");
+  return home.empty() ? fs::path() : home / ".config" / "shadowlab";
+#endif
+}
+
+std::tm local_time(std::time_t t) {
+  std::tm out{};
+#if defined(_WIN32)
+  localtime_s(&out, &t);
+#else
+  localtime_r(&t, &out);
+#endif
+  return out;
+}
+
+bool is_terminal(std::FILE* stream) {
+#if defined(_WIN32)
+  return _isatty(_fileno(stream)) != 0;
+#else
+  return ::isatty(::fileno(stream)) != 0;
+#endif
+}
 
 }  // namespace shadowlab::platform

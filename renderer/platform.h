@@ -12,9 +12,15 @@
 // Elsewhere (native Windows) a portable fallback with std::filesystem does the same checks by path:
 // the same refusals, but a link swapped between check and open is not caught, and output folders are
 // not locked. Define SHADOWLAB_PORTABLE_PLATFORM to build the fallback on POSIX (it compiles in CI).
+// Paths reach the operating system as std::filesystem paths or, on Windows, as UTF-16 (_wfopen,
+// _wgetenv), so a user folder outside the ANSI code page works.
+//
+// Also here: where per-user settings live, local time, and whether a stream is a terminal.
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -88,5 +94,19 @@ bool rename_no_replace(const std::filesystem::path& from, const std::filesystem:
 // Writes `bytes` to a new file `path` that must not exist yet (created exclusively; a link there is not
 // followed): returns false, writing nothing, when something already has that name. Throws FileError.
 bool write_new_file(const std::filesystem::path& path, std::string_view bytes);
+
+// An environment variable as a path (on Windows read as UTF-16); empty when unset or empty.
+std::filesystem::path env_path(const char* name);
+
+// The per-user folder for shadowlab's settings: %APPDATA%\shadowlab on Windows,
+// ~/Library/Application Support/shadowlab on macOS, $XDG_CONFIG_HOME/shadowlab or ~/.config/shadowlab
+// elsewhere. Empty when the variables it is made from are not set.
+std::filesystem::path user_config_folder();
+
+// Local time, thread-safe (localtime_r; localtime_s on Windows).
+std::tm local_time(std::time_t t);
+
+// Whether `stream` is a terminal: progress lines use carriage returns only there.
+bool is_terminal(std::FILE* stream);
 
 }  // namespace shadowlab::platform

@@ -13,7 +13,7 @@ namespace shadowlab {
 namespace fs = std::filesystem;
 
 fs::path data_dir() {
-  if (const char* env = std::getenv("SHADOWLAB_DATA_DIR"); env && *env) return fs::path(env);
+  if (fs::path env = platform::env_path("SHADOWLAB_DATA_DIR"); !env.empty()) return env;
   return fs::path(SHADOWLAB_DATA_DIR);
 }
 

@@ -122,10 +122,101 @@ PY
     grep -q "Basic shadow map" "$tmp/labs" || fail "lab 0 not listed"
     grep -q -- "--set shadow.bias=" "$tmp/labs" || fail "parameters not listed"
     ;;
-  no_display)
-    env -u DISPLAY -u WAYLAND_DISPLAY "$bin" --frames 1 >"$tmp/out" 2>"$tmp/err" && fail "window opened without a display"
+  no_display)  # one line: GLFW's own reason, and the headless commands; exit 3 (runtime: no window)
+    env -u DISPLAY -u WAYLAND_DISPLAY "$bin" --frames 1 >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 3 ] || fail "no display: exit $rc, expected 3"
     [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line: $(cat "$tmp/err")"
     grep -q "shadowlab render" "$tmp/err" || fail "does not name the headless commands"
+    grep -q "GLFW error" "$tmp/err" || fail "does not say GLFW's reason: $(cat "$tmp/err")"
+    ;;
+  version)  # --version: the project's version (from CMakeLists.txt) and what it was built with; exit 0
+    want="$(sed -n 's/^project(shadowlab VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")"
+    [ -n "$want" ] || fail "no version in CMakeLists.txt"
+    "$bin" --version >"$tmp/out" 2>"$tmp/err" || fail "--version: exit $?"
+    [ "$(head -n 1 "$tmp/out")" = "shadowlab $want" ] || fail "first line '$(head -n 1 "$tmp/out")', expected 'shadowlab $want'"
+    grep -q "Dear ImGui 1\.[0-9]*.*GLFW 3\..*Embree [34]\." "$tmp/out" || fail "libraries not named: $(cat "$tmp/out")"
+    ;;
+  help_text)  # --help: defaults, environment, exit codes, window keys, and an example per command
+    "$bin" --help >"$tmp/main" || fail "--help: exit $?"
+    for want in "Exit codes" "  2  usage" "  3  runtime error" SHADOWLAB_SETTINGS SHADOWLAB_DATA_DIR MESA_GL_VERSION_OVERRIDE \
+                "Window keys" "hide this panel (H again shows it)" "Examples" "--version"; do
+      grep -qF -- "$want" "$tmp/main" || fail "--help lacks '$want'"
+    done
+    for cmd in render check bench labs; do
+      "$bin" "$cmd" --help >"$tmp/$cmd" || fail "$cmd --help: exit $?"
+      grep -q "^Example: shadowlab $cmd" "$tmp/$cmd" || fail "$cmd --help has no example"
+      grep -q "^Exit:" "$tmp/$cmd" || fail "$cmd --help has no exit codes"
+    done
+    grep -qF "1280" "$tmp/render" || fail "render --help does not show the default width"
+    grep -qF "exercise" "$tmp/check" || fail "check --help does not show the default implementation"
+    ;;
+  exit_codes)  # one scheme for every command: 0 ok, 1 check failed, 2 usage, 3 runtime error
+    touch "$tmp/file"
+    mkdir -p "$tmp/data" && cp -r "$src/shaders" "$src/labs" "$tmp/data/" && rm "$tmp/data/shaders/lit.frag"
+    code() {  # code WANT ARGS...: the exit code of shadowlab ARGS
+      local want="$1"; shift
+      "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+      [ "$rc" -eq "$want" ] || fail "exit $rc, expected $want: ${*#$bin} ($(head -c 300 "$tmp/err"))"
+      grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: ${*#$bin}"
+      return 0
+    }
+    code 0 "$bin" --help
+    code 0 "$bin" --version
+    code 0 "$bin" labs
+    code 2 "$bin" --frobnicate
+    code 2 "$bin" labs --frobnicate
+    code 2 "$bin" nosuchcommand
+    code 2 "$bin" render
+    code 2 "$bin" render --out "$tmp/o" --frobnicate
+    code 2 "$bin" render --out "$tmp/o" --width 5
+    code 2 "$bin" render --out "$tmp/o" --lab 42
+    code 2 "$bin" render --out "$tmp/o" --set shadow.bais=1
+    code 2 "$bin" render --out "$tmp/o" --scene "$tmp/none.gltf"
+    code 2 "$bin" render --out "$tmp/file/sub"
+    code 2 "$bin" render --out "$tmp/o" --ui-scale 2
+    code 2 "$bin" check --lab 99
+    code 2 "$bin" check --impl nope
+    code 2 "$bin" check --lab 1 --set shadow.bais=1
+    code 2 "$bin" bench --out "$tmp/file/sub"
+    code 2 "$bin" bench
+    code 2 "$bin" --lab 42 --frames 1
+    code 2 "$bin" --script "key:nokey"
+    code 2 "$bin" --scene "$tmp/none.gltf" --frames 1
+    code 0 "$bin" check --lab 1 --impl solution
+    code 1 "$bin" check --lab 1 --impl exercise
+    code 3 env SHADOWLAB_DATA_DIR="$tmp/data" "$bin" check --lab 1
+    code 3 env SHADOWLAB_DATA_DIR="$tmp/data" "$bin" render --out "$tmp/o"
+    code 3 env -u DISPLAY -u WAYLAND_DISPLAY "$bin" --frames 1
+    # No OpenGL at all: glvnd finds no EGL vendor, and without a display no hidden window either.
+    code 3 env -u DISPLAY -u WAYLAND_DISPLAY __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "$bin" render --out "$tmp/o"
+    grep -q "cannot create a headless OpenGL 3.3 core context" "$tmp/err" || fail "no context: $(cat "$tmp/err")"
+    code 3 env -u DISPLAY -u WAYLAND_DISPLAY __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "$bin" check --lab 1
+    ;;
+  floor_gl41|floor_gl33)  # the labs at macOS's OpenGL (4.1 core, no compute) and the course's floor (3.3 core)
+    v="${case_name#floor_gl}"; v="${v:0:1}.${v:1:1}"
+    export MESA_GL_VERSION_OVERRIDE="$v" MESA_GLSL_VERSION_OVERRIDE="${v/./}0"
+    "$bin" render --out "$tmp/r" --width 64 --height 64 >/dev/null || fail "render at GL $v failed"
+    python3 - "$tmp/r/render.json" "$v" <<'PY' || fail "the context is not capped at $v"
+import json, sys
+gl = json.load(open(sys.argv[1]))["gl"]
+want = sys.argv[2]
+print("context:", gl["version"], "fallbacks:", gl["fallbacks"])
+assert f'{gl["major"]}.{gl["minor"]}' == want, gl
+assert any("compute" in f for f in gl["fallbacks"]), gl  # below 4.3: no compute shaders, and it says so
+PY
+    "$bin" check --lab all --impl solution --json "$tmp/solution.json" >"$tmp/out" 2>"$tmp/err" \
+      || fail "a solution fails at GL $v: $(grep -v '^    ok' "$tmp/out" | head -40) $(cat "$tmp/err")"
+    "$bin" check --lab all --impl exercise --json "$tmp/exercise.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "the stock exercises at GL $v: exit $rc, expected 1 (failed, not broken): $(cat "$tmp/err")"
+    python3 - "$tmp/solution.json" "$tmp/exercise.json" <<'PY' || fail "verdicts at GL $v"
+import json, sys
+sol = json.load(open(sys.argv[1]))["labs"]
+ex = json.load(open(sys.argv[2]))["labs"]
+assert len(sol) == len(ex) == 10, (len(sol), len(ex))
+assert all(r["status"] == "passed" for r in sol), [(r["lab"], r["status"]) for r in sol]
+assert all(r["status"] != "grader_error" for r in ex), [(r["lab"], r["status"]) for r in ex]
+print("solutions passed:", len(sol), "exercises failed:", sum(r["status"] != "passed" for r in ex))
+PY
     ;;
   window_xvfb)
     command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
@@ -293,6 +384,9 @@ PY
     elapsed=$(( $(date +%s) - start ))
     [ "$elapsed" -lt 180 ] || fail "bench --quick took ${elapsed} s (limit 180)"
     for f in bench.csv bench.json pareto.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
+    # stderr is a file here, not a terminal: progress lines end in newlines, never carriage returns.
+    grep -q $'\r' "$tmp/err" && fail "carriage returns in a log"
+    grep -q '^\[[0-9]*/[0-9]*\] ' "$tmp/err" || fail "no progress lines: $(head -5 "$tmp/err")"
     python3 - "$tmp/bench" <<'PY' || fail "bench output incomplete"
 import csv, json, sys, os
 d = sys.argv[1]
@@ -350,19 +444,48 @@ print("divider rows:", line_split, line_single)
 assert line_split > 0.9 * len(range(100, h - 100, 4)) and line_single < line_split / 2, "no divider"
 PY
     ;;
-  window_hide_panel)  # H hides the panel (no ImGui window is built) and shows it again
+  window_hide_panel)  # H hides the panel (no ImGui window is built), a corner line says how to get it back, H shows it
     png_reader
     window --script "frames:3,screenshot:$tmp/shown.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,frames:3,screenshot:$tmp/again.png"
     python3 - "$tmp" <<'PY' || fail "H did not hide and restore the panel"
 import sys
 sys.path.insert(0, sys.argv[1])
 from png_read import load, differing
+w, h, _ = load(f"{sys.argv[1]}/shown.png")
 r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("shown", "hidden", "again")}
 stats = {"panel hidden/shown": differing(r["hidden"], r["shown"], 20, 60, 430, 400),
-         "panel again/shown": differing(r["again"], r["shown"], 20, 60, 430, 400)}
+         "panel again/shown": differing(r["again"], r["shown"], 20, 60, 430, 400),
+         "hint hidden/again": differing(r["hidden"], r["again"], 12, h - 34, 250, h - 14, step=1)}
 print(stats)
 assert stats["panel hidden/shown"] > 0.2, "H did not hide the panel"
 assert stats["panel again/shown"] < 0.01, "H again did not bring the panel back"
+assert stats["hint hidden/again"] > 0.03, "no 'press H' line in the corner while the panel is hidden"
+PY
+    ;;
+  window_check_async)  # Check runs on a worker thread: the window keeps drawing, with a progress bar, then the result
+    png_reader
+    window --lab 5 --script "frames:3,screenshot:$tmp/before.png,check,frames:2,screenshot:$tmp/running.png,frames:2,screenshot:$tmp/running2.png,wait:12,frames:3,screenshot:$tmp/done.png"
+    python3 - "$tmp" <<'PY' || fail "the Check did not run alongside the frames"
+import os, sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load
+d = sys.argv[1]
+r = {n: load(f"{d}/{n}.png")[2] for n in ("before", "running", "running2", "done")}
+# ImGui's progress bar fill (PlotHistogram, dark style: 230, 179, 0) in the panel; FAIL lines are red.
+bar = lambda rows: sum(1 for y in range(20, 700, 2) for x in range(20, 430, 2)
+                       if rows[y][4 * x] > 200 and 150 < rows[y][4 * x + 1] < 200 and rows[y][4 * x + 2] < 40)
+red = lambda rows: sum(1 for y in range(20, 840, 2) for x in range(20, 430, 2)
+                       if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
+t = {n: os.path.getmtime(f"{d}/{n}.png") for n in r}
+stats = {"bar before": bar(r["before"]), "bar running": bar(r["running"]), "bar running2": bar(r["running2"]),
+         "bar done": bar(r["done"]), "red before": red(r["before"]), "red done": red(r["done"]),
+         "seconds running->running2": round(t["running2"] - t["running"], 2)}
+print(stats)
+assert stats["bar before"] == 0 and stats["bar done"] == 0, "a progress bar outside the check"
+assert stats["bar running"] > 20 and stats["bar running2"] > 20, "no progress bar while the check runs"
+# Two frames while lab 5's check (about 4 s) runs take far less than the check: the loop is not blocked.
+assert stats["seconds running->running2"] < 2.0, "frames stalled during the check"
+assert stats["red done"] > stats["red before"] + 20, "the result (the stock exercise's FAILs) is not shown"
 PY
     ;;
   window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size
@@ -402,21 +525,21 @@ assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
 PY
     ;;
   window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
-  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words
+  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words (as tall as the window)
     png_reader
-    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 600 >/dev/null || fail "render failed"
-    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 600 >/dev/null || fail "render --panel failed"
+    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 900 >/dev/null || fail "render failed"
+    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 900 >/dev/null || fail "render --panel failed"
     python3 - "$tmp" <<'PY' || fail "panel not in final.png"
 import sys
 sys.path.insert(0, sys.argv[1])
 from png_read import load, differing
 w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
 w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
-assert (w, h) == (w2, h2) == (960, 600)
-inside = differing(plain, panel, 20, 40, 420, 560)
-outside = differing(plain, panel, 460, 60, 940, 560)
+assert (w, h) == (w2, h2) == (960, 900)
+inside = differing(plain, panel, 20, 40, 420, 860)
+outside = differing(plain, panel, 460, 60, 940, 860)
 # The failed check's FAIL lines are red text.
-red = sum(1 for y in range(20, 580) for x in range(20, 430)
+red = sum(1 for y in range(20, 880) for x in range(20, 430)
           if panel[y][4 * x] > 200 and panel[y][4 * x + 1] < 150 and panel[y][4 * x + 2] < 140)
 print("panel region differs:", inside, "view region:", outside, "red pixels:", red)
 assert inside > 0.3 and outside < 0.02 and red > 100
@@ -487,7 +610,8 @@ PY
       timeout 60 /usr/bin/time -f "%e %M" -o "$tmp/time" "$bin" render --out "$tmp/o" --width 64 --height 64 \
         --scene "$file" >"$tmp/out" 2>"$tmp/err" </dev/null
       rc=$?
-      [ "$rc" -eq 1 ] || fail "$name: exit $rc (1 expected): $(head -c 600 "$tmp/err")"
+      # Exit 2: a file named on the command line that is invalid is a usage error (app/exit_codes.h).
+      [ "$rc" -eq 2 ] || fail "$name: exit $rc (2 expected): $(head -c 600 "$tmp/err")"
       grep -qF -- "$mention" "$tmp/err" || fail "$name: stderr lacks '$mention': $(head -c 600 "$tmp/err")"
       grep -qF -- "$file" "$tmp/err" || fail "$name: the file is not named: $(head -c 600 "$tmp/err")"
       one_line
@@ -531,11 +655,11 @@ PY
   bench_fifo)  # issue 18: --bench given a FIFO waited forever (render --panel and the window)
     mkfifo "$tmp/bench.json"
     timeout 30 "$bin" render --panel --bench "$tmp/bench.json" --out "$tmp/o" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    [ "$rc" -eq 1 ] || fail "render --panel --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    [ "$rc" -eq 2 ] || fail "render --panel --bench FIFO: exit $rc (2, usage, expected): $(cat "$tmp/err")"
     grep -qF "bench.json: cannot open the file: is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
     command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
     timeout 60 xvfb-run -a "$bin" --bench "$tmp/bench.json" --frames 2 >"$tmp/out" 2>"$tmp/err"; rc=$?
-    [ "$rc" -eq 1 ] || fail "window --bench FIFO: exit $rc: $(cat "$tmp/err")"
+    [ "$rc" -eq 2 ] || fail "window --bench FIFO: exit $rc (2, usage, expected): $(cat "$tmp/err")"
     grep -qF "is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
     ;;
   window_drop_hostile)  # issue 18: a dropped model with a huge or hostile error text: no abort, bounded panel text

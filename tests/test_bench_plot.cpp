@@ -2,7 +2,9 @@
 // gives, and the plot drawn through a bare ImGui context (no window, no GL) with its labels apart.
 #include <gtest/gtest.h>
 
-#include <sys/stat.h>
+#ifndef _WIN32
+#include <sys/stat.h>  // mkfifo
+#endif
 
 #include <cstdio>
 #include <filesystem>
@@ -89,9 +91,11 @@ TEST_F(BenchFiles, ErrorsNameTheFileAndTheProblem) {
   const fs::path missing = dir / "none.json";
   EXPECT_EQ(error_of(missing), missing.string() + ": cannot open the file: No such file or directory");
   // Issue 18: a FIFO made --bench wait forever; refused unopened. Nesting is bounded before parsing.
+#ifndef _WIN32  // no FIFOs on native Windows
   const fs::path fifo = dir / "fifo.json";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(error_of(fifo), fifo.string() + ": cannot open the file: is a FIFO, not a regular file");
+#endif
   const fs::path deep = write("deep.json", "{\"points\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}");
   EXPECT_NE(error_of(deep).find("deep.json: not valid JSON (the JSON nests arrays and objects deeper than 64 levels)"),
             std::string::npos)

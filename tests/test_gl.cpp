@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "renderer/gl_objects.h"
 #include "renderer/gltf_loader.h"
@@ -157,7 +158,7 @@ class ShaderErrorTest : public GlTest {
  protected:
   void SetUp() override {
     GlTest::SetUp();
-    dir = fs::temp_directory_path() / ("shadowlab-shader-test-" + std::to_string(::getpid()));
+    dir = fs::temp_directory_path() / ("shadowlab-shader-test-" + std::to_string(std::random_device{}()));
     fs::create_directories(dir);
   }
   void TearDown() override { fs::remove_all(dir); }

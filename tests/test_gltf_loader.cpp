@@ -2,7 +2,6 @@
 // and small files made here for one defect or feature each.
 #include "renderer/gltf_loader.h"
 
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>

@@ -2,10 +2,9 @@
 // temporary folder per test.
 #pragma once
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -24,13 +23,13 @@ inline void write_all(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
 }
 
-// dir_: a fresh folder under the system's temporary folder, named after the process and the test,
+// dir_: a fresh folder under the system's temporary folder, named after the test and a random number,
 // removed after the test.
 class TempDirTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("shadowlab_" + std::to_string(::getpid()) + "_" +
+           ("shadowlab_" + std::to_string(std::random_device{}()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(dir_);
