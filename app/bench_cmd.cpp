@@ -18,7 +18,7 @@
 #include "app/panel_lab.h"
 #include "app/bench_plot.h"
 #include "labs/check.h"
-#include "renderer/blur_bench.h"
+#include "app/bench_figures.h"
 #include "renderer/context.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
@@ -30,13 +30,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A technique is a lab's solution with some parameters set: the benchmark composes what the labs teach.
+// A technique is a lab's solution with some parameters set (each lab declares its own, Lab::bench): the
+// benchmark composes what the labs teach.
 struct Technique {
-  std::string name;   // "hard", "vsm r4", "pcf 5x5", ...
-  std::string family; // colour group in the plot
-  int lab = 1;
-  std::vector<std::pair<std::string, std::string>> sets;
-  bool uses_map = true;  // false: no shadow map (shadow volumes), measured once per scene, map size 0
+  const Lab* lab = nullptr;
+  BenchTechnique entry;
+  std::string family;  // colour group in the plot: the entry's, with the lab's number
 };
 
 struct BenchScene {
@@ -69,28 +68,21 @@ FrameRequest bench_request(const Bounds& view) {
   return request;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+std::vector<Technique> techniques(bool quick) {
+  std::vector<Technique> out;
+  for (const auto& lab : all_labs())
+    for (const auto& entry : lab.bench)
+      if (entry.quick || !quick) out.push_back({&lab, entry, entry.family + " (lab " + std::to_string(lab.number) + ")"});
+  return out;
 }
 
-std::vector<Technique> techniques(bool quick) {
-  std::vector<Technique> out = {{"hard", "hard (lab 1)", 1, {}}};
-  // PCF kernels, when the PCF lab exists (its parameter names the kernel sizes).
-  if (const Lab* pcf = find_lab(6)) {
-    const ParamSet p = lab_params(*pcf);
-    if (const ParamSpec* k = p.find("pcf.kernel")) {
-      for (const auto& choice : k->choices) out.push_back({"pcf " + choice, "PCF (lab 6)", 6, {{"pcf.kernel", choice}}});
-    }
-  }
-  const std::vector<int> radii = quick ? std::vector<int>{0, 2, 4} : std::vector<int>{0, 1, 2, 4, 8};
-  for (int r : radii)
-    out.push_back({"vsm r" + std::to_string(r), "VSM (lab 4/5)", 4, {{"vsm.blur_radius", std::to_string(r)}}});
-  // Stencil shadow volumes: exact hard shadows on closed meshes, the GPU reference (no map to size).
-  if (find_lab(9)) out.push_back({"volumes", "shadow volumes (lab 9)", 9, {{"volume.method", "z-fail"}}, false});
-  return out;
+// The lab the skipping, overlay and blur figures use: the first whose solution stores moments and
+// declares a blur (the most a skipped shadow update saves).
+const Lab& blurred_moments_lab() {
+  for (const auto& lab : all_labs())
+    if (lab.hooks(Impl::Solution).technique == ShadowTechnique::Moments && lab_params(lab).find("vsm.blur_radius"))
+      return lab;
+  throw std::runtime_error("no lab stores blurred moments: the bench's skipping, overlay and blur figures need one");
 }
 
 std::vector<BenchScene> scenes(const std::string& scene_file) {
@@ -113,16 +105,16 @@ std::vector<BenchScene> scenes(const std::string& scene_file) {
 
 BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t, const BenchScene& s, int map_size,
                    int frames) {
-  const Lab& lab = *find_lab(t.lab);
+  const Lab& lab = *t.lab;
   ParamSet params = lab_params(lab);
   for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
-  for (const auto& [k, v] : t.sets) params.set_from_string(k, v);
+  for (const auto& [k, v] : t.entry.sets) params.set_from_string(k, v);
   if (map_size > 0) params.set_from_string("shadow.map_size", std::to_string(map_size));
   params.set("view.debug_quad", 0.0);
-  if (!renderer.set_lab(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
+  if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
   FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
 
-  BenchPoint point{t.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
+  BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<double> cpu_ms;
   for (int frame = -1; frame < frames; ++frame) {  // frame -1 warms up (shader variants, allocations)
@@ -156,11 +148,11 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
 // wall time of the whole render() call (every pass is finished inside it), so the skipping's own
 // bookkeeping counts too.
 nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int frames) {
-  const Lab& lab = *find_lab(4);  // VSM with a blur: the most a skipped shadow update saves
+  const Lab& lab = blurred_moments_lab();
   ParamSet params = lab_params(lab);
   params.set_from_string("vsm.blur_radius", "4");
   params.set("view.debug_quad", 0.0);
-  renderer.set_lab(lab.hooks(Impl::Solution));
+  renderer.set_features(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
   FrameRequest request = bench_request(scene.bounds());
   auto run = [&](bool force) {
@@ -193,8 +185,8 @@ nlohmann::json measure_skipping(Renderer& renderer, const Scene& scene, int fram
 // offscreen building and drawing it (3 layout frames + 1 draw + a read-back per call, as `render --panel`
 // does) against the same call with no window in it.
 nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int frames) {
-  const Lab& lab = *find_lab(4);
-  renderer.set_lab(lab.hooks(Impl::Solution));
+  const Lab& lab = blurred_moments_lab();
+  renderer.set_features(lab.hooks(Impl::Solution));
   renderer.set_scene(scene);
   FrameRequest request = bench_request(scene.bounds());
   auto pass_median = [&](ParamSet params, const char* name, long* present) {
@@ -265,6 +257,69 @@ nlohmann::json blur_json(const std::vector<BlurTiming>& rows) {
   return out;
 }
 
+// Per method and radius: each direction's time, the total against the taught blur's, the moments' distance.
+void print_blur_methods(const std::vector<BlurTiming>& rows) {
+  for (const auto& b : rows) {
+    const auto taught = std::find_if(rows.begin(), rows.end(), [&](const BlurTiming& t) {
+      return t.method == "separable" && t.radius == b.radius && t.format == b.format;
+    });
+    std::printf("blur %s %4d r%-2d %-9s x %7.2f  y %7.2f  total %7.2f ms = %.2fx the taught blur, max |d| %.1e\n",
+                b.format.c_str(), b.map_size, b.radius, b.method.c_str(), b.ms_x, b.ms_y, b.ms_total,
+                taught->ms_total / b.ms_total, b.max_abs_diff_vs_separable);
+  }
+}
+
+void print_technique_passes(const std::vector<TechniquePasses>& rows) {
+  for (const auto& r : rows) {
+    std::printf("passes, %-24s", r.name.c_str());
+    for (const auto& [name, ms] : r.pass_ms) std::printf(" %s %.1f", name.c_str(), ms);
+    std::printf("  | sum %.1f ms\n", r.total_ms);
+  }
+}
+
+void print_oracle_cost(const OracleCost& c) {
+  std::printf("oracle: %zu triangles, BVH build %.2f ms\n", c.triangles, c.build_ms);
+  for (const auto& r : c.runs)
+    std::printf("oracle %dx%d %-30s %8.1f ms %9llu rays %6.2f Mrays/s (%ld edge px)\n", kWidth, kHeight, r.what.c_str(),
+                r.ms, static_cast<unsigned long long>(r.rays), r.mrays_per_s(), r.edge_pixels);
+}
+
+nlohmann::json technique_passes_json(const std::vector<TechniquePasses>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows) out.push_back({{"technique", r.name}, {"passes", r.pass_ms}, {"total_ms", r.total_ms}});
+  return out;
+}
+
+nlohmann::json oracle_cost_json(const OracleCost& cost) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& r : cost.runs)
+    runs.push_back({{"what", r.what}, {"ms", r.ms}, {"rays", r.rays}, {"mrays_per_s", r.mrays_per_s()},
+                    {"edge_pixels", r.edge_pixels}});
+  return {{"triangles", cost.triangles}, {"build_ms", cost.build_ms}, {"runs", runs}};
+}
+
+// The oracle's cost on the default scene's frame as the benchmark renders it (kWidth x kHeight), lit by
+// the default light and by a spot-like positional light at (-4, 9, 3) with 2048 texels over 1.2 rad.
+OracleCost measure_oracle(Renderer& renderer, const Scene& scene, int repeats) {
+  renderer.set_features({});
+  renderer.set_scene(scene);
+  ParamSet params(renderer_param_specs());
+  params.set("view.debug_quad", 0.0);
+  FrameRequest request = bench_request(scene.bounds());
+  request.gbuffer = true;
+  renderer.render(params, request);
+  OracleLight directional;
+  directional.to_light = renderer.to_light();
+  directional.image_x = renderer.light_view().image_x;
+  directional.image_y = renderer.light_view().image_y;
+  directional.texel_world_size = renderer.light_view().world_size.x / static_cast<float>(renderer.shadow_map_size());
+  OracleLight positional;
+  positional.positional = true;
+  positional.position = {-4.0f, 9.0f, 3.0f};
+  positional.texel_angle = 1.2f / 2048.0f;
+  return measure_oracle_cost(scene, renderer.read_gbuffer(), directional, positional, repeats);
+}
+
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
 
 }  // namespace
@@ -283,11 +338,13 @@ int run_bench(const BenchOptions& options) {
     const int frames = options.quick ? 3 : 7;
     const auto techs = techniques(options.quick);
     std::size_t per_scene = 0;
-    for (const auto& t : techs) per_scene += t.uses_map ? sizes.size() : 1;
+    for (const auto& t : techs) per_scene += t.entry.uses_map ? sizes.size() : 1;
     const std::size_t total = bench_scenes.size() * per_scene;
     std::vector<BenchPoint> points;
     nlohmann::json skipping, overlays;
     std::vector<BlurTiming> blur_rows;
+    std::vector<TechniquePasses> technique_rows;
+    OracleCost oracle_cost;
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
@@ -300,14 +357,14 @@ int run_bench(const BenchOptions& options) {
         renderer.set_scene(s.scene);
         const Oracle oracle(s.scene);
         for (const auto& t : techs) {
-          for (int size : t.uses_map ? sizes : std::vector<int>{0}) {
+          for (int size : t.entry.uses_map ? sizes : std::vector<int>{0}) {
             ++done;
             const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             if (terminal) {
-              std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.name.c_str(),
+              std::fprintf(stderr, "\r[%zu/%zu] %-10s %-9s %4d  (%.0f s)   ", done, total, s.name.c_str(), t.entry.name.c_str(),
                            size, elapsed);
             } else if (done >= next_logged || done == total) {
-              std::fprintf(stderr, "[%zu/%zu] %s %s %d (%.0f s)\n", done, total, s.name.c_str(), t.name.c_str(), size, elapsed);
+              std::fprintf(stderr, "[%zu/%zu] %s %s %d (%.0f s)\n", done, total, s.name.c_str(), t.entry.name.c_str(), size, elapsed);
               next_logged = done + std::max<std::size_t>(1, total / 10);
             }
             points.push_back(measure(renderer, oracle, t, s, size, frames));
@@ -319,15 +376,25 @@ int run_bench(const BenchOptions& options) {
       overlays = measure_overlays(renderer, bench_scenes.front().scene, options.quick ? 5 : 15);
       // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
       std::fprintf(stderr, "blur methods...\n");
-      const Lab& vsm = *find_lab(4);
+      const Lab& vsm = blurred_moments_lab();
       ParamSet blur_params = lab_params(vsm);
       blur_params.set_from_string("shadow.map_size", "1024");
-      renderer.set_lab(vsm.hooks(Impl::Solution));
+      renderer.set_features(vsm.hooks(Impl::Solution));
       renderer.set_scene(bench_scenes.front().scene);
       const FrameRequest request = bench_request(bench_scenes.front().scene.bounds());
       renderer.render(blur_params, request);
       const std::vector<int> radii = options.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16};
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
+      if (!options.quick) {  // half floats too: less bandwidth, the same passes
+        blur_params.set_from_string("vsm.format", "RG16F");
+        const auto rg16 = measure_blur_methods(renderer, blur_params, radii, 7);
+        blur_rows.insert(blur_rows.end(), rg16.begin(), rg16.end());
+      }
+      // Every technique pass by pass at the size the labs' texts quote (1024^2 maps, 1280 x 720), and
+      // the oracle's cost.
+      std::fprintf(stderr, "techniques pass by pass, oracle...\n");
+      technique_rows = measure_technique_passes(renderer, 1024, 1280, 720, options.quick ? 3 : 7);
+      oracle_cost = measure_oracle(renderer, bench_scenes.front().scene, options.quick ? 3 : 7);
     }
 
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
@@ -364,7 +431,9 @@ int run_bench(const BenchOptions& options) {
                              {"points", json_points},
                              {"skipping", skipping},
                              {"hidden_views", overlays},
-                             {"blur_methods", blur_json(blur_rows)}};
+                             {"blur_methods", blur_json(blur_rows)},
+                             {"technique_passes", technique_passes_json(technique_rows)},
+                             {"oracle_cost", oracle_cost_json(oracle_cost)}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     // The plot: one tile per scene, drawn by the code that draws it in the app's panel.
@@ -394,14 +463,9 @@ int run_bench(const BenchOptions& options) {
                 overlays["lit_pass_ms"].get<double>(), overlays["debug_quad_passes_hidden"].get<long>(),
                 overlays["light_volume_passes_hidden"].get<long>(), overlays["frames"].get<int>(),
                 overlays["panel_ui_ms"].get<double>(), overlays["no_panel_ui_ms"].get<double>());
-    for (const auto& b : blur_rows) {
-      if (b.method == "separable") continue;
-      const auto taught = std::find_if(blur_rows.begin(), blur_rows.end(), [&](const BlurTiming& t) {
-        return t.method == "separable" && t.radius == b.radius;
-      });
-      std::printf("blur r%-2d %-8s %7.2f ms = %.2fx the taught separable blur (%.2f ms), max |d| %.1e\n", b.radius,
-                  b.method.c_str(), b.ms_total, taught->ms_total / b.ms_total, taught->ms_total, b.max_abs_diff_vs_separable);
-    }
+    print_blur_methods(blur_rows);
+    print_technique_passes(technique_rows);
+    print_oracle_cost(oracle_cost);
     for (const auto& [name, plot] : plots.by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;

@@ -66,7 +66,7 @@ int run_check(const CheckOptions& options) {
     if (numbers.empty()) throw std::runtime_error("no lab has a check yet");
     for (int number : numbers) {  // a bad --set is a usage error, found before anything renders
       ParamSet p = lab_params(*find_lab(number));
-      for (const auto& a : options.assignments) p.apply_assignment(a);
+      for (const auto& a : options.assignments) apply_set_option(p, a);
     }
     if (!options.submission.empty() && !fs::is_directory(options.submission))
       throw std::runtime_error("--submission " + options.submission + ": not a folder (give the folder holding labs/)");

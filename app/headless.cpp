@@ -70,6 +70,14 @@ void make_output_dir(const std::string& dir) {
                              "; wait for it to finish or choose another --out");
 }
 
+void apply_set_option(ParamSet& params, const std::string& assignment) {
+  try {
+    params.apply_assignment(assignment);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("--set " + assignment + ": " + e.what());
+  }
+}
+
 namespace {
 
 nlohmann::json matrix_json(const glm::mat4& m) {
@@ -92,7 +100,7 @@ int run_render(const RenderOptions& options) {
       throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
     }
     ParamSet params = lab_params(*lab);
-    for (const auto& a : options.assignments) params.apply_assignment(a);
+    for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = load_scene_or_default(options.scene_file);
     std::optional<BenchPlots> bench_plots;
     if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
@@ -108,7 +116,7 @@ int run_render(const RenderOptions& options) {
       std::optional<CheckResult> check;
       if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene);
       Renderer renderer;
-      if (!renderer.set_lab(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
+      if (!renderer.set_features(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
       FrameRequest request;
       request.camera = OrbitCamera::framing(scene.bounds());

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/params.h"
 #include "renderer/scene.h"
 
 namespace shadowlab {
@@ -40,6 +41,9 @@ void make_output_dir(const std::string& dir);
 // Errors as one line for the terminal: "heading:\ndetail" (e.g. a shader file that cannot be read)
 // becomes "heading: detail"; longer messages (compile logs with quoted source) keep their lines.
 std::string one_line_error(const std::string& message);
+
+// Applies one `--set key=value` (render and check): a bad one throws std::invalid_argument naming it.
+void apply_set_option(ParamSet& params, const std::string& assignment);
 
 // Exit codes (app/exit_codes.h): 0 written; 2 the command line cannot be used as given; 3 runtime error.
 int run_render(const RenderOptions& options);

@@ -11,6 +11,7 @@
 
 #include "app/panel.h"
 #include "app/settings_panel.h"
+#include "app/stats_text.h"
 #include "renderer/shader.h"
 #include "renderer/untrusted.h"
 
@@ -234,7 +235,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
   ImGui::Begin("shadowlab");
   draw_nav(m, a);
   if (m.stats) {
-    const std::string warning = m.stats->precision_warning();
+    const std::string warning = precision_warning(*m.stats);
     if (!warning.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, m.stats->moments_negative_variance >= 0.5 ? kRed : ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
       ImGui::TextWrapped("%s", warning.c_str());
@@ -322,7 +323,7 @@ LabText load_lab_text(const Lab& lab) {
 
 const std::vector<std::pair<std::string, std::string>>& window_keys() {
   static const std::vector<std::pair<std::string, std::string>> keys = {
-      {"0-9", "open a lab"},
+      {"0-9", "open a lab (two in a row: labs 10-99)"},
       {"N / P", "next / previous lab (also Page Down / Page Up)"},
       {"S", "split view"},
       {"M", "magnifier"},

@@ -27,7 +27,7 @@ bool SplitView::rebuild(const Lab& lab, Impl impl, const CompareState& state, co
     renderer_->set_scene(scene);
   }
   const Impl right = state.with == CompareWith::OtherImpl ? other(impl) : impl;
-  if (!renderer_->set_lab(lab.hooks(right))) {
+  if (!renderer_->set_features(lab.hooks(right))) {
     if (error) *error = renderer_->shader_error();
     return false;
   }

@@ -167,6 +167,8 @@ struct App {
   std::string gl_summary;
   std::vector<std::string> gl_fallbacks;
   double last_poll = 0.0;
+  int last_digit = -1;  // the number key pressed last, and when: a second digit soon after makes lab 10-99
+  double last_digit_time = 0.0;
   SettingsSession settings;  // each lab's values and the user's presets, kept in the settings file
   CompareState compare;
   SplitView split;
@@ -188,7 +190,7 @@ struct App {
     apply_hooks();
   }
   void apply_hooks() {
-    if (!renderer->set_lab(lab->hooks(impl))) status = "shader error: the previous program keeps running";
+    if (!renderer->set_features(lab->hooks(impl))) status = "shader error: the previous program keeps running";
     rebuild_split();
   }
   void rebuild_split() {
@@ -245,9 +247,16 @@ void handle_keys(App& app) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   if (key_pressed(Key::F12, true)) app.screenshot_requested = true;
   if (key_pressed(Key::F11)) toggle_fullscreen(app);
+  // A number key opens that lab; two within kTwoDigitSeconds open lab 10-99 when it exists ("1", "2": 12).
+  constexpr double kTwoDigitSeconds = 0.8;
   for (int n = 0; n <= 9; ++n) {
-    const Lab* lab = find_lab(n);
-    if (lab && lab != app.lab && digit_pressed(n)) app.open_lab(*lab);
+    if (!digit_pressed(n)) continue;
+    const double now = glfwGetTime();
+    const Lab* two = app.last_digit > 0 && now - app.last_digit_time < kTwoDigitSeconds ? find_lab(app.last_digit * 10 + n) : nullptr;
+    const Lab* lab = two ? two : find_lab(n);
+    app.last_digit = two ? -1 : n;
+    app.last_digit_time = now;
+    if (lab && lab != app.lab) app.open_lab(*lab);
   }
   if (key_pressed(Key::N) || key_pressed(Key::PageDown)) app.open_lab(*neighbour_lab(*app.lab, +1));
   if (key_pressed(Key::P) || key_pressed(Key::PageUp)) app.open_lab(*neighbour_lab(*app.lab, -1));

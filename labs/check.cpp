@@ -137,6 +137,23 @@ std::string Criterion::explain() const {
   return s + needs + (fix.empty() ? "." : ": " + fix);
 }
 
+void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,
+                                   const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
+                                   const std::vector<HeldOutRange>& ranges, const HardLimits& limits) {
+  const Features features = ctx.hooks();
+  const std::string impl = impl_name(ctx.impl);
+  const auto m = ctx.measure(params, features, prefix + "_" + tag + "_" + impl);
+  grade_hard_shadow(result, tag, m.metrics, limits);
+  result.metrics[tag]["render_ms"] = m.render_ms;
+  result.metrics[tag]["oracle_ms"] = m.oracle_ms;
+  for (const auto& c : draw_directional_cases(ctx, ranges)) {
+    const auto h = ctx.measure(c.apply(ctx, held_out_params), features, prefix + "_" + c.tag + "_" + impl);
+    grade_hard_shadow(result, c.tag, h.metrics, limits);
+    result.conditions.push_back(c.to_json());
+  }
+  ctx.use_default_scene();
+}
+
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits) {
   result.metrics[tag] = to_json(m);
   result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, limits.lit_advice});
@@ -160,14 +177,14 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
   for (const auto& file : lab.exercise_files) graded.push_back(std::filesystem::absolute(folder / file));
 }
 
-LabHooks CheckContext::hooks_with_only(std::size_t slot) const {
+Features CheckContext::hooks_with_only(std::size_t slot) const {
   SlotFiles files = lab.files(Impl::Solution);
   files.at(slot) = graded.at(slot);
   return lab.hooks_for(files);
 }
 
-void CheckContext::use(const LabHooks& hooks) {
-  if (!renderer.set_lab(hooks)) throw BuildError(renderer.shader_error());
+void CheckContext::use(const Features& hooks) {
+  if (!renderer.set_features(hooks)) throw BuildError(renderer.shader_error());
 }
 
 ParamSet CheckContext::params() const {
@@ -245,7 +262,7 @@ OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, flo
   return cam;
 }
 
-CheckContext::Measurement CheckContext::measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
+CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Features& hooks, const std::string& name,
                                                 const Bounds* view, const BandSpec& band, int width, int height,
                                                 const OrbitCamera* camera) {
   using clock = std::chrono::steady_clock;
@@ -372,7 +389,7 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
     result.error = e.what();
     // The student's fault when the same programs build with the solution's files in their place.
     try {
-      result.students_error = renderer.set_lab(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();
+      result.students_error = renderer.set_features(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();
     } catch (const std::exception&) {
       result.students_error = false;
     }

@@ -96,10 +96,10 @@ class CheckContext {
 
   // The graded files' hooks; and the solution's hooks with only slot `slot` taken from the graded
   // files (to grade one part of a multi-file exercise on its own).
-  LabHooks hooks() const { return lab.hooks_for(graded); }
-  LabHooks hooks_with_only(std::size_t slot) const;
+  Features hooks() const { return lab.hooks_for(graded); }
+  Features hooks_with_only(std::size_t slot) const;
   // Builds the hooks' programs or throws BuildError with the compiler's messages.
-  void use(const LabHooks& hooks);
+  void use(const Features& hooks);
 
   // The scene to grade on (--scene, or the lab's own choice of built-in scene).
   const Scene& scene() const { return *scene_; }
@@ -127,7 +127,7 @@ class CheckContext {
   // The camera frames `view` (default: the whole scene's bounds).
   // A spot light lights only its cone: pixels outside it (and within kSpotConeMarginDeg of its rim, where
   // the shader's and this test's rounding may differ) are not graded. `camera` replaces the framing.
-  Measurement measure(const ParamSet& params, const LabHooks& hooks, const std::string& name,
+  Measurement measure(const ParamSet& params, const Features& hooks, const std::string& name,
                       const Bounds* view = nullptr, const BandSpec& band = grading_band(), int width = 960, int height = 540,
                       const OrbitCamera* camera = nullptr);
 
@@ -194,6 +194,13 @@ struct HeldOutRange {
 // One case per range (so low and high lights are always both there), azimuth within 75 degrees of the
 // lab's, the rest picked from the range's lists, all drawn from the seed.
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
+// Grades a hard shadow at the lab's own light (`params`, as `tag`, with its render and oracle times), then
+// at the held-out directional cases drawn from `ranges` (`held_out_params` with each case's light, map
+// size and scene), recording each case in result.conditions; images are named `<prefix>_<tag>_<impl>`.
+// Leaves the default scene in use.
+void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,
+                                   const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
+                                   const std::vector<HeldOutRange>& ranges, const HardLimits& limits);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.
 struct CheckRun {

@@ -1,6 +1,7 @@
 #include "labs/lab.h"
 
 #include <cstdio>
+#include <utility>
 
 #include "renderer/shader.h"
 
@@ -27,11 +28,11 @@ SlotFiles Lab::files(Impl impl) const {
   return SlotFiles(names.begin(), names.end());
 }
 
-LabHooks Lab::hooks_for(const SlotFiles& files) const {
+Features Lab::hooks_for(const SlotFiles& files) const {
   if (files.size() != exercise_files.size())
     throw std::invalid_argument("lab " + std::to_string(number) + " has " + std::to_string(exercise_files.size()) +
                                 " exercise files, not " + std::to_string(files.size()));
-  LabHooks hooks = make_hooks(files);
+  Features hooks = make_hooks(files);
   hooks.include_rules.offered = offered_includes;
   for (std::size_t i = 0; i < files.size(); ++i)
     if (i >= solution_files.size() || files[i] != std::filesystem::path(solution_files[i]))
@@ -39,32 +40,23 @@ LabHooks Lab::hooks_for(const SlotFiles& files) const {
   return hooks;
 }
 
-std::function<LabHooks(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light) {
+std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light) {
   return [=](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.light = light;
     hooks.includes["lab/visibility.glsl"] = files.at(0).string();
     return hooks;
   };
 }
 
-// Each lab's definition lives in its own folder; this is the list, in the course's order.
-Lab make_lab_basic_shadow_map();
-Lab make_lab_bias_tuning();
-Lab make_lab_ortho_fit();
-Lab make_lab_vsm_setup();
-Lab make_lab_light_bleeding();
-Lab make_lab_moment_blur();
-Lab make_lab_pcf();
-Lab make_lab_spot_light();
-Lab make_lab_point_light();
-Lab make_lab_shadow_volumes();
+Lab folder_lab(Lab lab, int number, std::string slug) {
+  lab.number = number;
+  lab.slug = std::move(slug);
+  return lab;
+}
 
 const std::vector<Lab>& all_labs() {
-  static const std::vector<Lab> labs = {make_lab_basic_shadow_map(), make_lab_bias_tuning(), make_lab_ortho_fit(),
-                                         make_lab_vsm_setup(), make_lab_light_bleeding(), make_lab_moment_blur(),
-                                         make_lab_pcf(), make_lab_spot_light(), make_lab_point_light(),
-                                         make_lab_shadow_volumes()};
+  static const std::vector<Lab> labs = folder_labs();
   return labs;
 }
 

@@ -1,6 +1,6 @@
-// A lab: one numbered exercise of the course. It declares its parameters, switches renderer features on
-// through LabHooks, names the file(s) a student edits (the exercise) and their solution, and grades the
-// result headless against the ray-cast oracle (its check).
+// A lab: one numbered exercise of the course, and one folder (labs/NN_slug). It declares its
+// parameters, switches renderer features on (Features), names the file(s) a student edits (the
+// exercise) and their solution, and grades the result headless against the ray-cast oracle (its check).
 #pragma once
 
 #include <filesystem>
@@ -34,6 +34,15 @@ struct Preset {
   std::map<std::string, std::string> values;  // key -> value, as --set takes them
 };
 
+// What a lab adds to `shadowlab bench`: its solution with these parameters, measured as one technique.
+struct BenchTechnique {
+  std::string name;    // "hard", "pcf 3x3", "vsm r4", ...
+  std::string family;  // the plot's colour group ("PCF"); the bench adds the lab's number
+  std::map<std::string, std::string> sets;  // key -> value, as --set takes them
+  bool uses_map = true;  // false: no shadow map (shadow volumes), measured once per scene, map size 0
+  bool quick = true;     // also in `bench --quick`
+};
+
 struct CheckResult;
 class CheckContext;
 
@@ -56,11 +65,13 @@ struct Lab {
   // student's file is refused, so an exercise cannot borrow the solution.
   std::set<std::string> offered_includes;
   // The lab's features with these files in its exercise slots.
-  std::function<LabHooks(const SlotFiles&)> make_hooks;
+  std::function<Features(const SlotFiles&)> make_hooks;
   SlotFiles files(Impl impl) const;
   // make_hooks, with every slot file that is not the solution's confined to offered_includes.
-  LabHooks hooks_for(const SlotFiles& files) const;
-  LabHooks hooks(Impl impl) const { return hooks_for(files(impl)); }
+  Features hooks_for(const SlotFiles& files) const;
+  Features hooks(Impl impl) const { return hooks_for(files(impl)); }
+  // What the lab adds to `shadowlab bench` (none: the bench does not measure it).
+  std::vector<BenchTechnique> bench;
   // Grades the lab headless against the oracle; empty for labs without a check yet.
   std::function<void(CheckContext&, CheckResult&)> check;
 
@@ -68,14 +79,20 @@ struct Lab {
   std::filesystem::path text_path() const;  // its README.md: the lab's text
 };
 
+// Every lab, in number order: one per folder labs/NN_slug (labs/CMakeLists.txt generates the list).
+// A folder's lab.cpp defines `Lab SHADOWLAB_LAB_MAKER()` and names its own files under
+// SHADOWLAB_LAB_FOLDER; the number and slug come from the folder's name.
 const std::vector<Lab>& all_labs();
 const Lab* find_lab(int number);
+// Generated from the folders (build/labs/lab_list.cpp): each folder's lab, numbered by folder_lab.
+std::vector<Lab> folder_labs();
+Lab folder_lab(Lab lab, int number, std::string slug);
 
 // The renderer's parameters with the lab's declared on top (its defaults win).
 ParamSet lab_params(const Lab& lab);
 
 // Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
 // (unset: the light.type parameter decides).
-std::function<LabHooks(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light = std::nullopt);
+std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light = std::nullopt);
 
 }  // namespace shadowlab

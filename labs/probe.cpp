@@ -51,17 +51,6 @@ GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int 
   return t;
 }
 
-GlSampler make_compare_sampler() {
-  GlSampler s = GlSampler::create();
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return s;
-}
-
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, depth.id());
@@ -73,7 +62,7 @@ void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampl
   glActiveTexture(GL_TEXTURE0);
 }
 
-std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep) {
+std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sweep) {
   constexpr int kSteps = 600;
   constexpr double kNdotL[] = {1.0, 0.5};
   std::vector<double> offsets;
@@ -161,7 +150,7 @@ void set_uniform(GLuint program, const char* name, const glm::vec3& value) {
   glUniform3f(glGetUniformLocation(program, name), value.x, value.y, value.z);
 }
 
-std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request) {
+std::vector<std::vector<float>> run_probe(const Features& hooks, const ProbeRequest& request) {
   const std::size_t cases = request.in0.size();
   const std::size_t passes = std::max<std::size_t>(request.passes.size(), 1);
   if (cases == 0) return std::vector<std::vector<float>>(passes);

@@ -28,7 +28,7 @@ struct ProbeRequest {
 // Runs the probe with the hooks' includes (over the renderer's defaults for its technique and light)
 // and returns, per pass, one value per case (the fragment's red channel). Throws BuildError when it
 // does not build.
-std::vector<std::vector<float>> run_probe(const LabHooks& hooks, const ProbeRequest& request);
+std::vector<std::vector<float>> run_probe(const Features& hooks, const ProbeRequest& request);
 
 // A depth texture for probes: size x size texels, row 0 at v = 0 (GL's order), nearest filtering,
 // clamped to the edge, no comparison (as the renderer's shadow map reads through u_shadow_map).
@@ -40,7 +40,7 @@ GlTexture make_probe_moments_texture(const std::vector<glm::vec2>& moments, int 
 // Binds `depth` as u_shadow_map (unit 0) and, through a comparing, bilinear sampler, as
 // u_shadow_map_compare (unit 1), as the lit pass does. The sampler must outlive the draw.
 void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampler& compare);
-GlSampler make_compare_sampler();
+// (The sampler: make_compare_sampler(), renderer/gl_objects.h.)
 
 // The bias a positional light's shadow test really applies, in world units, found by sweeping points away
 // from a stored occluder: `setup` binds an occluder at `distance` from the light (a uniform map) and the
@@ -56,7 +56,7 @@ struct BiasSweep {
 struct BiasThreshold {
   double distance, n_dot_l, texel_angle, bias;
 };
-std::vector<BiasThreshold> sweep_bias(const LabHooks& hooks, const BiasSweep& sweep);
+std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sweep);
 
 // Grades the thresholds against the footprint bias the lab teaches, distance x texel angle x
 // (1 + slope x tan(angle of incidence)): adds bias.too_small (least ratio, >= 0.5), bias.too_large

@@ -1,6 +1,6 @@
 #include "renderer/cube_shadow_pass.h"
 
-#include <sstream>
+#include <algorithm>
 #include <stdexcept>
 
 namespace shadowlab {
@@ -27,9 +27,87 @@ GlTexture make_cube(GLenum internal_format, GLenum format, int size) {
 CubeShadowPass::CubeShadowPass()
     : faces_({"shaders/cube/distance.vert", {}, "shaders/cube/distance.frag", {}, {}}),
       layered_({"shaders/cube/distance.vert", "shaders/cube/layers.geom", "shaders/cube/distance.frag",
-                {{"LAYERED", "1"}}, {}}) {
+                {{"LAYERED", "1"}}, {}}),
+      face_quad_({"shaders/fullscreen.vert", {}, "shaders/debug/cube_face.frag", {}, {}}) {
   if (!faces_.rebuild() || !layered_.rebuild())
     throw std::runtime_error("cannot build the cube shadow pass's shaders:\n" + faces_.error() + layered_.error());
+}
+
+std::map<std::string, std::string> CubeShadowPass::default_includes(LightType) {
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"}, {"lab/visibility.glsl", "shaders/shadow/cube.glsl"}};
+}
+
+bool CubeShadowPass::set_includes(const IncludeMap&, const IncludeRules&) {
+  // The distance programs include no feature files (built in the constructor).
+  return face_quad_.rebuild();
+}
+
+void CubeShadowPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(faces_);
+  f(layered_);
+  f(face_quad_);
+}
+
+bool CubeShadowPass::ensure_targets(const ParamSet& params) {
+  return ensure_targets(std::stoi(params.get_choice("shadow.map_size")));
+}
+
+void CubeShadowPass::draw_map(PassContext& ctx) {
+  const bool single = technique_param(ctx.params, "point.single_pass") != 0.0;
+  far_plane_ = ctx.light.cube.far_plane;
+  ctx.timed("cube_shadow", [&] {
+    ctx.count_texels([&] {
+      draw(ctx.gpu_scene, ctx.light.cube, ctx.light.position, single, ctx.params.get_bool("shadow.cull_casters"),
+           ctx.stats.draws, ctx.stats.cube_faces, ctx.stats.casters_culled);
+    });
+  });
+}
+
+void CubeShadowPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, distance_.id());
+  u.shadow_cube.set(2);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void CubeShadowPass::draw_debug_quads(const DebugQuadArea& area) {
+  if (face_quad_u_.generation != face_quad_.generation()) {
+    const GLuint id = face_quad_.id();
+    face_quad_u_ = {face_quad_.generation(), Uniform(id, "u_cube"), Uniform(id, "u_face"), Uniform(id, "u_far")};
+  }
+  const int cell = area.side / 2;
+  glUseProgram(face_quad_.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, distance_.id());
+  face_quad_u_.cube.set(0);
+  face_quad_u_.far_plane.set(std::max(far_plane_, 1e-6f));
+  glBindVertexArray(area.empty_vao);
+  for (int f = 0; f < 6; ++f) {
+    glViewport(area.width - 8 - (3 - f % 3) * (cell + 4), 8 + (f < 3 ? cell + 4 : 0), cell, cell);
+    face_quad_u_.face.set(f);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+std::vector<std::uint8_t> CubeShadowPass::image(int* size) const {
+  const int n = size_, half = std::max(n / 2, 1);
+  *size = 3 * half;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(*size) * static_cast<std::size_t>(*size) * 4, 255);
+  const float range = std::max(far_plane_, 1e-6f);
+  for (int f = 0; f < 6; ++f) {
+    const std::vector<float> d = read_face(f);
+    const int ox = (f % 3) * half, oy = (f / 3) * half;  // oy counted from the top
+    for (int y = 0; y < half; ++y)
+      for (int x = 0; x < half; ++x) {
+        const float v = d[static_cast<std::size_t>(2 * y) * n + 2 * x];
+        const int row = oy + (half - 1 - y);  // face rows are bottom first
+        const std::size_t i = (static_cast<std::size_t>(row) * static_cast<std::size_t>(*size) + ox + x) * 4;
+        const auto g = static_cast<std::uint8_t>(v >= kCubeEmptyDistance ? 255.0f : std::clamp(v / range, 0.0f, 1.0f) * 230.0f);
+        rgba[i] = rgba[i + 1] = rgba[i + 2] = g;
+      }
+  }
+  return rgba;
 }
 
 bool CubeShadowPass::ensure_targets(int size) {
@@ -101,16 +179,11 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
 }
 
 std::vector<float> CubeShadowPass::read_face(int face) const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
   GlFramebuffer read = GlFramebuffer::create();
   glBindFramebuffer(GL_READ_FRAMEBUFFER, read.id());
   glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face),
                          distance_.id(), 0);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_RED, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(read.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RED, 1);
 }
 
 }  // namespace shadowlab

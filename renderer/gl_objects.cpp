@@ -35,6 +35,28 @@ GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum 
   return t;
 }
 
+std::vector<float> read_pixels(GLuint framebuffer, GLenum attachment, int width, int height, GLenum format, int channels) {
+  std::vector<float> data(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                          static_cast<std::size_t>(channels));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  if (attachment != GL_NONE) glReadBuffer(attachment);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, format, GL_FLOAT, data.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return data;
+}
+
+GlSampler make_compare_sampler() {
+  GlSampler s = GlSampler::create();
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return s;
+}
+
 void bind_color_target(GLuint framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   const GLenum color = GL_COLOR_ATTACHMENT0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <utility>
+#include <vector>
 
 #include "renderer/gl.h"
 
@@ -70,8 +71,16 @@ inline GlShader make_shader(GLenum type) { return GlShader::adopt(glCreateShader
 // A 2D texture with storage, one filter for min and mag, clamped to the edge.
 GlTexture make_texture_2d(GLenum internal_format, int width, int height, GLenum format, GLenum type, GLenum filter);
 
+// A sampler for sampler2DShadow reads: GL_COMPARE_REF_TO_TEXTURE (LEQUAL), linear (the four nearest
+// comparisons filtered bilinearly), clamped to the edge.
+GlSampler make_compare_sampler();
+
 // Throws "<what> framebuffer is incomplete (status 0x...)" unless the bound framebuffer is complete.
 void check_framebuffer(const char* what);
+// Reads a width x height block of floats (`channels` per pixel, GL's `format`) from a framebuffer's
+// attachment, bottom row first; `attachment` GL_NONE reads depth (format GL_DEPTH_COMPONENT).
+std::vector<float> read_pixels(GLuint framebuffer, GLenum attachment, int width, int height, GLenum format, int channels);
+
 // Binds a framebuffer to draw into its first colour attachment only (a G-buffer's other attachments
 // keep what they hold) over a width x height viewport.
 void bind_color_target(GLuint framebuffer, int width, int height);

@@ -1,6 +1,6 @@
 // Light and camera maths, CPU only: the directional light, the light's view and projection, and the
-// orbit camera. The fitted ortho projection is lab 2's subject; lab 2 compares it against the fixed box
-// of the tutorials.
+// orbit camera. The fitted ortho projection is the course's task 2; the fixed box of the tutorials is
+// here too, to compare it with.
 #pragma once
 
 #include <glm/glm.hpp>

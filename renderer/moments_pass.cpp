@@ -1,10 +1,9 @@
 #include "renderer/moments_pass.h"
 
-#include <algorithm>
-#include <cmath>
-#include <utility>
-#include <sstream>
 #include <stdexcept>
+
+#include "renderer/lit_pass.h"
+#include "renderer/vsm_params.h"
 
 namespace shadowlab {
 
@@ -30,160 +29,9 @@ ProgramDesc blur_desc(const char* direction) {
   return {"shaders/fullscreen.vert", {}, "shaders/vsm/blur.frag", {{"BLUR_DIRECTION", direction}}, {}};
 }
 
-// The bilinear taps of the fast blur on the + side of the centre (the - side mirrors them): texels
-// 2k - 1 and 2k share one linearly filtered fetch at offset (i1 w1 + i2 w2) / (w1 + w2) with weight
-// w1 + w2 (the last texel alone when the radius is odd). Index 0 is unused (the centre is fetched alone).
-std::vector<float> bilinear_taps(const std::vector<double>& w, int radius) {
-  const int pairs = (radius + 1) / 2;
-  std::vector<float> taps(static_cast<std::size_t>(2 * (pairs + 1)), 0.0f);
-  for (int k = 1; k <= pairs; ++k) {
-    const int i1 = 2 * k - 1, i2 = 2 * k;
-    const double w1 = w[static_cast<std::size_t>(i1)];
-    const double w2 = i2 <= radius ? w[static_cast<std::size_t>(i2)] : 0.0;
-    taps[static_cast<std::size_t>(2 * k)] = static_cast<float>((i1 * w1 + i2 * w2) / (w1 + w2));
-    taps[static_cast<std::size_t>(2 * k + 1)] = static_cast<float>(w1 + w2);
-  }
-  return taps;
-}
-
-// The brute-force shader's weight array (shaders/vsm/brute_blur.frag).
-constexpr int kMaxBrute2dRadius = 64;
-
-std::vector<float> to_float(const std::vector<double>& v) { return {v.begin(), v.end()}; }
-
-// The fast blur's compute shader: texels per invocation along the blur direction, and the work group.
-// 16 outputs read 16 + 2r texels: 3 reads per output at r = 16 instead of 33. Measured on llvmpipe
-// (2 cores, 1024^2): 8 and 16 outputs per invocation about equal at r <= 4, 16 clearly better at r = 16.
-constexpr int kFastOutputs = 16;
-constexpr int kFastGroupX = 32, kFastGroupY = 8;
-
-// The unrolled body of fast_blur.comp (every array index a constant, so the window stays in registers).
-std::string fast_fetch_code(int radius) {
-  std::string code;
-  for (int j = 0; j < kFastOutputs + 2 * radius; ++j)
-    code += "t[" + std::to_string(j) + "] = fetch(" + std::to_string(j) + "); ";
-  return code;
-}
-
-std::string fast_sum_code(int radius) {
-  std::string code;
-  for (int k = 0; k < kFastOutputs; ++k) {
-    const int c = k + radius;
-    code += "store(" + std::to_string(k) + ", u_weights[0] * t[" + std::to_string(c) + "]";
-    for (int i = 1; i <= radius; ++i)
-      code += " + u_weights[" + std::to_string(i) + "] * (t[" + std::to_string(c + i) + "] + t[" +
-              std::to_string(c - i) + "])";
-    code += "); ";
-  }
-  return code;
-}
-
-// The fused fast blur (shaders/vsm/fast_blur2d.comp): the block each invocation writes, its work group,
-// and the largest radius it serves. Measured on llvmpipe (2 cores, 1024^2 RG32F, against the taught
-// blur in the same run): fused 2.2x / 3.6x / 3.5x at r 1 / 4 / 8, two dispatches 1.2-1.8x / 1.5-2.4x /
-// 3.3x; 16 x 4 blocks cost the same as 16 x 8 at r1 and 10 % more at r2. Above r4 the rows it reads
-// ((8 + 2r) x (16 + 2r) per 128 outputs) grow faster than the two-dispatch path's (1 + 2r / 16 per output).
-constexpr int kFusedX = 16, kFusedY = 8, kFusedGroupX = 8, kFusedGroupY = 8, kFusedMaxRadius = 4;
-
-std::string fused_body_code(int radius) {
-  auto n = [](int v) { return std::to_string(v); };
-  auto sum = [&](auto term) {  // w_0 term(0) + sum_i w_i (term(i) + term(-i))
-    std::string code = "u_weights[0] * " + term(0);
-    for (int i = 1; i <= radius; ++i) code += " + u_weights[" + n(i) + "] * (" + term(i) + " + " + term(-i) + ")";
-    return code;
-  };
-  std::string code;
-  for (int j = 0; j < kFusedY + 2 * radius; ++j) {
-    code += "{ ";
-    for (int k = 0; k < kFusedX + 2 * radius; ++k) code += "vec2 t" + n(k) + " = fetch(" + n(k) + ", " + n(j) + "); ";
-    for (int k = 0; k < kFusedX; ++k)
-      code += "h" + n(j) + "_" + n(k) + " = " + sum([&](int i) { return "t" + n(k + radius + i); }) + "; ";
-    code += "} ";
-  }
-  std::string declare = "vec2 ";
-  for (int j = 0; j < kFusedY + 2 * radius; ++j)
-    for (int k = 0; k < kFusedX; ++k) declare += (j || k ? ", h" : "h") + n(j) + "_" + n(k);
-  code = declare + "; " + code;
-  for (int m = 0; m < kFusedY; ++m)
-    for (int k = 0; k < kFusedX; ++k)
-      code += "store(" + n(k) + ", " + n(m) + ", " + sum([&](int i) { return "h" + n(m + radius + i) + "_" + n(k); }) + "); ";
-  return code;
-}
-
-GlProgram build_compute_program(const ProgramDesc& desc, const std::filesystem::path& file) {
-  std::vector<std::filesystem::path> files;
-  std::string error;
-  const std::string source = preprocess_shader(data_dir() / file, desc, files, error);
-  if (!error.empty()) throw std::runtime_error("cannot build the fast blur: " + error);
-  GlShader shader = make_shader(GL_COMPUTE_SHADER);
-  const char* text = source.c_str();
-  glShaderSource(shader.id(), 1, &text, nullptr);
-  glCompileShader(shader.id());
-  GlProgram program = GlProgram::create();
-  glAttachShader(program.id(), shader.id());
-  glLinkProgram(program.id());
-  glDetachShader(program.id(), shader.id());
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    std::string log(4096, '\0');
-    glGetShaderInfoLog(shader.id(), static_cast<GLsizei>(log.size()), nullptr, log.data());
-    throw std::runtime_error("cannot build the fast blur (" + file.string() + "): " + std::string(log.c_str()));
-  }
-  return program;
-}
-
 bool has_compute_shaders() { return epoxy_gl_version() >= 43; }
 
 }  // namespace
-
-BlurMethod blur_method_from_name(const std::string& name) {
-  if (name == "separable") return BlurMethod::Separable;
-  if (name == "fast") return BlurMethod::Fast;
-  if (name == "brute2d") return BlurMethod::Brute2D;
-  throw std::invalid_argument("unknown blur method '" + name + "' (separable, fast, brute2d)");
-}
-
-const char* blur_method_name(BlurMethod method) {
-  switch (method) {
-    case BlurMethod::Separable: return "separable";
-    case BlurMethod::Fast: return "fast";
-    case BlurMethod::Brute2D: return "brute2d";
-  }
-  return "?";
-}
-
-std::vector<double> gaussian_weights(int radius, double sigma) {
-  std::vector<double> w(static_cast<std::size_t>(radius + 1));
-  double sum = 0.0;
-  for (int i = 0; i <= radius; ++i) {
-    w[static_cast<std::size_t>(i)] = std::exp(-i * i / (2.0 * sigma * sigma));
-    sum += (i == 0 ? 1.0 : 2.0) * w[static_cast<std::size_t>(i)];
-  }
-  for (auto& x : w) x /= sum;
-  return w;
-}
-
-std::vector<double> cpu_gaussian_blur(const std::vector<float>& rg, int n, int radius, double sigma) {
-  const std::vector<double> w = gaussian_weights(radius, sigma);
-  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * 2;
-  std::vector<double> in(rg.begin(), rg.end()), tmp(count, 0.0), out(count, 0.0);
-  auto pass = [&](const std::vector<double>& src, std::vector<double>& dst, int dx, int dy) {
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        for (int c = 0; c < 2; ++c) {
-          double acc = 0.0;
-          for (int i = -radius; i <= radius; ++i) {
-            const int sx = std::clamp(x + i * dx, 0, n - 1), sy = std::clamp(y + i * dy, 0, n - 1);
-            acc += w[static_cast<std::size_t>(std::abs(i))] * src[(static_cast<std::size_t>(sy) * n + sx) * 2 + c];
-          }
-          dst[(static_cast<std::size_t>(y) * n + x) * 2 + c] = acc;
-        }
-  };
-  pass(in, tmp, 1, 0);
-  pass(tmp, out, 0, 1);
-  return out;
-}
 
 MomentsPass::MomentsPass()
     : moments_({"shaders/shadow_depth.vert", {}, "shaders/vsm/moments.frag", {}, {}}),
@@ -192,8 +40,28 @@ MomentsPass::MomentsPass()
       debug_({"shaders/fullscreen.vert", {}, "shaders/vsm/debug_moments.frag", {}, {}}),
       fast_path_(has_compute_shaders() ? FastPath::Compute : FastPath::Fragment) {}
 
-bool MomentsPass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
-  // Only the programs that include lab files; the fast and brute-force blurs include none.
+std::map<std::string, std::string> MomentsPass::default_includes(LightType) {
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+          {"lab/visibility.glsl", "shaders/vsm/visibility.glsl"},
+          {"lab/moments.glsl", "shaders/vsm/moments.glsl"},
+          {"lab/chebyshev.glsl", "shaders/vsm/chebyshev.glsl"},
+          {"lab/blur.glsl", "shaders/vsm/gaussian_blur.glsl"}};
+}
+
+void MomentsPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(moments_);
+  f(blur_x_);
+  f(blur_y_);
+  f(debug_);
+  for (auto& [radius, fast] : fast_fragment_) {
+    f(fast.x);
+    f(fast.y);
+  }
+  if (brute_.valid()) f(brute_);
+}
+
+bool MomentsPass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
+  // Only the programs with virtual includes ("lab/..."); the fast and brute-force blurs have none.
   bool ok = true;
   for (ReloadableProgram* p : {&moments_, &blur_x_, &blur_y_, &debug_}) {
     ProgramDesc d = p->desc();
@@ -245,12 +113,7 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   glClearBufferfv(GL_COLOR, 0, kMomentsClear);
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
-  if (cull == 0) {
-    glDisable(GL_CULL_FACE);
-  } else {
-    glEnable(GL_CULL_FACE);
-    glCullFace(cull == 1 ? GL_FRONT : GL_BACK);
-  }
+  set_shadow_culling(cull);
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);
   const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters);
@@ -259,192 +122,78 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   glDisable(GL_CULL_FACE);
 }
 
-void MomentsPass::blur(int direction, int radius, float sigma, GLuint empty_vao) {
-  if (!blur_texture_) throw std::logic_error("MomentsPass::blur without a blur target");
-  ReloadableProgram& program = direction == 0 ? blur_x_ : blur_y_;
-  BlurUniforms& u = direction == 0 ? blur_x_u_ : blur_y_u_;
-  if (u.generation != program.generation()) {
-    const GLuint id = program.id();
-    u = {program.generation(), Uniform(id, "u_moments"), Uniform(id, "u_blur_radius"), Uniform(id, "u_blur_sigma")};
+bool MomentsPass::ensure_targets(const ParamSet& params) {
+  const bool blur = static_cast<int>(vsm_param(params, "vsm.blur_radius")) > 0;
+  return ensure_targets(std::stoi(params.get_choice("shadow.map_size")), vsm_choice(params, "vsm.format"), blur);
+}
+
+void MomentsPass::draw_map(PassContext& ctx) {
+  // 1. The moments (z, z^2 + slope term) of the nearest surface per texel.
+  ctx.timed("moments", [&] {
+    ctx.count_texels([&] {
+      draw_moments(ctx.gpu_scene, ctx.light.view.view_projection(), ctx.cull, ctx.params.get_bool("shadow.cull_casters"),
+                   ctx.stats.draws, ctx.stats.casters_culled);
+    });
+  });
+  ++ctx.stats.moments_passes;
+  // 2. The Gaussian over the moments. Radius 0 runs none (and ensure_targets allocated no ping-pong
+  // texture).
+  const int radius = static_cast<int>(vsm_param(ctx.params, "vsm.blur_radius"));
+  const auto sigma = static_cast<float>(vsm_param(ctx.params, "vsm.blur_sigma"));
+  if (radius > 0) blur_map(ctx, radius, sigma, blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
+  // Half floats run out of precision on large depth ranges: measure it so that it can be shown.
+  ctx.stats.moments_negative_variance = format_ == "RG16F" ? negative_variance_share(read_moments()) : -1.0;
+}
+
+void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method) {
+  // X then Y (the taught shader or the fast one), or one 2D pass and its copy back into A (brute2d,
+  // timed together as "blur_2d"). Every blur writes the whole map once per direction (brute 2D: once,
+  // and once more copying back).
+  ctx.stats.shadow_texels_written += 2 * static_cast<long>(size_) * size_;
+  if (method == BlurMethod::Brute2D) {
+    ctx.timed("blur_2d", [&] { blur_brute2d(radius, sigma, ctx.empty_vao); });
+    ctx.stats.blur_passes += 1;
+    return;
   }
-  // X reads A and writes B, Y reads B and writes A: a texture is never read and written at once.
-  bind_color_target(direction == 0 ? blur_fbo_.id() : moments_fbo_.id(), size_, size_);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(program.id());
+  for (int direction : {0, 1})
+    ctx.timed(direction == 0 ? "blur_x" : "blur_y", [&] {
+      method == BlurMethod::Fast ? blur_fast(direction, radius, sigma, ctx.empty_vao)
+                                 : blur(direction, radius, sigma, ctx.empty_vao);
+    });
+  ctx.stats.blur_passes += 2;
+}
+
+void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
+  u.min_variance.set(static_cast<float>(vsm_param(params, "vsm.min_variance")));
+  u.bleed_delta.set(static_cast<float>(vsm_param(params, "vsm.bleed_delta")));
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, direction == 0 ? moments_texture_.id() : blur_texture_.id());
-  u.moments.set(0);
-  u.radius.set(radius);
-  u.sigma.set(sigma);
-  glBindVertexArray(empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
+  glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
+}
+
+void MomentsPass::draw_views(PassContext& ctx, LitPass& lit) {
+  if (vsm_param(ctx.params, "vsm.show_remap") != 0.0)
+    ctx.timed("remap_view", [&] { lit.draw(ctx, *this, LitVariant::RemapView); });
+}
+
+void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {
+  // "all": E[z], E[z^2] and the variance left to right; else the one channel ("depth" is E[z]).
+  const int only = area.channel == "moment 2" ? 1 : area.channel == "variance" ? 2 : area.channel == "all" ? -1 : 0;
+  const int count = only < 0 ? 3 : 1;
+  for (int i = 0; i < count; ++i) {
+    glViewport(area.width - (count - i) * (area.side + 8), 8, area.side, area.side);
+    draw_debug_quad(only < 0 ? i : only, area.empty_vao);
+  }
+}
+
+std::vector<std::uint8_t> MomentsPass::image(int* size) const {
+  const std::vector<float> depth = read_depth(size);  // sets *size
+  return depth_map_image(depth, *size);
 }
 
 void MomentsPass::set_fast_path(FastPath path) {
   if (path == FastPath::Compute && !has_compute_shaders())
     throw std::logic_error("the fast blur's compute path needs OpenGL 4.3");
   fast_path_ = path;
-}
-
-void MomentsPass::blur_fast(int direction, int radius, float sigma, GLuint empty_vao) {
-  if (!blur_texture_) throw std::logic_error("MomentsPass::blur_fast without a blur target");
-  if (fast_path_ == FastPath::Compute) {
-    blur_fast_compute(direction, radius, sigma);
-  } else {
-    blur_fast_fragment(direction, radius, sigma, empty_vao);
-  }
-}
-
-void MomentsPass::blur_fused_compute(int direction, int radius, float sigma) {
-  if (direction == 1) {
-    // The fused pass wrote B: B becomes the moments texture (what the lit pass, read-backs and the next
-    // moments pass use) and A the ping-pong one. Both have the same size, format and filtering, so
-    // swapping them and re-attaching each framebuffer's colour costs nothing, where a copy costs a pass.
-    std::swap(moments_texture_, blur_texture_);
-    for (const auto& [fbo, texture] : {std::pair{moments_fbo_.id(), moments_texture_.id()}, std::pair{blur_fbo_.id(), blur_texture_.id()}}) {
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return;
-  }
-  const auto key = std::make_pair(radius, format_);
-  auto it = fused_compute_.find(key);
-  if (it == fused_compute_.end()) {
-    const ProgramDesc desc{{},
-                           {},
-                           {},
-                           {{"RADIUS", std::to_string(radius)},
-                            {"BLOCK_X", std::to_string(kFusedX)},
-                            {"BLOCK_Y", std::to_string(kFusedY)},
-                            {"LOCAL_X", std::to_string(kFusedGroupX)},
-                            {"LOCAL_Y", std::to_string(kFusedGroupY)},
-                            {"MOMENTS_FORMAT", format_ == "RG16F" ? "rg16f" : "rg32f"},
-                            {"FUSED_BODY", fused_body_code(radius)}},
-                           {}};
-    it = fused_compute_.emplace(key, build_compute_program(desc, "shaders/vsm/fast_blur2d.comp")).first;
-  }
-  const int nx = (size_ + kFusedX - 1) / kFusedX, ny = (size_ + kFusedY - 1) / kFusedY;
-  dispatch_blur(it->second.id(), moments_texture_.id(), blur_texture_.id(), radius, sigma,
-                (nx + kFusedGroupX - 1) / kFusedGroupX, (ny + kFusedGroupY - 1) / kFusedGroupY);
-}
-
-void MomentsPass::dispatch_blur(GLuint program, GLuint source, GLuint target, int radius, float sigma, int groups_x,
-                                int groups_y) {
-  const std::vector<float> weights = to_float(gaussian_weights(radius, sigma));
-  glUseProgram(program);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, source);
-  glUniform1i(glGetUniformLocation(program, "u_moments"), 0);
-  glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, format_ == "RG16F" ? GL_RG16F : GL_RG32F);
-  glUniform1i(glGetUniformLocation(program, "u_out"), 0);
-  glUniform1fv(glGetUniformLocation(program, "u_weights"), static_cast<GLsizei>(weights.size()), weights.data());
-  glDispatchCompute(static_cast<GLuint>(groups_x), static_cast<GLuint>(groups_y), 1);
-  // The next pass samples what was stored; the lit pass, read-backs and blits read it too.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                  GL_PIXEL_BUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-}
-
-void MomentsPass::blur_fast_compute(int direction, int radius, float sigma) {
-  if (radius <= kFusedMaxRadius) {
-    blur_fused_compute(direction, radius, sigma);
-    return;
-  }
-  const auto key = std::make_pair(radius, format_);
-  auto it = fast_compute_.find(key);
-  if (it == fast_compute_.end()) {
-    ComputeBlur c;
-    for (int d : {0, 1}) {
-      const ProgramDesc desc{{},
-                             {},
-                             {},
-                             {{"BLUR_DIRECTION", d == 0 ? "ivec2(1, 0)" : "ivec2(0, 1)"},
-                              {"RADIUS", std::to_string(radius)},
-                              {"OUTPUTS", std::to_string(kFastOutputs)},
-                              {"LOCAL_X", std::to_string(kFastGroupX)},
-                              {"LOCAL_Y", std::to_string(kFastGroupY)},
-                              {"MOMENTS_FORMAT", format_ == "RG16F" ? "rg16f" : "rg32f"},
-                              {"FAST_BLUR_FETCHES", fast_fetch_code(radius)},
-                              {"FAST_BLUR_SUMS", fast_sum_code(radius)}},
-                             {}};
-      (d == 0 ? c.x : c.y) = build_compute_program(desc, "shaders/vsm/fast_blur.comp");
-    }
-    it = fast_compute_.emplace(key, std::move(c)).first;
-  }
-  const int chunks = (size_ + kFastOutputs - 1) / kFastOutputs;
-  const int nx = direction == 0 ? chunks : size_, ny = direction == 0 ? size_ : chunks;
-  // X reads A and writes B, Y reads B and writes A, as the taught passes do.
-  dispatch_blur(direction == 0 ? it->second.x.id() : it->second.y.id(),
-                direction == 0 ? moments_texture_.id() : blur_texture_.id(),
-                direction == 0 ? blur_texture_.id() : moments_texture_.id(), radius, sigma,
-                (nx + kFastGroupX - 1) / kFastGroupX, (ny + kFastGroupY - 1) / kFastGroupY);
-}
-
-void MomentsPass::blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao) {
-  auto it = fast_fragment_.find(radius);
-  if (it == fast_fragment_.end()) {
-    FragmentBlur f;
-    auto desc = [&](const char* dir) {
-      return ProgramDesc{"shaders/fullscreen.vert",
-                         {},
-                         "shaders/vsm/fast_blur.frag",
-                         {{"BLUR_DIRECTION", dir}, {"RADIUS", std::to_string(radius)},
-                          {"PAIRS", std::to_string((radius + 1) / 2)}},
-                         {}};
-    };
-    f.x = ReloadableProgram(desc("vec2(1.0, 0.0)"));
-    f.y = ReloadableProgram(desc("vec2(0.0, 1.0)"));
-    if (!f.x.rebuild() || !f.y.rebuild())
-      throw std::runtime_error("cannot build the fast blur:\n" + f.x.error() + f.y.error());
-    it = fast_fragment_.emplace(radius, std::move(f)).first;
-  }
-  const GLuint id = direction == 0 ? it->second.x.id() : it->second.y.id();
-  const std::vector<double> w = gaussian_weights(radius, sigma);
-  const std::vector<float> taps = bilinear_taps(w, radius);
-  bind_color_target(direction == 0 ? blur_fbo_.id() : moments_fbo_.id(), size_, size_);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(id);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, direction == 0 ? moments_texture_.id() : blur_texture_.id());
-  glUniform1i(glGetUniformLocation(id, "u_moments"), 0);
-  glUniform1f(glGetUniformLocation(id, "u_center_weight"), static_cast<float>(w[0]));
-  glUniform2fv(glGetUniformLocation(id, "u_taps"), static_cast<GLsizei>(taps.size() / 2), taps.data());
-  glUniform2f(glGetUniformLocation(id, "u_inv_size"), 1.0f / static_cast<float>(size_), 1.0f / static_cast<float>(size_));
-  glBindVertexArray(empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
-}
-
-void MomentsPass::blur_brute2d(int radius, float sigma, GLuint empty_vao) {
-  if (!blur_texture_) throw std::logic_error("MomentsPass::blur_brute2d without a blur target");
-  if (!brute_.valid()) {
-    brute_ = ReloadableProgram({"shaders/fullscreen.vert", {}, "shaders/vsm/brute_blur.frag", {}, {}});
-    if (!brute_.rebuild()) throw std::runtime_error("cannot build the brute-force blur:\n" + brute_.error());
-  }
-  if (radius > kMaxBrute2dRadius) throw std::invalid_argument("brute2d blur: radius above 64");
-  const GLuint id = brute_.id();
-  const std::vector<float> wf = to_float(gaussian_weights(radius, sigma));
-  bind_color_target(blur_fbo_.id(), size_, size_);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(id);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
-  glUniform1i(glGetUniformLocation(id, "u_moments"), 0);
-  glUniform1i(glGetUniformLocation(id, "u_blur_radius"), radius);
-  glUniform1fv(glGetUniformLocation(id, "u_weights"), static_cast<GLsizei>(wf.size()), wf.data());
-  glBindVertexArray(empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  // Back into A, which the lit pass reads.
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, blur_fbo_.id());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, moments_fbo_.id());
-  const GLenum color = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color);
-  glBlitFramebuffer(0, 0, size_, size_, 0, 0, size_, size_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glEnable(GL_DEPTH_TEST);
 }
 
 void MomentsPass::draw_debug_quad(int channel, GLuint empty_vao) {
@@ -470,22 +219,12 @@ double MomentsPass::negative_variance_share(const std::vector<float>& moments) {
 }
 
 std::vector<float> MomentsPass::read_moments() const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * 2);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, moments_fbo_.id());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_RG, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+  return read_pixels(moments_fbo_.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RG, 2);
 }
 
-std::vector<float> MomentsPass::read_depth() const {
-  std::vector<float> data(static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, moments_fbo_.id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size_, size_, GL_DEPTH_COMPONENT, GL_FLOAT, data.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  return data;
+std::vector<float> MomentsPass::read_depth(int* size) const {
+  *size = size_;
+  return read_pixels(moments_fbo_.id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
 }
 
 MomentsTargetInfo MomentsPass::query_targets() const {

@@ -1,5 +1,5 @@
-// Variance shadow maps on the GPU: the moments pass (the course's task 3) and the separable Gaussian
-// blur of the moments (task 6), with the render targets they own.
+// Variance shadow maps on the GPU: the moments pass and the separable Gaussian blur of the moments,
+// with the render targets and programs they own.
 //
 //   moments pass:  scene from the light -> moments texture A (RG32F/RG16F, linear) + D24 renderbuffer
 //   blur X:        A -> ping-pong texture B      (only while the blur radius is > 0)
@@ -9,15 +9,16 @@
 //                  swap names (texture() is always the blurred moments; nothing is copied)
 //
 // Three blur methods give the same moments (vsm.blur_method; see BlurMethod): the taught separable
-// shader (lab 5's "lab/blur.glsl"), the renderer's fast separable blur (a compute shader,
-// shaders/vsm/fast_blur.comp, fused into one dispatch for small radii by shaders/vsm/fast_blur2d.comp;
-// without compute shaders a fragment shader with bilinear taps, shaders/vsm/fast_blur.frag) and a
-// brute-force 2D pass to compare them with.
+// shader ("lab/blur.glsl", shaders/vsm/gaussian_blur.glsl by default), the renderer's fast separable
+// blur (a compute shader, shaders/vsm/fast_blur.comp, fused into one dispatch for small radii by
+// shaders/vsm/fast_blur2d.comp; without compute shaders a fragment shader with bilinear taps,
+// shaders/vsm/fast_blur.frag) and a brute-force 2D pass to compare them with. The blurs are in
+// moments_blur.cpp.
 //
 // The blur writes back into A, so A holds blurred moments afterwards: a change of the blur settings
 // redraws the moments too (4-14 ms) rather than keeping a third full-size texture for raw moments.
-// The renderer creates this pass only for labs that switch the moments technique on, so the depth
-// labs allocate none of it; the ping-pong texture exists only while a blur runs.
+// The renderer creates this pass only while a feature switches the moments technique on, so the
+// depth-map techniques allocate none of it; the ping-pong texture exists only while a blur runs.
 #pragma once
 
 #include <filesystem>
@@ -26,9 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/gl_objects.h"
-#include "renderer/gpu_mesh.h"
-#include "renderer/shader.h"
+#include "renderer/shadow_pass.h"
 
 namespace shadowlab {
 
@@ -49,7 +48,7 @@ inline constexpr float kMomentsClear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
 
 // How the moments are blurred (the vsm.blur_method choices, in order).
 enum class BlurMethod {
-  Separable,  // the taught shader: "lab/blur.glsl" (lab 5), 2r + 1 texelFetch and exp() per tap, X then Y
+  Separable,  // the taught shader: "lab/blur.glsl", 2r + 1 texelFetch and exp() per tap, X then Y
   Fast,       // the same separable Gaussian, optimised (shaders/vsm/fast_blur.comp or fast_blur.frag)
   Brute2D,    // one pass of (2r + 1)^2 taps (the 1D weights' outer product) and a copy back into A
 };
@@ -60,30 +59,38 @@ const char* blur_method_name(BlurMethod method);
 // The 1D Gaussian weights exp(-i^2 / (2 sigma^2)) for i = 0..radius, divided by their sum over
 // i = -radius..radius (so the kernel sums to 1); computed in double.
 std::vector<double> gaussian_weights(int radius, double sigma);
-// The reference blur (lab 5's check): the separable Gaussian in double precision, X then Y, clamped to
+// The reference blur: the separable Gaussian in double precision, X then Y, clamped to
 // the edge, over (E[z], E[z^2]) pairs of an n x n map as read_moments() returns them.
 std::vector<double> cpu_gaussian_blur(const std::vector<float>& rg, int n, int radius, double sigma);
 
-class MomentsPass {
+class MomentsPass final : public ShadowPass {
  public:
   MomentsPass();
+  static std::map<std::string, std::string> default_includes(LightType light);
 
+  // The shadow technique: the vsm.* parameters apply (renderer/vsm_params.h).
+  Shape shape() const override { return {true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}}; }
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
   // them; false (old programs kept) on a compile error.
-  bool set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules = {});
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
   // Every program built so far (the fast and brute-force blur programs are built on first use).
-  template <typename F>
-  void for_each_program(F&& f) {
-    f(moments_);
-    f(blur_x_);
-    f(blur_y_);
-    f(debug_);
-    for (auto& [radius, fast] : fast_fragment_) {
-      f(fast.x);
-      f(fast.y);
-    }
-    if (brute_.valid()) f(brute_);
-  }
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
+  // vsm.format, and the ping-pong texture while vsm.blur_radius > 0.
+  bool ensure_targets(const ParamSet& params) override;
+  // The moments, then the blur (vsm.blur_radius, vsm.blur_sigma, vsm.blur_method); with RG16F the
+  // share of texels whose variance cancelled (FrameStats::moments_negative_variance).
+  void draw_map(PassContext& ctx) override;
+  // The moments on unit 0, vsm.min_variance and vsm.bleed_delta.
+  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  // vsm.show_remap: tints the pixels whose visibility the light-bleeding remap lowered.
+  void draw_views(PassContext& ctx, LitPass& lit) override;
+  // view.debug_channel "all": E[z], E[z^2] and the variance left to right; else that one channel.
+  void draw_debug_quads(const DebugQuadArea& area) override;
+  int size() const override { return size_; }
+  // The depth renderbuffer, bottom row first.
+  std::vector<float> read_depth(int* size) const override;
+  // The depth renderbuffer as a picture.
+  std::vector<std::uint8_t> image(int* size) const override;
 
   // (Re)allocates the targets for this size and format ("RG32F" or "RG16F"); the ping-pong texture
   // only when `blur` is true, and it is freed again when false. Returns true when anything changed.
@@ -110,15 +117,12 @@ class MomentsPass {
 
   GLuint texture() const { return moments_texture_.id(); }
   GLuint framebuffer() const { return moments_fbo_.id(); }
-  int size() const { return size_; }
   // Texture A as (E[z], E[z^2]) pairs, bottom row first.
   std::vector<float> read_moments() const;
   // The share of covered texels (E[z] < 1) whose stored moments give a negative variance,
   // E[z^2] - E[z]^2 < 0: float cancellation. 0 for RG32F on every scene measured; RG16F 2.1 % on the
   // default scene, 5.2 % with a 120-unit depth range, 99.98 % at 1200 (tests/test_gl_stress.cpp).
   static double negative_variance_share(const std::vector<float>& moments);
-  // The depth renderbuffer, bottom row first.
-  std::vector<float> read_depth() const;
   MomentsTargetInfo query_targets() const;
 
  private:
@@ -153,6 +157,8 @@ class MomentsPass {
   // Runs a blur compute program: samples `source`, stores into the image `target`, then the barrier.
   void dispatch_blur(GLuint program, GLuint source, GLuint target, int radius, float sigma, int groups_x, int groups_y);
   void blur_fast_fragment(int direction, int radius, float sigma, GLuint empty_vao);
+  // The blur of draw_map: X then Y, or the brute-force 2D pass, timed and counted.
+  void blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method);
 
   int size_ = 0;
   std::string format_;

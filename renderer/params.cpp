@@ -100,7 +100,7 @@ unsigned ParamSet::set_from_string(const std::string& key, const std::string& te
 unsigned ParamSet::apply_assignment(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw std::invalid_argument("--set expects key=value, got '" + assignment + "'");
+    throw std::invalid_argument("expected key=value, got '" + assignment + "'");
   const std::string key = assignment.substr(0, eq);
   if (!find(key)) {
     std::string keys;
@@ -153,6 +153,13 @@ std::vector<std::string> ParamSet::apply_json(const nlohmann::json& values) {
     }
   }
   return problems;
+}
+
+std::vector<std::pair<std::string, double>> ParamSet::values_invalidating(unsigned bits) const {
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t i = 0; i < specs_.size(); ++i)
+    if (specs_[i].invalidates & bits) out.emplace_back(specs_[i].key, values_[i]);
+  return out;
 }
 
 }  // namespace shadowlab

@@ -1,9 +1,11 @@
 // Parameters, declared once: key, label, default, range, tooltip and what a change invalidates. The
-// same declaration drives the panel's slider, the CLI's `--set key=value`, presets and the JSON output.
+// same declaration drives every front end (a slider, a `key=value` assignment, presets, JSON) and the
+// renderer's decisions of what to redo (see Invalidates).
 #pragma once
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -12,7 +14,11 @@ namespace shadowlab {
 
 enum class ParamKind { Float, Int, Bool, Choice };
 
-// What must be redone when a parameter changes; the renderer skips everything else.
+// What must be redone when a parameter changes. The renderer redraws the shadow map exactly when a
+// declared parameter with kInvalidatesShadowMap changed (or the light, scene, targets or programs did),
+// so a parameter the shadow pass reads must declare it; one the lit pass or a view reads must not, or
+// every change of it costs a shadow pass. The other bits say why (the passes check their targets and
+// variants themselves) and always come with kInvalidatesShadowMap: new targets hold no map yet.
 enum Invalidates : unsigned {
   kInvalidatesNothing = 0,
   kInvalidatesShadowMap = 1u << 0,  // shadow, moment and blur passes
@@ -21,7 +27,7 @@ enum Invalidates : unsigned {
 };
 
 struct ParamSpec {
-  std::string key;  // "shadow.bias"; what --set and JSON use
+  std::string key;  // "shadow.bias"; what assignments and JSON use
   std::string label;
   ParamKind kind = ParamKind::Float;
   double default_value = 0.0;
@@ -38,7 +44,7 @@ class ParamSet {
   ParamSet() = default;
   explicit ParamSet(std::vector<ParamSpec> specs);
 
-  // Adds a spec (or replaces the one with the same key, e.g. a lab changing a default).
+  // Adds a spec (or replaces the one with the same key, e.g. a feature set changing a default).
   void declare(ParamSpec spec);
 
   const std::vector<ParamSpec>& specs() const { return specs_; }
@@ -59,10 +65,13 @@ class ParamSet {
   unsigned apply_assignment(const std::string& assignment);
   void reset_to_defaults();
 
-  std::string format(const std::string& key) const;  // the value as --set would take it
+  std::string format(const std::string& key) const;  // the value as an assignment would take it
   nlohmann::json to_json() const;                      // {"key": value, ...} with choices by name
   // Applies what it can from JSON written by to_json(); returns one message per rejected entry.
   std::vector<std::string> apply_json(const nlohmann::json& values);
+  // Key and value of every parameter whose invalidation bits include any of `bits`, in declaration
+  // order: what the work those bits stand for depends on (the renderer compares them frame to frame).
+  std::vector<std::pair<std::string, double>> values_invalidating(unsigned bits) const;
 
  private:
   std::vector<ParamSpec> specs_;
@@ -70,7 +79,8 @@ class ParamSet {
   std::size_t index_of(const std::string& key) const;
 };
 
-// The renderer's own parameters (renderer_params.cpp); labs add theirs and may change these defaults.
+// The renderer's own parameters (renderer_params.cpp); feature sets add theirs and may change these
+// defaults.
 std::vector<ParamSpec> renderer_param_specs();
 
 }  // namespace shadowlab

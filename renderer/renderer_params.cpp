@@ -39,14 +39,14 @@ std::vector<ParamSpec> renderer_param_specs() {
        "A quad in the corner shows what the light sees (the shadow map's depths).", {}},
       {"view.debug_channel", "Shadow map channel", ParamKind::Choice, 0.0, 0.0, 4.0,
        "What the debug quad shows. all: the depth map (or, for variance shadow maps, E[z], E[z^2] and the "
-       "variance side by side); one channel: that one alone. Labs without moments show depth for every choice.",
+       "variance side by side); one channel: that one alone. Without the moments technique every choice shows depth.",
        {"all", "depth", "moment 1", "moment 2", "variance"}, {}},
       {"view.debug_quad_size", "Shadow map quad size", ParamKind::Float, 0.25, 0.1, 1.0,
        "Side of the debug quad as a share of the view's height: enlarge it to read single texels.", {}},
       {"view.light_volume", "Show the light's volume", ParamKind::Bool, 0.0, 0.0, 1.0,
        "Wireframe of what the shadow map covers: the fitted ortho box of a directional light or the frustum of "
        "a spot light (a point light's six frusta fill all space: nothing to draw).", {}},
-      // Geometry-shader debug views (lecture 9); they cost nothing while off.
+      // Geometry-shader debug views; they cost nothing while off.
       {"view.normals", "Show normals (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
        "A geometry shader turns every triangle into three lines: each vertex and its normal.", {}},
       {"view.volumes", "Show shadow volumes (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
@@ -78,7 +78,7 @@ std::vector<ParamSpec> vsm_param_specs() {
        moments},
       {"vsm.blur_method", "Blur method", ParamKind::Choice, 0.0, 0.0, 2.0,
        "How the Gaussian over the moments is computed; all three give the same moments (within 1e-4). "
-       "separable: the taught shader (lab 5's, X then Y, one texel and one exp() per tap). fast: the same "
+       "separable: the taught shader (lab/blur.glsl, X then Y, one texel and one exp() per tap). fast: the same "
        "separable Gaussian, weights computed once on the CPU, each texel read once per 16 outputs (a compute shader; "
        "1.7-6x faster on llvmpipe for radii 1-16). brute2d: one pass over all (2r+1)^2 texels, for comparison.",
        {"separable", "fast", "brute2d"}, moments},
@@ -191,6 +191,12 @@ double vsm_param(const ParamSet& params, const std::string& key) {
   for (const auto& spec : vsm_param_specs())
     if (spec.key == key) return spec.default_value;
   throw std::out_of_range("no vsm parameter " + key);
+}
+
+std::string vsm_choice(const ParamSet& params, const std::string& key) {
+  if (params.find(key)) return params.get_choice(key);
+  const ParamSpec spec = vsm_param_specs({key}).at(0);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
 }
 
 }  // namespace shadowlab

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "renderer/adjacency.h"
+#include "renderer/lit_pass.h"
 
 namespace shadowlab {
 
@@ -13,7 +14,41 @@ ShadowVolumePass::ShadowVolumePass()
       positions_(GlBuffer::create()),
       indices_(GlBuffer::create()) {}
 
-bool ShadowVolumePass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
+std::map<std::string, std::string> ShadowVolumePass::default_includes(LightType) {
+  // Visibility is decided by the stencil test before the lit pass runs.
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+          {"lab/visibility.glsl", "shaders/volume/stencil_visibility.glsl"},
+          {"lab/volume.glsl", "shaders/volume/volume.glsl"}};
+}
+
+void ShadowVolumePass::for_each_program(const std::function<void(ReloadableProgram&)>& f) { f(program_); }
+
+void ShadowVolumePass::draw_view_passes(PassContext& ctx, LitPass& lit) {
+  const bool z_fail = technique_choice(ctx.params, "volume.method") == "z-fail";
+  // 1. The scene with ambient light only: colour, depth (and the G-buffer, visibility 0).
+  ctx.timed("ambient", [&] { lit.draw(ctx, *this, LitVariant::VolumeAmbient); });
+  // 2. The volumes into the stencil buffer.
+  ctx.timed("volumes", [&] {
+    glBindFramebuffer(GL_FRAMEBUFFER, lit.framebuffer());
+    glViewport(0, 0, lit.width(), lit.height());
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    draw_stencil(ctx.camera_view_proj(), ctx.light.vector4(), z_fail, ctx.stats.draws);
+  });
+  ++ctx.stats.stencil_passes;
+}
+
+void ShadowVolumePass::bind_lit_inputs(const ParamSet&, const LitUniforms&) const {
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+std::vector<std::uint8_t> ShadowVolumePass::image(int* size) const {
+  *size = 16;
+  return std::vector<std::uint8_t>(16 * 16 * 4, 128);
+}
+
+bool ShadowVolumePass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
   ProgramDesc d = program_.desc();
   d.includes = includes;
   d.rules = rules;

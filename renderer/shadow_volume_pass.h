@@ -1,16 +1,17 @@
-// Stencil shadow volumes (lab 9): the adjacency buffers and the extrusion program, owned by the pass.
+// Stencil shadow volumes: the adjacency buffers and the extrusion program, owned by the pass. There is
+// no shadow map; every frame, from the camera:
 //
-//   ambient pass (renderer):  the scene, ambient only -> colour, depth (and the G-buffer)
+//   ambient pass (lit pass):  the scene, ambient only -> colour, depth (and the G-buffer)
 //   stencil pass (this):      volumes from extrude.geom, colour and depth writes off, two-sided stencil:
 //                               z-pass: front faces +1, back faces -1 where the depth test passes
 //                               z-fail: back faces +1, front faces -1 where it fails (capped volumes)
-//   lit pass (renderer):      the scene again where stencil == 0, the light's share added (ONE, ONE)
+//   lit pass (lit pass):      the scene again where stencil == 0, the light's share added (ONE, ONE)
 //
 // The camera's projection has its far plane at infinity, so volume sides and far caps at w = 0 are
 // never clipped; GL_DEPTH_CLAMP keeps their depth at 1 exactly. Meshes are welded and given adjacency
 // once per scene (renderer/adjacency.h); open, non-manifold and inconsistently wound edges are counted
-// per mesh and reported, not hidden. The renderer creates this pass only while a lab uses shadow volumes
-// or the volume wireframe view is on.
+// per mesh and reported, not hidden. The renderer creates this pass only while a feature uses shadow
+// volumes or the volume wireframe view is on.
 #pragma once
 
 #include <filesystem>
@@ -19,9 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/gl_objects.h"
 #include "renderer/scene.h"
-#include "renderer/shader.h"
+#include "renderer/shadow_pass.h"
 
 namespace shadowlab {
 
@@ -36,20 +36,28 @@ struct VolumeMeshReport {
   bool closed_manifold() const { return open_edges == 0 && non_manifold_edges == 0 && inconsistent_edges == 0; }
 };
 
-class ShadowVolumePass {
+class ShadowVolumePass final : public ShadowPass {
  public:
   ShadowVolumePass();
+  static std::map<std::string, std::string> default_includes(LightType light);
 
+  Shape shape() const override {
+    return {false, true, LitVariant::VolumeAdditive, {LitVariant::VolumeAdditive, LitVariant::VolumeAmbient}};
+  }
   // Points "lab/volume.glsl" at a file (default shaders/volume/volume.glsl) and rebuilds; false (old
   // program kept) on a compile error.
-  bool set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules = {});
-  template <typename F>
-  void for_each_program(F&& f) {
-    f(program_);
-  }
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
+  bool ensure_targets(const ParamSet&) override { return false; }
+  // The ambient pass, then the volumes into the stencil buffer (volume.method: z-fail or z-pass).
+  void draw_view_passes(PassContext& ctx, LitPass& lit) override;
+  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  int size() const override { return 0; }
+  // No shadow map: a 16 x 16 grey placeholder keeps the outputs' shape.
+  std::vector<std::uint8_t> image(int* size) const override;
 
   // Builds the adjacency (GL_TRIANGLES_ADJACENCY indices) of every shadow-casting mesh.
-  void set_scene(const Scene& scene);
+  void set_scene(const Scene& scene) override;
   const std::vector<VolumeMeshReport>& report() const { return report_; }
 
   // light: xyz the position (w = 1) or the direction toward the light (w = 0). view_proj must have an

@@ -1,7 +1,7 @@
 // The variance-shadow-map parameters (vsm.*), declared once in renderer_params.cpp. They are not in
-// renderer_param_specs(): only the labs that switch the moments technique on declare them (all or a
-// subset), so the depth-map labs' panels stay short. The renderer reads an undeclared vsm.* key as
-// its declared default (vsm_param()).
+// renderer_param_specs(): only a feature set that switches the moments technique on declares them (all
+// or a subset), so the depth-map panels stay short. The renderer reads an undeclared vsm.* key as its
+// declared default (vsm_param()).
 #pragma once
 
 #include <string>
@@ -14,7 +14,9 @@ namespace shadowlab {
 std::vector<ParamSpec> vsm_param_specs();
 // The subset with these keys, in declaration order; throws std::out_of_range for an unknown key.
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys);
-// The value of a vsm.* key: the lab's when it declares the key, else the declared default.
+// The value of a vsm.* key when the set declares it, else the declared default.
 double vsm_param(const ParamSet& params, const std::string& key);
+// The same for a choice, by name.
+std::string vsm_choice(const ParamSet& params, const std::string& key);
 
 }  // namespace shadowlab

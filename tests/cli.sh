@@ -122,6 +122,54 @@ PY
     grep -q "Basic shadow map" "$tmp/labs" || fail "lab 0 not listed"
     grep -q -- "--set shadow.bias=" "$tmp/labs" || fail "parameters not listed"
     ;;
+  readme_labs)  # the README's lab table has one row per lab folder, in order, naming its exercise files
+    "$bin" labs --json >"$tmp/labs.json" || fail "labs --json failed"
+    python3 - "$tmp/labs.json" "$src/README.md" <<'PY' || fail "README's lab table does not match the lab folders"
+import json, re, sys
+labs = json.load(open(sys.argv[1]))["labs"]
+text = open(sys.argv[2]).read()
+table = text.split("| lab | subject | the student edits |", 1)[1].split("\n\n", 1)[0].strip().splitlines()[1:]
+rows = [[c.strip() for c in row.strip("|").split("|")] for row in table]
+numbers = [int(r[0]) for r in rows]
+assert numbers == [l["number"] for l in labs], f"README rows {numbers}, lab folders {[l['number'] for l in labs]}"
+for lab, row in zip(labs, rows):
+    named = re.findall(r"`([^`]+)`", row[2])
+    for f in lab["exercise_files"]:
+        assert any(f.endswith(n) for n in named) and lab["folder"] in row[2], f"lab {lab['number']}: {f} not named in {row[2]}"
+print(len(rows), "rows match the lab folders")
+PY
+    ;;
+  one_folder_lab)  # run by tests/one_folder.sh on a copy holding labs/10_throwaway (lab 0 copied, retitled)
+    "$bin" labs --json >"$tmp/labs.json" || fail "labs --json failed"
+    python3 - "$tmp/labs.json" <<'PY' || fail "lab 10 is not listed from its folder"
+import json, sys
+labs = {l["number"]: l for l in json.load(open(sys.argv[1]))["labs"]}
+l = labs.get(10)
+assert l and l["title"] == "Throwaway copy" and l["folder"] == "labs/10_throwaway" and l["has_check"], l
+assert l["exercise_files"] == ["labs/10_throwaway/exercise.glsl"], l["exercise_files"]
+assert labs[0]["exercise_files"] == ["labs/00_basic_shadow_map/exercise.glsl"], labs[0]
+print("listed:", l["number"], l["title"], l["exercise_files"])
+PY
+    "$bin" labs | grep -q "^10  Throwaway copy" || fail "shadowlab labs does not list lab 10"
+    "$bin" check --lab 10 --impl solution >"$tmp/out" || fail "lab 10's solution does not pass: $(cat "$tmp/out")"
+    "$bin" check --lab 10 --impl exercise >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "lab 10's stock exercise: exit $rc, expected 1 (a failed check)"
+    png_reader
+    window --lab 10 --frames 3 --screenshot "$tmp/lab10.png"
+    window --lab 0 --frames 3 --screenshot "$tmp/lab0.png"
+    window --lab 1 --script "frames:3,key:1,frames:1,key:0,frames:3,screenshot:$tmp/keys10.png"
+    python3 - "$tmp" <<'PY' || fail "the window does not show lab 10 (by --lab 10 and by the keys 1, 0)"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+shot = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("lab10", "lab0", "keys10")}
+title = (20, 20, 430, 60)  # the panel's lab title
+d = {"lab10/lab0": differing(shot["lab10"], shot["lab0"], *title), "lab10/keys10": differing(shot["lab10"], shot["keys10"], *title)}
+print(d)
+assert d["lab10/lab0"] > 0.005, "lab 10's title looks like lab 0's"
+assert d["lab10/keys10"] < 0.001, "keys 1, 0 did not open lab 10"
+PY
+    ;;
   no_display)  # one line: GLFW's own reason, and the headless commands; exit 3 (runtime: no window)
     env -u DISPLAY -u WAYLAND_DISPLAY "$bin" --frames 1 >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 3 ] || fail "no display: exit $rc, expected 3"
@@ -406,6 +454,10 @@ v = j["hidden_views"]  # shown: one pass per frame; hidden: none
 assert v["debug_quad_passes_shown"] == v["frames"] and v["debug_quad_passes_hidden"] == 0, v
 assert v["light_volume_passes_shown"] == v["frames"] and v["light_volume_passes_hidden"] == 0, v
 assert v["panel_ui_ms"] > 0 and v["no_panel_ui_ms"] > 0, v
+t = j["technique_passes"]  # every technique pass by pass
+assert len(t) == 14 and all(r["total_ms"] > 0 and "lit" in r["passes"] for r in t), t
+o = j["oracle_cost"]
+assert o["build_ms"] > 0 and len(o["runs"]) == 4 and all(r["rays"] > 0 for r in o["runs"]), o
 PY
     echo "bench --quick: ${elapsed} s"
     ;;

@@ -6,11 +6,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 
-#include "renderer/blur_bench.h"
+#include "app/bench_figures.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/renderer.h"
@@ -57,8 +56,8 @@ class BlurTest : public GlTest {
     for (const auto& spec : vsm_param_specs()) params.declare(spec);
     params.apply_assignment("view.debug_quad=false");
   }
-  static LabHooks moments_hooks() {
-    LabHooks hooks;
+  static Features moments_hooks() {
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     return hooks;
   }
@@ -90,7 +89,7 @@ TEST_F(BlurTest, MethodIsDeclaredOnceAndInvalidatesTheShadowMap) {
 TEST_F(BlurTest, AllMethodsMatchTheTaughtBlurAndTheCpuReference) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.apply_assignment("shadow.map_size=512");
   for (const char* format : {"RG32F", "RG16F"}) {
     params.set_from_string("vsm.format", format);
@@ -190,7 +189,7 @@ TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
 TEST_F(BlurTest, RadiusZeroRunsNoBlurPassWhateverTheMethod) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.set("vsm.blur_radius", 0);
   for (const char* method : kMethods) {
     params.set_from_string("vsm.blur_method", method);
@@ -208,7 +207,7 @@ TEST_F(BlurTest, PassesAndCountersPerMethod) {
   auto renderer = std::make_unique<Renderer>();
   Renderer& r = *renderer;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.set("vsm.blur_radius", 3);
   const std::map<std::string, std::vector<std::string>> expected = {
       {"separable", {"blur_x", "blur_y"}}, {"fast", {"blur_x", "blur_y"}}, {"brute2d", {"blur_2d"}}};
@@ -234,7 +233,7 @@ TEST_F(BlurTest, PassesAndCountersPerMethod) {
 TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.apply_assignment("shadow.map_size=256");
   const std::vector<BlurTiming> rows = measure_blur_methods(r, params, {0, 1, 4}, 1);
   ASSERT_EQ(rows.size(), 6u) << "radius 0 is skipped; three methods per radius";
@@ -249,27 +248,6 @@ TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
     if (t.method == "separable") {
       EXPECT_EQ(t.max_abs_diff_vs_separable, 0.0);
     }
-  }
-}
-
-// Not a test: the timing table (run with --gtest_also_run_disabled_tests --gtest_filter=*PrintTimings*).
-TEST_F(BlurTest, DISABLED_PrintTimings) {
-  Renderer r;
-  r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
-  const char* format = std::getenv("BLUR_FORMAT");  // RG32F unless set
-  params.set_from_string("vsm.format", format ? format : "RG32F");
-  {
-    std::vector<int> radii = {1, 2, 4, 8, 16};
-    if (const char* list = std::getenv("BLUR_RADII")) {  // e.g. "1,2"
-      radii.clear();
-      for (const char* c = list; *c; ++c)
-        if (c == list || c[-1] == ',') radii.push_back(std::atoi(c));
-    }
-    const char* frames = std::getenv("BLUR_FRAMES");
-    for (const auto& t : measure_blur_methods(r, params, radii, frames ? std::atoi(frames) : 5))
-      std::printf("%s %4d %-9s r%-2d  x %8.2f  y %8.2f  total %8.2f ms  max|d| %.3g\n", t.format.c_str(), t.map_size,
-                  t.method.c_str(), t.radius, t.ms_x, t.ms_y, t.ms_total, t.max_abs_diff_vs_separable);
   }
 }
 

@@ -304,3 +304,40 @@ TEST_F(RendererTest, PassTimesArePlausible) {
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// The shadow map's picture is the map itself, top row first (PNG order): white exactly where nothing
+// was drawn (depth 1), for the depth map and for the moments' depth buffer alike.
+TEST_F(RendererTest, ShadowMapImageIsTheMapTopRowFirst) {
+  for (ShadowTechnique technique : {ShadowTechnique::Depth, ShadowTechnique::Moments}) {
+    Renderer r;
+    r.set_scene(scene);
+    Features hooks;
+    hooks.technique = technique;
+    ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
+    params.apply_assignment("shadow.map_size=256");
+    params.apply_assignment("light.elevation=30");  // the ground's far corners stay empty in the map
+    r.render(params, request(false));
+    int n = 0, image_n = 0;
+    const std::vector<float> depth = r.read_shadow_depth(&n);
+    const std::vector<std::uint8_t> image = r.shadow_map_image(&image_n);
+    ASSERT_EQ(image_n, n);
+    ASSERT_EQ(image.size(), depth.size() * 4);
+    long background = 0, mismatches = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const bool empty = depth[static_cast<std::size_t>(y) * n + x] >= 1.0f;
+        const std::uint8_t grey = image[(static_cast<std::size_t>(n - 1 - y) * n + x) * 4];
+        background += empty;
+        mismatches += empty != (grey == 255);
+      }
+    EXPECT_GT(background, 0);
+    EXPECT_LT(background, static_cast<long>(n) * n);
+    EXPECT_EQ(mismatches, 0) << (technique == ShadowTechnique::Depth ? "depth map" : "moments' depth");
+  }
+}
+
+}  // namespace
+}  // namespace shadowlab

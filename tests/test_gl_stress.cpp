@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/stats_text.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/moments_pass.h"
@@ -70,7 +71,7 @@ class StressGlTest : public GlTest {
       if (reported >= 0.0) {
         EXPECT_EQ(reported, o.negative_variance) << name;
       }
-      o.warning = renderer.stats().precision_warning();
+      o.warning = precision_warning(renderer.stats());
       std::printf("  %-28s negative variance in %.4f of covered texels\n", name, o.negative_variance);
     }
     o.error = m.metrics.acne_rate_all + m.metrics.leak_rate_all;
@@ -249,7 +250,7 @@ TEST_F(StressGlTest, EmptySceneAndSinglePointRenderWithoutNaN) {
     for (int lab : {1, 4}) {
       Renderer r;
       r.set_scene(*s);
-      ASSERT_TRUE(r.set_lab(find_lab(lab)->hooks(Impl::Solution)));
+      ASSERT_TRUE(r.set_features(find_lab(lab)->hooks(Impl::Solution)));
       FrameRequest req;
       req.camera = OrbitCamera::framing(s->bounds());
       req.width = 64;

@@ -53,9 +53,9 @@ class LightsTest : public GlTest {
 TEST_F(LightsTest, ZFailStaysRightInsideAVolumeWhereZPassFails) {
   Renderer r;
   r.set_scene(scene);
-  LabHooks hooks;
+  Features hooks;
   hooks.technique = ShadowTechnique::ShadowVolumes;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   const Oracle oracle(scene);
   // The eye 0.3 above the ground in the big box's shadow (light at azimuth 35, elevation 50).
   const glm::vec3 eye(-3.67f, 0.3f, -0.68f);
@@ -84,9 +84,9 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
   s.meshes.push_back(open_box);
   Renderer r;
   r.set_scene(s);
-  LabHooks hooks;
+  Features hooks;
   hooks.technique = ShadowTechnique::ShadowVolumes;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   r.render(lab_set({}), request(OrbitCamera::framing(s.bounds())));
   bool saw_ground = false, saw_open_box = false;
   for (const auto& m : r.volume_report()) {
@@ -108,9 +108,9 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
 TEST_F(LightsTest, CubeMapSixPassesAndOnePassStoreTheSameDistances) {
   Renderer r;
   r.set_scene(scene);
-  LabHooks hooks;
+  Features hooks;
   hooks.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(hooks)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
   const OrbitCamera camera = OrbitCamera::framing(scene.bounds(), 30.0f, 60.0f);
   r.render(lab_set({"point.single_pass=false"}), request(camera));
   EXPECT_EQ(r.stats().cube_faces, 6);
@@ -142,19 +142,19 @@ TEST_F(LightsTest, TargetsExistOnlyWhileALabUsesThem) {
   const int textures_depth_lab = live_gl_objects(GlKind::Texture) - textures_before;
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 0) << "no comparison sampler without hardware PCF";
   // Hardware PCF: one sampler object, no extra texture.
-  LabHooks pcf;
+  Features pcf;
   pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
-  ASSERT_TRUE(r.set_lab(pcf)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(pcf)) << r.shader_error();
   r.render(lab_set({"pcf.hardware=true", "pcf.kernel=3"}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 1);
   // A point light: two cube maps (distance, depth) replace the 2D depth map.
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r.set_lab(point)) << r.shader_error();
+  ASSERT_TRUE(r.set_features(point)) << r.shader_error();
   r.render(lab_set({}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab + 1);
   // Back to a directional light: the cube maps are freed.
-  ASSERT_TRUE(r.set_lab({})) << r.shader_error();
+  ASSERT_TRUE(r.set_features({})) << r.shader_error();
   r.render(lab_set({}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Texture) - textures_before, textures_depth_lab);
   EXPECT_THROW(r.read_cube_face(0, nullptr), std::logic_error);
@@ -186,60 +186,6 @@ TEST_F(LightsTest, GeometryShaderDebugViewsDrawOnlyWhenOn) {
   }
 }
 
-// Not a pass/fail timing: prints the median GPU time of each pass per technique (default scene, 1024^2
-// maps, 1280x720), the figures the labs' READMEs quote, and checks that each technique ran its passes.
-TEST_F(LightsTest, PassTimesPerTechnique) {
-  Renderer r;
-  r.set_scene(scene);
-  struct Case {
-    const char* name;
-    LabHooks hooks;
-    std::vector<const char*> set;
-  };
-  LabHooks pcf;
-  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
-  LabHooks spot, point, volumes;
-  spot.light = LightType::Spot;
-  point.light = LightType::Point;
-  volumes.technique = ShadowTechnique::ShadowVolumes;
-  const Case cases[] = {
-      {"directional 1 tap", {}, {}},
-      {"pcf 3x3", pcf, {"pcf.kernel=3"}},
-      {"pcf 9x9", pcf, {"pcf.kernel=9"}},
-      {"pcf hw 3x3", pcf, {"pcf.kernel=3", "pcf.hardware=true"}},
-      {"spot", spot, {"light.position_x=5", "light.position_y=7", "light.position_z=4", "light.cone_deg=40"}},
-      {"point 6 passes", point, {}},
-      {"point 1 pass (GS)", point, {"point.single_pass=true"}},
-      {"volumes z-fail", volumes, {}},
-      {"volumes z-pass", volumes, {"volume.method=z-pass"}},
-      {"volumes z-fail, point", volumes, {"light.type=point"}},
-      {"normals view", {}, {"view.normals=true"}},
-      {"volumes wireframe", volumes, {"view.volumes=true"}},
-  };
-  FrameRequest req = request(OrbitCamera::framing(scene.bounds()), 1280, 720);
-  req.gbuffer = false;
-  for (const auto& c : cases) {
-    ParamSet p = lab_set({"shadow.map_size=1024"});
-    for (const char* a : c.set) p.apply_assignment(a);
-    std::map<std::string, std::vector<double>> ms;
-    for (int frame = 0; frame < 5; ++frame) {
-      ASSERT_TRUE(r.set_lab(c.hooks)) << r.shader_error();  // forces the shadow pass to run again
-      r.render(p, req);
-      if (frame == 0) continue;  // shaders compile during the first frame
-      for (const auto& pass : r.stats().passes) ms[pass.name].push_back(pass.gpu_ms);
-    }
-    std::printf("  %-24s", c.name);
-    double total = 0.0;
-    for (auto& [name, v] : ms) {
-      std::sort(v.begin(), v.end());
-      std::printf(" %s %.1f", name.c_str(), v[v.size() / 2]);
-      total += v[v.size() / 2];
-    }
-    std::printf("  | sum %.1f ms\n", total);
-    EXPECT_TRUE(ms.count("lit")) << c.name;
-  }
-}
-
 TEST_F(LightsTest, EveryNewLabBuildsItsExerciseAndSolution) {
   Renderer r;
   r.set_scene(scene);
@@ -247,7 +193,7 @@ TEST_F(LightsTest, EveryNewLabBuildsItsExerciseAndSolution) {
     const Lab* lab = find_lab(number);
     ASSERT_NE(lab, nullptr) << number;
     for (Impl impl : {Impl::Exercise, Impl::Solution}) {
-      EXPECT_TRUE(r.set_lab(lab->hooks(impl))) << "lab " << number << " " << impl_name(impl) << ": " << r.shader_error();
+      EXPECT_TRUE(r.set_features(lab->hooks(impl))) << "lab " << number << " " << impl_name(impl) << ": " << r.shader_error();
       r.render(lab_params(*lab), request(OrbitCamera::framing(scene.bounds()), 64, 36));
       EXPECT_TRUE(r.shader_error().empty()) << r.shader_error();
     }

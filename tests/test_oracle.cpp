@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <limits>
 #include <set>
@@ -428,38 +427,6 @@ TEST(Oracle, DeterministicAcrossRuns) {
   EXPECT_EQ(a.interior, b.interior);
   EXPECT_EQ(a.rays, b.rays);
   EXPECT_GT(std::count(a.lit.begin(), a.lit.end(), 0), 0);  // the default scene does shade its ground
-}
-
-// The oracle's cost, printed for the record (no assertion on time).
-TEST(Oracle, CostFigure) {
-  const Scene scene = make_default_scene();
-  const Oracle oracle(scene);
-  const Oracle again(scene);
-  std::printf("[ oracle   ] default scene: %zu triangles, BVH build %.2f ms (first in this test), %.2f ms (second)\n",
-              oracle.triangle_count(), 1e3 * oracle.build_seconds(), 1e3 * again.build_seconds());
-  const GBuffer g = ground_grid(640, 360, -8, 8, -8, 8);
-  auto run = [&](const char* what, const OracleLight& light, const BandSpec& band) {
-    (void)oracle.evaluate(g, light, band);  // warm-up
-    const Truth t = oracle.evaluate(g, light, band);
-    const auto edge = std::count(t.interior.begin(), t.interior.end(), 0);
-    std::printf("[ oracle   ] 640x360 %-34s %8.1f ms  %9llu rays  %6.2f Mrays/s  (%lld edge/invalid px)\n", what,
-                1e3 * t.seconds, static_cast<unsigned long long>(t.rays),
-                1e-6 * static_cast<double>(t.rays) / t.seconds, static_cast<long long>(edge));
-    EXPECT_GT(t.rays, 0u);
-  };
-  const OracleLight sun = default_scene_light();
-  run("directional, band 8 samples:", sun, BandSpec{});
-  BandSpec screen;
-  screen.fixed_screen_pixels = 3;
-  run("directional, screen band 3 px:", sun, screen);
-  BandSpec none;
-  none.samples = 0;
-  run("directional, no band:", sun, none);
-  OracleLight spot;
-  spot.positional = true;
-  spot.position = {-4.0f, 9.0f, 3.0f};
-  spot.texel_angle = 1.2f / 2048.0f;  // a ~70 degree cone over 2048 texels
-  run("positional, band 8 samples:", spot, BandSpec{});
 }
 
 // ---------------------------------------------------------------------------------------------------

@@ -3,6 +3,8 @@
 
 #include "renderer/params.h"
 #include "renderer/renderer.h"
+#include "renderer/technique_params.h"
+#include "renderer/vsm_params.h"
 
 namespace shadowlab {
 namespace {
@@ -64,6 +66,36 @@ TEST(Params, DeclareReplacesDefault) {
   p.declare(spec);
   EXPECT_FLOAT_EQ(p.get_float("light.elevation"), 10.0f);
   EXPECT_EQ(std::count_if(p.specs().begin(), p.specs().end(), [](const ParamSpec& s) { return s.key == "light.elevation"; }), 1);
+}
+
+// Reallocated targets and rebuilt programs hold no shadow map yet: a parameter that invalidates them
+// must invalidate the map too (the renderer redraws the map from the kInvalidatesShadowMap bit alone).
+TEST(Params, TargetAndProgramBitsImplyTheShadowMapBit) {
+  std::vector<ParamSpec> all = renderer_param_specs();
+  for (auto group : {vsm_param_specs(), light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs()})
+    all.insert(all.end(), group.begin(), group.end());
+  int with_targets = 0;
+  for (const auto& spec : all) {
+    if (spec.invalidates & (kInvalidatesTargets | kInvalidatesPrograms)) {
+      EXPECT_NE(spec.invalidates & kInvalidatesShadowMap, 0u) << spec.key;
+      ++with_targets;
+    }
+  }
+  EXPECT_EQ(with_targets, 5) << "shadow.map_size, shadow.depth_format, vsm.format, vsm.blur_radius, light.type";
+}
+
+TEST(Params, ValuesInvalidatingListsTheDeclaredInputsInOrder) {
+  ParamSet p(renderer_param_specs());
+  p.declare({"test.input", "An input", ParamKind::Float, 0.5, 0.0, 1.0, "", {}, kInvalidatesShadowMap});
+  p.apply_assignment("light.azimuth=120");
+  const auto inputs = p.values_invalidating(kInvalidatesShadowMap);
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : inputs) keys.push_back(key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"light.azimuth", "light.elevation", "shadow.map_size", "shadow.depth_format",
+                                            "shadow.cull", "shadow.cull_casters", "test.input"}));
+  EXPECT_EQ(inputs.front().second, 120.0);
+  EXPECT_EQ(inputs.back().second, 0.5);
+  EXPECT_EQ(p.values_invalidating(kInvalidatesTargets).size(), 2u);
 }
 
 }  // namespace

@@ -208,11 +208,11 @@ TEST_F(IncludeConfinementTest, AnExerciseCannotIncludeTheSolution) {
   fs::create_directories(submitted.parent_path());
   std::ofstream(submitted) << "// borrowing the answer\n#include \"shadow/pcf.glsl\"\n";
   Renderer r;
-  EXPECT_FALSE(r.set_lab(pcf.hooks_for({submitted})));
+  EXPECT_FALSE(r.set_features(pcf.hooks_for({submitted})));
   EXPECT_NE(r.shader_error().find("exercise.glsl:2:"), std::string::npos) << r.shader_error();
   EXPECT_NE(r.shader_error().find("not offered"), std::string::npos) << r.shader_error();
   // The solution itself may include what it likes.
-  EXPECT_TRUE(r.set_lab(pcf.hooks(Impl::Solution))) << r.shader_error();
+  EXPECT_TRUE(r.set_features(pcf.hooks(Impl::Solution))) << r.shader_error();
 }
 
 }  // namespace

@@ -51,10 +51,10 @@ class SkipTest : public GlTest {
                                      ShadowTechnique technique = ShadowTechnique::Depth) {
     auto r = std::make_unique<Renderer>();
     r->set_scene(scene);
-    LabHooks hooks;
+    Features hooks;
     hooks.light = light;
     hooks.technique = technique;
-    EXPECT_TRUE(r->set_lab(hooks)) << r->shader_error();
+    EXPECT_TRUE(r->set_features(hooks)) << r->shader_error();
     return r;
   }
   Scene scene = spread_scene();
@@ -161,14 +161,14 @@ TEST_F(SkipTest, LightVolumeWireframeDrawsOnlyWhenShown) {
   EXPECT_GT(changed, 0.003);
   EXPECT_LT(changed, 0.1);
   // A spot light's frustum too; a point light has nothing to draw (no pass).
-  LabHooks spot;
+  Features spot;
   spot.light = LightType::Spot;
-  ASSERT_TRUE(r->set_lab(spot));
+  ASSERT_TRUE(r->set_features(spot));
   r->render(params({"view.light_volume=true", "light.position_y=10", "light.cone_deg=20"}), req);
   EXPECT_TRUE(has_pass(r->stats(), "light_volume_view"));
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r->set_lab(point));
+  ASSERT_TRUE(r->set_features(point));
   r->render(params({"view.light_volume=true", "light.position_y=4"}), req);
   EXPECT_FALSE(has_pass(r->stats(), "light_volume_view"));
 }
@@ -191,9 +191,9 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
 
   // Moments: "all" draws E[z], E[z^2] and the variance side by side; one channel draws one quad, and the
   // three channels differ.
-  LabHooks vsm;
+  Features vsm;
   vsm.technique = ShadowTechnique::Moments;
-  ASSERT_TRUE(r->set_lab(vsm));
+  ASSERT_TRUE(r->set_features(vsm));
   r->render(params({"view.debug_quad=false"}), req);
   const auto vsm_none = r->read_color();
   auto vsm_covered = [&](const std::vector<std::uint8_t>& img) { return differing(img, vsm_none, w, 0, 0, w, h); };
@@ -213,14 +213,131 @@ TEST_F(SkipTest, DebugQuadsGrowAndShowTheChosenChannel) {
   EXPECT_GT(differing(channel[0], channel[1], w, x0, y0, x0 + side, y0 + side), 0.2) << "E[z^2] looks like E[z]";
 
   // A point light's six cube faces, in the window as in the PNG.
-  LabHooks point;
+  Features point;
   point.light = LightType::Point;
-  ASSERT_TRUE(r->set_lab(point));
+  ASSERT_TRUE(r->set_features(point));
   r->render(params({"view.debug_quad=false", "light.position_y=4"}), req);
   const auto point_none = r->read_color();
   r->render(params({"view.debug_quad=true", "light.position_y=4"}), req);
   EXPECT_TRUE(has_pass(r->stats(), "debug_quad"));
   EXPECT_GT(differing(r->read_color(), point_none, w, 0, 0, w, h), 0.01);
+}
+
+}  // namespace
+}  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// The techniques that keep a shadow map, each with what its map holds as floats (depths; a point
+// light's six distance faces; the moments and their depth buffer).
+struct MapTechnique {
+  const char* name;
+  std::optional<LightType> light;
+  ShadowTechnique technique;
+  std::vector<const char*> assignments;
+};
+
+const MapTechnique kMapTechniques[] = {
+    {"directional depth map", {}, ShadowTechnique::Depth, {}},
+    {"spot depth map", LightType::Spot, ShadowTechnique::Depth, {"light.position_y=10", "light.cone_deg=30"}},
+    {"point cube map", LightType::Point, ShadowTechnique::Depth, {"light.position_y=4"}},
+    {"moments, blurred", {}, ShadowTechnique::Moments, {"vsm.blur_radius=2"}},
+};
+
+std::vector<float> map_contents(const Renderer& r, const MapTechnique& t) {
+  int size = 0;
+  std::vector<float> out = r.read_shadow_depth(&size);
+  if (t.technique == ShadowTechnique::Moments) {
+    const std::vector<float> moments = r.read_moments(&size);
+    out.insert(out.end(), moments.begin(), moments.end());
+  }
+  if (t.light == LightType::Point) {
+    for (int f = 0; f < 6; ++f) {
+      const std::vector<float> face = r.read_cube_face(f, &size);
+      out.insert(out.end(), face.begin(), face.end());
+    }
+  }
+  return out;
+}
+
+// Every parameter the renderer declares, in every group.
+std::vector<ParamSpec> every_spec() {
+  std::vector<ParamSpec> all = renderer_param_specs();
+  for (auto group : {vsm_param_specs(), light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs()})
+    all.insert(all.end(), group.begin(), group.end());
+  return all;
+}
+
+// A valid value other than `current`.
+double other_value(const ParamSpec& s, double current) {
+  switch (s.kind) {
+    case ParamKind::Bool: return current != 0.0 ? 0.0 : 1.0;
+    case ParamKind::Choice: return current + 1.0 < static_cast<double>(s.choices.size()) ? current + 1.0 : 0.0;
+    default: return current != s.max ? s.max : s.min;
+  }
+}
+
+class InvalidationTest : public SkipTest {
+ protected:
+  ParamSet every_param(const MapTechnique& t) {
+    ParamSet p(every_spec());
+    p.apply_assignment("view.debug_quad=false");
+    p.apply_assignment("shadow.map_size=256");
+    for (const char* a : t.assignments) p.apply_assignment(a);
+    return p;
+  }
+};
+
+// A parameter the renderer has never heard of redraws the map just by declaring kInvalidatesShadowMap;
+// one without the bit does not, whatever the technique.
+TEST_F(InvalidationTest, ADeclaredShadowMapBitRedrawsTheMapAndNothingElseDoes) {
+  for (const MapTechnique& t : kMapTechniques) {
+    SCOPED_TRACE(t.name);
+    auto r = renderer(t.light, t.technique);
+    ParamSet p = every_param(t);
+    p.declare({"test.map_input", "Something the shadow pass reads", ParamKind::Float, 1.0, 0.0, 2.0, "", {},
+               kInvalidatesShadowMap});
+    p.declare({"test.view_input", "Something only the lit pass reads", ParamKind::Float, 1.0, 0.0, 2.0, "", {}});
+    r->render(p, request());
+    ASSERT_EQ(r->stats().shadow_passes, 1);
+    r->render(p, request());
+    EXPECT_EQ(r->stats().shadow_passes, 1) << "nothing changed";
+    p.set("test.view_input", 1.5);
+    r->render(p, request());
+    EXPECT_EQ(r->stats().shadow_passes, 1) << "a parameter without the bit changed";
+    p.set("test.map_input", 1.5);
+    r->render(p, request());
+    EXPECT_EQ(r->stats().shadow_passes, 2) << "a parameter with the bit changed";
+    r->render(p, request());
+    EXPECT_EQ(r->stats().shadow_passes, 2);
+  }
+}
+
+// The audit of the declarations: every parameter that does not declare kInvalidatesShadowMap leaves
+// every technique's map exactly as it was (so skipping the map on its change can never show a stale
+// one). Each is set to another value and the map drawn again by force.
+TEST_F(InvalidationTest, NoParameterWithoutTheBitChangesAnyMap) {
+  for (const MapTechnique& t : kMapTechniques) {
+    SCOPED_TRACE(t.name);
+    auto r = renderer(t.light, t.technique);
+    const ParamSet base = every_param(t);
+    r->render(base, request());
+    const std::vector<float> reference = map_contents(*r, t);
+    ASSERT_FALSE(reference.empty());
+    int checked = 0;
+    for (const ParamSpec& spec : base.specs()) {
+      if (spec.invalidates & kInvalidatesShadowMap) continue;
+      ParamSet changed = base;
+      changed.set(spec.key, other_value(spec, base.get(spec.key)));
+      r->invalidate_shadow_map();
+      r->render(changed, request());
+      EXPECT_EQ(map_contents(*r, t), reference) << spec.key << "=" << changed.format(spec.key)
+                                                << " changed the map: it must declare kInvalidatesShadowMap";
+      ++checked;
+    }
+    EXPECT_GE(checked, 15);
+  }
 }
 
 }  // namespace

@@ -24,8 +24,8 @@ class VsmTest : public GlTest {
     for (const auto& spec : vsm_param_specs()) params.declare(spec);
     params.apply_assignment("view.debug_quad=false");
   }
-  static LabHooks moments_hooks() {
-    LabHooks hooks;
+  static Features moments_hooks() {
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     return hooks;
   }
@@ -54,7 +54,7 @@ TEST_F(VsmTest, MomentsTargetsExistOnlyWhileALabUsesThem) {
   EXPECT_EQ(r.moments_targets().size, 0) << "a depth lab allocates no moments texture";
   const int depth_textures = live_gl_objects(GlKind::Texture);
 
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   r.render(params, request());
   const MomentsTargetInfo info = r.moments_targets();
   EXPECT_EQ(info.size, 1024);
@@ -72,7 +72,7 @@ TEST_F(VsmTest, MomentsTargetsExistOnlyWhileALabUsesThem) {
   r.render(params, request());
   EXPECT_EQ(r.moments_targets().internal_format, GL_RG16F);
 
-  ASSERT_TRUE(r.set_lab({}));
+  ASSERT_TRUE(r.set_features({}));
   r.render(params, request());
   EXPECT_EQ(r.moments_targets().size, 0) << "back to a depth lab: the moments targets are gone";
   EXPECT_EQ(live_gl_objects(GlKind::Texture), depth_textures);
@@ -81,7 +81,7 @@ TEST_F(VsmTest, MomentsTargetsExistOnlyWhileALabUsesThem) {
 TEST_F(VsmTest, RadiusZeroRunsNoBlurPassAndAllocatesNothing) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   FrameRequest req = request();
   r.render(params, req);
   const int textures = live_gl_objects(GlKind::Texture);
@@ -110,7 +110,7 @@ TEST_F(VsmTest, RadiusZeroRunsNoBlurPassAndAllocatesNothing) {
 TEST_F(VsmTest, MomentsAndBlurRunOnlyWhenTheirInputsChange) {
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   params.apply_assignment("vsm.blur_radius=2");
   FrameRequest req = request();
   for (int i = 0; i < 4; ++i) {
@@ -141,7 +141,7 @@ TEST_F(VsmTest, NoNanOrInfInMomentsOrLitOutput) {
   for (int number : {3, 4, 5}) {
     const Lab& lab = *find_lab(number);
     for (Impl impl : {Impl::Exercise, Impl::Solution}) {
-      ASSERT_TRUE(r.set_lab(lab.hooks(impl))) << r.shader_error();
+      ASSERT_TRUE(r.set_features(lab.hooks(impl))) << r.shader_error();
       r.set_scene(number == 4 ? make_stacked_occluders_scene() : scene);
       for (const char* format : {"RG32F", "RG16F"}) {
         for (const char* radius : {"0", "4"}) {
@@ -173,7 +173,7 @@ TEST_F(VsmTest, FirstMomentIsThePlainDepthAndBackgroundTheClearValue) {
   r.render(params, request());
   int n = 0;
   const std::vector<float> depth = r.read_shadow_depth(&n);
-  ASSERT_TRUE(r.set_lab(moments_hooks())) << r.shader_error();
+  ASSERT_TRUE(r.set_features(moments_hooks())) << r.shader_error();
   r.render(params, request());
   int m = 0;
   const std::vector<float> moments = r.read_moments(&m);
@@ -200,7 +200,7 @@ TEST_F(VsmTest, RemapViewTintsOnlyTheColourAndOnlyWhereTheRemapActs) {
   scene = make_stacked_occluders_scene();
   Renderer r;
   r.set_scene(scene);
-  ASSERT_TRUE(r.set_lab(find_lab(4)->hooks(Impl::Solution))) << r.shader_error();
+  ASSERT_TRUE(r.set_features(find_lab(4)->hooks(Impl::Solution))) << r.shader_error();
   params.apply_assignment("vsm.blur_radius=4");
   params.apply_assignment("vsm.blur_sigma=2");
   r.render(params, request(true));
@@ -229,7 +229,7 @@ TEST_F(VsmTest, NoGlObjectsAliveAfterShutdown) {
   {
     Renderer r;
     r.set_scene(scene);
-    ASSERT_TRUE(r.set_lab(find_lab(5)->hooks(Impl::Solution))) << r.shader_error();
+    ASSERT_TRUE(r.set_features(find_lab(5)->hooks(Impl::Solution))) << r.shader_error();
     params.apply_assignment("vsm.blur_radius=2");
     params.apply_assignment("vsm.show_remap=true");
     params.apply_assignment("view.debug_quad=true");

@@ -41,8 +41,8 @@ class CullDirective {
   int cull_ = 0;
 };
 
-constexpr const char* kExercise = "labs/01_bias_tuning/exercise.glsl";
-constexpr const char* kSolution = "labs/01_bias_tuning/solution.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
+constexpr const char* kSolution = SHADOWLAB_LAB_FOLDER "/solution.glsl";
 
 // A constant that works at one light and one map size fails at another: the held-out cases span low
 // and high lights (the depth change across one texel grows with tan(angle of incidence)) and coarse and
@@ -131,25 +131,13 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.hooks();
-  const auto m = ctx.measure(params, hooks, "lab01_grazing");
-  grade_hard_shadow(result, "grazing", m.metrics, kLimits);
-  result.metrics["grazing"]["render_ms"] = m.render_ms;
-  result.metrics["grazing"]["oracle_ms"] = m.oracle_ms;
-  for (const auto& c : draw_directional_cases(ctx, kHeldOut)) {
-    const auto h = ctx.measure(c.apply(ctx, params), hooks, "lab01_" + c.tag);
-    grade_hard_shadow(result, c.tag, h.metrics, kLimits);
-    result.conditions.push_back(c.to_json());
-  }
-  ctx.use_default_scene();
+  grade_lab_and_held_out_lights(ctx, result, "lab01", "grazing", params, params, kHeldOut, kLimits);
 }
 
 }  // namespace
 
-Lab make_lab_bias_tuning() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 1;
-  lab.slug = "bias_tuning";
   lab.title = "Bias: acne vs peter-panning";
   lab.summary = "Write a slope-scaled bias and pick the culling so a grazing light shows neither artifact.";
   lab.exercise_files = {kExercise};
@@ -167,12 +155,13 @@ Lab make_lab_bias_tuning() {
       {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.includes["lab/bias.glsl"] = files.at(0).string();
     hooks.shadow_cull_override = CullDirective(files.at(0));
     return hooks;
   };
   lab.check = check_bias;
+  lab.bench = {{"hard", "hard", {}}};
   return lab;
 }
 

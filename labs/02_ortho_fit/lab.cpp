@@ -80,7 +80,7 @@ FitVerification verify_light_fit(const std::function<LightView(const Bounds&, co
 
 namespace {
 
-constexpr const char* kExercise = "labs/02_ortho_fit/exercise.cpp";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.cpp";
 // The two fits have different texel sizes, so an edge band in texels would judge them on different
 // pixels; a band of fixed width in screen pixels judges both on the same ones (as the benchmark does).
 constexpr int kBandPixels = 2;
@@ -163,8 +163,8 @@ LightFit fit_for_file(const std::filesystem::path& file) {
 // (so the stock exercise, which is the fixed box, cannot pass); reported cases are measured only.
 void compare_with_fixed(CheckContext& ctx, CheckResult& result, const std::string& tag, const ParamSet& params,
                         const Bounds* view, bool graded) {
-  LabHooks fitted = ctx.hooks();
-  LabHooks fixed = fitted;
+  Features fitted = ctx.hooks();
+  Features fixed = fitted;
   fixed.light_fit = [](const Bounds&, const glm::vec3& to_light) { return fixed_tutorial_ortho(to_light); };
   BandSpec band = grading_band();
   band.fixed_screen_pixels = kBandPixels;
@@ -240,10 +240,8 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_ortho_fit() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 2;
-  lab.slug = "ortho_fit";
   lab.title = "Ortho light matrix fitted to the scene";
   lab.summary = "Replace the tutorials' fixed ortho box with one fitted to the bounding box, for any light direction.";
   lab.exercise_files = {kExercise};
@@ -262,7 +260,7 @@ Lab make_lab_ortho_fit() {
       {"sharp", "A 2048^2 map with the fitted box: fine edges.", {{"shadow.map_size", "2048"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.light_fit = fit_for_file(files.at(0));
     return hooks;
   };

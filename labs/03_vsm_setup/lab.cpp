@@ -18,9 +18,9 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExerciseMoments = "labs/03_vsm_setup/exercise_moments.glsl";
-constexpr const char* kExerciseChebyshev = "labs/03_vsm_setup/exercise_chebyshev.glsl";
-constexpr const char* kVisibility = "labs/03_vsm_setup/visibility.glsl";
+constexpr const char* kExerciseMoments = SHADOWLAB_LAB_FOLDER "/exercise_moments.glsl";
+constexpr const char* kExerciseChebyshev = SHADOWLAB_LAB_FOLDER "/exercise_chebyshev.glsl";
+constexpr const char* kVisibility = SHADOWLAB_LAB_FOLDER "/visibility.glsl";
 
 // The bound for E[z] against the plain depth map: both are gl_FragCoord.z of the same triangle
 // stored in 32-bit floats, so anything above float rounding means the moments pass stores something else.
@@ -170,7 +170,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   params.set("view.debug_quad", 0.0);
   // 1. The lit result against the oracle (reported: lab 4 fixes the bias and the bleeding; the bound
   // itself is graded by the probe above).
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   const auto m = ctx.measure(params, hooks, std::string("lab03_") + impl_name(ctx.impl));
   result.metrics["oracle"] = to_json(m.metrics);
   result.metrics["render_ms"] = m.render_ms;
@@ -180,7 +180,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
   Renderer& r = ctx.renderer;
   ParamSet depth_params = params;
   depth_params.set_from_string("shadow.depth_format", "32F");
-  LabHooks depth_hooks;
+  Features depth_hooks;
   depth_hooks.light_fit = hooks.light_fit;
   depth_hooks.shadow_cull_override = hooks.shadow_cull_override;
   ctx.use(depth_hooks);
@@ -231,10 +231,8 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_vsm_setup() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 3;
-  lab.slug = "vsm_setup";
   lab.title = "Variance shadow maps: setup";
   lab.summary = "Store the moments (z, z^2) in a filterable RG32F map and light with Chebyshev's bound.";
   lab.exercise_files = {kExerciseMoments, kExerciseChebyshev};
@@ -251,7 +249,7 @@ Lab make_lab_vsm_setup() {
       {"RG32F", "The fix for RG16F: full floats keep E[z^2] - E[z]^2 >= 0.", {{"vsm.format", "RG32F"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     hooks.includes["lab/visibility.glsl"] = kVisibility;
     hooks.includes["lab/moments.glsl"] = files.at(0).string();

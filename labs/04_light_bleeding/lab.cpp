@@ -20,7 +20,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/04_light_bleeding/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/vsm/visibility.glsl";       // the renderer's own VSM test
 constexpr const char* kUnfixed = "labs/03_vsm_setup/visibility.glsl";  // lab 3's test: no bias, no remap
 
@@ -142,8 +142,8 @@ void check_light_bleeding(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
   params.set("vsm.show_remap", 0.0);
-  const LabHooks hooks = ctx.hooks();
-  LabHooks unfixed = hooks;
+  const Features hooks = ctx.hooks();
+  Features unfixed = hooks;
   unfixed.includes["lab/visibility.glsl"] = kUnfixed;
 
   // 1. The default scene, reported: the fix must not hurt an ordinary scene.
@@ -199,10 +199,8 @@ void check_light_bleeding(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_light_bleeding() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 4;
-  lab.slug = "light_bleeding";
   lab.title = "VSM: bias and light bleeding";
   lab.summary = "Cut the light that bleeds through stacked occluders: bias z, remap [0, delta] to 0.";
   lab.exercise_files = {kExercise};
@@ -223,12 +221,17 @@ Lab make_lab_light_bleeding() {
   };
   lab.offered_includes = {"lab/bias.glsl", "lab/chebyshev.glsl"};
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     hooks.includes["lab/visibility.glsl"] = files.at(0).string();
     return hooks;
   };
   lab.check = check_light_bleeding;
+  // One technique per blur radius; the quick run measures 0, 2 and 4.
+  for (int r : {0, 1, 2, 4, 8}) {
+    const bool quick = r == 0 || r == 2 || r == 4;
+    lab.bench.push_back({"vsm r" + std::to_string(r), "VSM", {{"vsm.blur_radius", std::to_string(r)}}, true, quick});
+  }
   return lab;
 }
 

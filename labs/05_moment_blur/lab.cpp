@@ -21,7 +21,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/05_moment_blur/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/vsm/gaussian_blur.glsl";  // the renderer's own blur
 
 // The bound per texel. Float32 sums of at most 33 weighted values in [0, 1], twice, are off by
@@ -59,7 +59,7 @@ double median(std::vector<double> v) {
 void check_moment_blur(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   Renderer& r = ctx.renderer;
 
   // 1. The lit result at the lab's settings, and the oracle's edge error by radius (reported).
@@ -169,10 +169,8 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_moment_blur() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 5;
-  lab.slug = "moment_blur";
   lab.title = "VSM: Gaussian blur of the moments";
   lab.summary = "Blur the moments in two separable passes (X, then Y) for soft, alias-free shadow edges.";
   lab.exercise_files = {kExercise};
@@ -201,7 +199,7 @@ Lab make_lab_moment_blur() {
        {{"vsm.blur_radius", "4"}, {"vsm.blur_sigma", "2"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.technique = ShadowTechnique::Moments;
     hooks.includes["lab/blur.glsl"] = files.at(0).string();
     return hooks;

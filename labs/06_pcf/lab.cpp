@@ -17,7 +17,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/06_pcf/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/shadow/pcf.glsl";  // the renderer's own PCF
 
 // The kernel alone (labs/probe.h): a 64 x 64 depth map holding a straight edge (an occluder at depth 0.3
@@ -225,10 +225,8 @@ void check_pcf(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_pcf() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 6;
-  lab.slug = "pcf";
   lab.title = "Percentage-closer filtering";
   lab.summary = "Average the shadow test over N x N texels, in a loop or with the hardware's sampler2DShadow.";
   lab.exercise_files = {kExercise};
@@ -249,6 +247,9 @@ Lab make_lab_pcf() {
   lab.offered_includes = {"lab/bias.glsl"};
   lab.make_hooks = visibility_lab_hooks();
   lab.check = check_pcf;
+  for (const auto& spec : lab.params)  // one technique per kernel size
+    if (spec.key == "pcf.kernel")
+      for (const auto& choice : spec.choices) lab.bench.push_back({"pcf " + choice, "PCF", {{"pcf.kernel", choice}}});
   return lab;
 }
 

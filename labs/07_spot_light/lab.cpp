@@ -18,7 +18,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/07_spot_light/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/shadow/spot.glsl";  // the renderer's own spot test
 
 struct SpotPlace {
@@ -74,7 +74,7 @@ const HardLimits kLimits{
 
 void check_spot(CheckContext& ctx, CheckResult& result) {
   probe_bias(ctx, result);
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   // The lab's two places, then two held-out ones drawn from the seed: around the scene's centre at 6 to
   // 9 units, 25 to 60 degrees up, with another cone and map size.
   std::vector<SpotPlace> places(std::begin(kPlaces), std::end(kPlaces));
@@ -116,10 +116,8 @@ void check_spot(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_spot_light() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 7;
-  lab.slug = "spot_light";
   lab.title = "Spot light: perspective shadow map";
   lab.summary = "A flashlight: perspective projection from the light's position, near/far fitted, bias in world units.";
   lab.exercise_files = {kExercise};

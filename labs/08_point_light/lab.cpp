@@ -18,7 +18,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/08_point_light/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/shadow/cube.glsl";  // the renderer's own cube test
 
 // "Shadows on every side": in each quarter around the light (in the ground plane) at least this many
@@ -85,7 +85,7 @@ void check_point(CheckContext& ctx, CheckResult& result) {
   probe_bias(ctx, result);
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   const OrbitCamera camera = OrbitCamera::framing(ctx.scene().bounds(), 30.0f, kCameraPitch);
   Renderer& r = ctx.renderer;
   std::vector<float> faces[2][6];
@@ -140,10 +140,8 @@ void check_point(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_point_light() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 8;
-  lab.slug = "point_light";
   lab.title = "Point light: cube shadow map";
   lab.summary = "Six 90-degree faces storing the distance to the light; look up by direction, compare distances.";
   lab.exercise_files = {kExercise};

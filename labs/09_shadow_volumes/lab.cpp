@@ -18,7 +18,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr const char* kExercise = "labs/09_shadow_volumes/exercise.glsl";
+constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/volume/volume.glsl";  // the renderer's own volumes
 
 // The target: shadow volumes are exact hard shadows, so they must agree with the ray-cast truth
@@ -69,7 +69,7 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
 }
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
-  const LabHooks hooks = ctx.hooks();
+  const Features hooks = ctx.hooks();
   BandSpec band = grading_band();
   band.fixed_screen_pixels = kBandPixels;
   ParamSet base = ctx.params();
@@ -127,10 +127,8 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
 
 }  // namespace
 
-Lab make_lab_shadow_volumes() {
+Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
-  lab.number = 9;
-  lab.slug = "shadow_volumes";
   lab.title = "Stencil shadow volumes";
   lab.summary = "Silhouettes from adjacency in a geometry shader, extruded to infinity; z-pass vs z-fail.";
   lab.exercise_files = {kExercise};
@@ -149,12 +147,14 @@ Lab make_lab_shadow_volumes() {
       {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
-    LabHooks hooks;
+    Features hooks;
     hooks.technique = ShadowTechnique::ShadowVolumes;
     hooks.includes["lab/volume.glsl"] = files.at(0).string();
     return hooks;
   };
   lab.check = check_volumes;
+  // Exact hard shadows on closed meshes, the GPU reference (no map to size).
+  lab.bench = {{"volumes", "shadow volumes", {{"volume.method", "z-fail"}}, false}};
   return lab;
 }
 

@@ -4,9 +4,8 @@
 uniform samplerCube u_shadow_cube;
 uniform float u_texel_angle;  // angle one cube-map texel spans at a face's centre (2 / size)
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)
+#include "shadow/slope.glsl"
 
-// tan(angle) grows without bound at grazing light; past this the bias would lift whole shadows.
-const float MAX_TAN_INCIDENCE = 10.0;
 // One texel's worth of distance is always subtracted: the stored distance belongs to the texel's centre
 // direction, not the fragment's.
 const float CONSTANT_TEXELS = 1.0;
@@ -16,7 +15,6 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   float distance_to_light = length(from_light);
   float stored = texture(u_shadow_cube, from_light).r;
   float texel_world = distance_to_light * u_texel_angle;  // a texel's footprint at this distance
-  float tan_incidence = min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l, MAX_TAN_INCIDENCE);
-  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * tan_incidence);
+  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * shadow_tan_incidence(n_dot_l));
   return distance_to_light - bias > stored ? 0.0 : 1.0;
 }

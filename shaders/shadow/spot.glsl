@@ -7,8 +7,9 @@ uniform float u_light_near;   // the fitted near and far planes of the spot's pr
 uniform float u_light_far;
 uniform float u_texel_angle;  // world size of one texel per unit of distance: 2 tan(cone) / size
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)
+#include "shadow/slope.glsl"
 
-const float MAX_TAN_INCIDENCE = 10.0;
+// One texel's worth of distance is always subtracted: the stored depth belongs to the texel's centre.
 const float CONSTANT_TEXELS = 1.0;
 
 // Window depth [0, 1] back to the distance along the light's axis (inverting the perspective matrix).
@@ -23,7 +24,6 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   float stored = linear_depth(texture(u_shadow_map, s.xy).r);
   float mine = linear_depth(s.z);
   float texel_world = mine * u_texel_angle;
-  float tan_incidence = min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l, MAX_TAN_INCIDENCE);
-  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * tan_incidence);
+  float bias = texel_world * (CONSTANT_TEXELS + u_bias_slope * shadow_tan_incidence(n_dot_l));
   return mine - bias > stored ? 0.0 : 1.0;
 }

@@ -1,0 +1,143 @@
+#include "renderer/debug_views.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "renderer/lit_pass.h"
+
+namespace shadowlab {
+
+DebugViews::DebugViews()
+    : normals_({"shaders/debug/normals.vert", "shaders/debug/normals.geom", "shaders/debug/normals.frag", {}, {}}),
+      lines_({"shaders/debug/lines.vert", {}, "shaders/debug/lines.frag", {}, {}}) {
+  if (!normals_.rebuild() || !lines_.rebuild())
+    throw std::runtime_error("cannot build the debug views' shaders:\n" + normals_.error() + lines_.error());
+}
+
+void DebugViews::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(normals_);
+  f(lines_);
+  if (wireframe_volumes_) wireframe_volumes_->for_each_program(f);
+}
+
+void DebugViews::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
+  includes_ = includes;
+  rules_ = rules;
+  wireframe_volumes_.reset();
+}
+
+std::vector<VolumeMeshReport> DebugViews::volume_report() const {
+  return wireframe_volumes_ ? wireframe_volumes_->report() : std::vector<VolumeMeshReport>{};
+}
+
+void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
+  const ParamSet& params = ctx.params;
+  shadow.draw_views(ctx, lit);
+  if (params.get_bool("view.normals")) ctx.timed("normals_view", [&] { normals(ctx, lit); });
+  if (params.get_bool("view.volumes")) ctx.timed("volumes_view", [&] { volumes_wireframe(ctx, shadow, lit); });
+  // A point light's six frusta fill all space: nothing to draw.
+  if (params.get_bool("view.light_volume") && ctx.light.type != LightType::Point)
+    ctx.timed("light_volume_view", [&] { light_volume(ctx, lit); });
+  if (shadow.shape().has_map && params.get_bool("view.debug_quad"))
+    ctx.timed("debug_quad", [&] { debug_quads(ctx, shadow, lit); });
+}
+
+void DebugViews::normals(PassContext& ctx, LitPass& lit) {
+  if (normals_u_.generation != normals_.generation())
+    normals_u_ = {normals_.generation(), Uniform(normals_.id(), "u_view_proj"), Uniform(normals_.id(), "u_normal_length")};
+  bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // lines over the picture; the G-buffer stays as drawn
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glUseProgram(normals_.id());
+  normals_u_.view_proj.set(ctx.camera_view_proj());
+  // A few percent of the scene's size: long enough to see, short enough not to hide the scene.
+  const Bounds b = ctx.scene.bounds();
+  normals_u_.length.set(b.empty() ? 0.1f : 0.03f * glm::length(b.extent()));
+  ctx.gpu_scene.bind();
+  for (const auto& range : ctx.gpu_scene.ranges()) {
+    ctx.gpu_scene.draw(range);
+    ++ctx.stats.draws;
+  }
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
+
+void DebugViews::volumes_wireframe(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
+  // The shadow-volume technique's own volumes (what the frame's stencil counted), else the view's.
+  auto* volumes = dynamic_cast<ShadowVolumePass*>(&shadow);
+  if (!volumes) {
+    if (!wireframe_volumes_) {
+      wireframe_volumes_ = std::make_unique<ShadowVolumePass>();
+      wireframe_volumes_->set_includes(includes_, rules_);
+      wireframe_scene_stale_ = true;
+    }
+    if (wireframe_scene_stale_) {
+      wireframe_volumes_->set_scene(ctx.scene);
+      wireframe_scene_stale_ = false;
+    }
+    volumes = wireframe_volumes_.get();
+  }
+  bind_color_target(lit.framebuffer(), lit.width(), lit.height());
+  // Lines running to infinity need the infinite far plane, whatever the technique drew with; the depth
+  // test against the scene is then only approximate for the other techniques (a different projection).
+  glm::mat4 projection = ctx.camera_projection;  // the same field of view, its far plane moved to infinity
+  const float near_plane = projection[3][2] / (projection[2][2] - 1.0f);
+  projection[2][2] = -1.0f;
+  projection[3][2] = -2.0f * near_plane;
+  const glm::mat4 view_proj = (ctx.infinite_far_plane ? ctx.camera_projection : projection) * ctx.camera_view;
+  if (!ctx.infinite_far_plane) glDisable(GL_DEPTH_TEST);
+  const bool caps = technique_choice(ctx.params, "volume.method") == "z-fail";
+  volumes->draw_wireframe(view_proj, ctx.light.vector4(), caps, ctx.stats.draws);
+  glEnable(GL_DEPTH_TEST);
+}
+
+void DebugViews::light_volume(PassContext& ctx, LitPass& lit) {
+  // The 12 edges of the shadow map's volume: the clip cube [-1, 1]^3 taken back to world space through
+  // the inverse of the light's view-projection (an ortho box or a spot's frustum alike).
+  const glm::mat4 to_world = glm::inverse(ctx.light.view.view_projection());
+  glm::vec3 corner[8];
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = to_world * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
+    corner[i] = glm::vec3(c) / c.w;
+  }
+  std::vector<glm::vec3> lines;
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) lines.insert(lines.end(), {corner[i], corner[i | bit]});
+  if (!lines_vao_) {
+    lines_vao_ = GlVertexArray::create();
+    lines_vbo_ = GlBuffer::create();
+    glBindVertexArray(lines_vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, lines_vbo_.id());
+    glBufferData(GL_ARRAY_BUFFER, 24 * sizeof(glm::vec3), nullptr, GL_DYNAMIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  }
+  glBindVertexArray(lines_vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, lines_vbo_.id());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(lines.size() * sizeof(glm::vec3)), lines.data());
+  if (lines_u_.generation != lines_.generation())
+    lines_u_ = {lines_.generation(), Uniform(lines_.id(), "u_view_proj"), Uniform(lines_.id(), "u_color")};
+  bind_color_target(lit.framebuffer(), lit.width(), lit.height());
+  glDisable(GL_DEPTH_TEST);  // the whole box, also where the scene hides it
+  glUseProgram(lines_.id());
+  lines_u_.view_proj.set(ctx.camera_view_proj());
+  lines_u_.color.set(glm::vec4(1.0f, 0.85f, 0.2f, 1.0f));
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
+  ++ctx.stats.draws;
+  glEnable(GL_DEPTH_TEST);
+}
+
+void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
+  bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // the quads must not overwrite the G-buffer
+  glDisable(GL_DEPTH_TEST);
+  // Squares along the bottom right (clear of an overlay on the left), view.debug_quad_size of the frame height.
+  const int side =
+      std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
+  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao});
+  glEnable(GL_DEPTH_TEST);
+  glViewport(0, 0, lit.width(), lit.height());
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,118 @@
+#include "renderer/depth_map_pass.h"
+
+#include <stdexcept>
+
+namespace shadowlab {
+
+namespace {
+
+GLenum depth_internal_format(const std::string& name) {
+  if (name == "16") return GL_DEPTH_COMPONENT16;
+  if (name == "32F") return GL_DEPTH_COMPONENT32F;
+  return GL_DEPTH_COMPONENT24;
+}
+
+}  // namespace
+
+DepthMapPass::DepthMapPass()
+    : depth_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}}),
+      quad_({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}}) {}
+
+std::map<std::string, std::string> DepthMapPass::default_includes(LightType light) {
+  // A perspective map's depth is not linear in distance: the spot's test compares distances.
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+          {"lab/visibility.glsl", light == LightType::Spot ? "shaders/shadow/spot.glsl" : "shaders/shadow/hard.glsl"}};
+}
+
+bool DepthMapPass::set_includes(const IncludeMap&, const IncludeRules&) {
+  // Its programs include no feature files; built here so that errors show when a feature is switched on.
+  const bool depth_ok = depth_.rebuild();
+  return quad_.rebuild() && depth_ok;
+}
+
+void DepthMapPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(depth_);
+  f(quad_);
+}
+
+bool DepthMapPass::ensure_targets(const ParamSet& params) {
+  const int size = std::stoi(params.get_choice("shadow.map_size"));
+  const std::string& format = params.get_choice("shadow.depth_format");
+  if (size == size_ && format == format_) return false;
+  depth_texture_ = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
+  fbo_ = GlFramebuffer::create();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_texture_.id(), 0);
+  glDrawBuffer(GL_NONE);  // depth only: the course's first pass needs no colour buffer
+  glReadBuffer(GL_NONE);
+  check_framebuffer("shadow map");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  size_ = size;
+  format_ = format;
+  return true;
+}
+
+void DepthMapPass::draw_map(PassContext& ctx) {
+  ctx.timed("shadow", [&] { ctx.count_texels([&] { draw_depth(ctx); }); });
+}
+
+void DepthMapPass::draw_depth(PassContext& ctx) {
+  if (depth_u_.generation != depth_.generation())
+    depth_u_ = {depth_.generation(), Uniform(depth_.id(), "u_light_view_proj")};
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glViewport(0, 0, size_, size_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  set_shadow_culling(ctx.cull);
+  glUseProgram(depth_.id());
+  const glm::mat4 light_view_proj = ctx.light.view.view_projection();
+  depth_u_.light_view_proj.set(light_view_proj);
+  const auto counts = ctx.gpu_scene.draw_casters(&light_view_proj, 1, ctx.params.get_bool("shadow.cull_casters"));
+  ctx.stats.draws += counts.drawn;
+  ctx.stats.casters_culled += counts.culled;
+  glDisable(GL_CULL_FACE);
+}
+
+void DepthMapPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
+  u.pcf_radius.set(std::stoi(technique_choice(params, "pcf.kernel")) / 2);
+  u.pcf_hardware.set(technique_param(params, "pcf.hardware") != 0.0 ? 1 : 0);
+  if (u.shadow_map_compare.present()) {
+    // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
+    // the four comparisons bilinearly); unit 0 keeps reading raw depths.
+    if (!compare_sampler_) compare_sampler_ = make_compare_sampler();
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
+    glBindSampler(1, compare_sampler_.id());
+    u.shadow_map_compare.set(1);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
+}
+
+void DepthMapPass::draw_debug_quads(const DebugQuadArea& area) {
+  if (quad_u_.generation != quad_.generation())
+    quad_u_ = {quad_.generation(), Uniform(quad_.id(), "u_depth_map"), Uniform(quad_.id(), "u_rect")};
+  glViewport(area.width - area.side - 8, 8, area.side, area.side);
+  glUseProgram(quad_.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
+  quad_u_.depth_map.set(0);
+  quad_u_.rect.set(glm::vec4(0, 0, 1, 1));
+  glBindVertexArray(area.empty_vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::vector<float> DepthMapPass::read_depth(int* size) const {
+  *size = size_;
+  return read_pixels(fbo_.id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
+}
+
+std::vector<std::uint8_t> DepthMapPass::image(int* size) const {
+  const std::vector<float> depth = read_depth(size);  // sets *size
+  return depth_map_image(depth, *size);
+}
+
+}  // namespace shadowlab

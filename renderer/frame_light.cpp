@@ -1,0 +1,41 @@
+#include "renderer/frame_light.h"
+
+#include <cmath>
+
+namespace shadowlab {
+
+void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit) {
+  type = pinned ? *pinned : light_type(params);
+  to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
+  if (type == LightType::Directional) {
+    view = fit ? fit(bounds, to_light) : fit_light_ortho(bounds, to_light);
+    return;
+  }
+  position = {technique_param(params, "light.position_x"), technique_param(params, "light.position_y"),
+              technique_param(params, "light.position_z")};
+  const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+  const glm::vec3 aim = centre - position;
+  spot_direction = glm::length(aim) > 1e-6f ? glm::normalize(aim) : glm::vec3(0, -1, 0);
+  to_light = -spot_direction;
+  spot_cone_deg = static_cast<float>(technique_param(params, "light.cone_deg"));
+  if (type == LightType::Spot) {
+    view = fit_spot_light(bounds, position, spot_direction, spot_cone_deg);
+  } else {
+    cube = point_light_views(bounds, position);
+    view = LightView{};
+    view.view = cube.view[0];
+    view.projection = cube.projection;
+  }
+}
+
+glm::vec4 FrameLight::vector4() const {
+  return type == LightType::Directional ? glm::vec4(to_light, 0.0f) : glm::vec4(position, 1.0f);
+}
+
+float FrameLight::texel_angle(int map_size) const {
+  if (type == LightType::Spot) return 2.0f * std::tan(glm::radians(spot_cone_deg)) / static_cast<float>(map_size);
+  if (type == LightType::Point) return 2.0f / static_cast<float>(map_size);  // a 90-degree face: 2 tan(45 deg) / size
+  return 0.0f;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,43 @@
+// The frame's light, CPU only: its type, its direction or position from the parameters, the view and
+// projection of its shadow map (a feature's fit for a directional light, a spot's cone, a point light's
+// six faces). The light-type decisions of a frame live here, in one place.
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "renderer/light.h"
+#include "renderer/params.h"
+#include "renderer/technique_params.h"
+
+namespace shadowlab {
+
+// How a directional light's view and projection are fitted to the scene (default: fit_light_ortho).
+using LightFit = std::function<LightView(const Bounds& bounds, const glm::vec3& to_light)>;
+
+struct FrameLight {
+  LightType type = LightType::Directional;
+  // Toward a directional light; for spot and point lights, from the scene's centre toward the light
+  // (for display: their lit pass uses the position).
+  glm::vec3 to_light{0, 1, 0};
+  glm::vec3 position{0.0f};  // spot and point lights, at light.position_*
+  glm::vec3 spot_direction{0, -1, 0};
+  float spot_cone_deg = 45.0f;
+  LightView view;        // the shadow map's view and projection (a point light: face 0's, for display)
+  CubeLightViews cube;   // a point light's six faces
+
+  // From the parameters: `pinned` is a feature's fixed light type (else light.type decides), `fit` a
+  // directional light's fit (empty: fit_light_ortho). A spot aims at the scene's centre with the
+  // half-angle light.cone_deg. Fields the new type does not use keep their last values.
+  void update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit);
+
+  // xyz the position (w = 1) or the direction toward the light (w = 0).
+  glm::vec4 vector4() const;
+  // The angle one texel of a map `map_size` wide spans at the map's centre: a spot's 2 tan(cone) / size,
+  // a cube face's 2 tan(45 deg) / size; 0 for a directional light (its texels have a world size).
+  float texel_angle(int map_size) const;
+};
+
+}  // namespace shadowlab

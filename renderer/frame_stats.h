@@ -1,0 +1,42 @@
+// What a frame did and cost: the passes that ran, with their times, and counters over the renderer's
+// lifetime, so tests and benchmarks can see what was skipped.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace shadowlab {
+
+struct PassTiming {
+  std::string name;
+  double gpu_ms = 0.0;      // the pass's cost: its timer query, or its wall time where that is the truth
+  bool wall_clock = false;  // gpu_ms is the glFinish-bracketed wall time (see PassTimer)
+  double wall_ms = 0.0;     // the glFinish-bracketed wall time around the pass, always measured
+};
+
+struct FrameStats {
+  std::vector<PassTiming> passes;  // this frame's passes, in order, with GPU time (GL_TIME_ELAPSED)
+  double cpu_ms = 0.0;  // wall time of render(), passes included (each is finished before the next)
+  // Counters over the renderer's lifetime, so tests can see what was skipped.
+  long frames = 0;
+  long shadow_passes = 0;   // shadow-map updates (depth, cube or moments)
+  long moments_passes = 0;  // of which moments passes
+  long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map; brute2d: one)
+  long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)
+  long stencil_passes = 0;  // shadow-volume stencil passes
+  long draws = 0;
+  // Shadow casters not drawn into a shadow map (or cube face) because their bounds lie outside the
+  // light's volume: they could not have written a texel.
+  long casters_culled = 0;
+  // Fragments that passed the depth test in the shadow passes (GL_SAMPLES_PASSED; a texel written twice
+  // counts twice), plus every texel a blur pass wrote.
+  long shadow_texels_written = 0;
+  // With RG16F moments: the share of covered texels whose variance came out negative (float16
+  // cancellation), measured after each moments update (a read-back, done only for RG16F); -1 otherwise.
+  double moments_negative_variance = -1.0;
+  nlohmann::json to_json() const;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,250 @@
+#include "renderer/lit_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "renderer/image_io.h"
+
+namespace shadowlab {
+
+namespace {
+
+// The variance debug view draws the same scene through the same vertex shader with its own fragment
+// shader; it is never written into the G-buffer.
+bool writes_gbuffer(LitVariant variant, bool gbuffer) { return gbuffer && variant != LitVariant::RemapView; }
+
+ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
+                     LitVariant variant) {
+  const bool remap = variant == LitVariant::RemapView;
+  ProgramDesc d{"shaders/lit.vert", {}, remap ? "shaders/vsm/remap_view.frag" : "shaders/lit.frag", {}, includes, rules};
+  if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
+  if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
+  if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
+  if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
+  if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
+  return d;
+}
+
+void resolve(const ReloadableProgram& program, LitUniforms& u) {
+  const GLuint id = program.id();
+  u = {program.generation(),
+       Uniform(id, "u_view_proj"),
+       Uniform(id, "u_light_tex_matrix"),
+       Uniform(id, "u_to_light"),
+       Uniform(id, "u_bias_constant"),
+       Uniform(id, "u_bias_slope"),
+       Uniform(id, "u_texel_depth"),
+       Uniform(id, "u_ambient"),
+       Uniform(id, "u_shadow_map"),
+       Uniform(id, "u_min_variance"),
+       Uniform(id, "u_bleed_delta"),
+       Uniform(id, "u_light_position"),
+       Uniform(id, "u_spot_direction"),
+       Uniform(id, "u_spot_cos_cone"),
+       Uniform(id, "u_light_near"),
+       Uniform(id, "u_light_far"),
+       Uniform(id, "u_texel_angle"),
+       Uniform(id, "u_shadow_cube"),
+       Uniform(id, "u_shadow_map_compare"),
+       Uniform(id, "u_pcf_radius"),
+       Uniform(id, "u_pcf_hardware"),
+       Uniform(id, "u_light_view_proj")};
+}
+
+}  // namespace
+
+bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
+                    const std::vector<LitVariant>& variants) {
+  bool ok = true;
+  for (LitVariant variant : variants)
+    for (bool gbuffer : {false, true}) {
+      if (gbuffer && !writes_gbuffer(variant, true)) continue;
+      Program& p = programs_[{variant, gbuffer}];
+      p.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant));
+      ok = p.program.rebuild() && ok;
+    }
+  return ok;
+}
+
+void LitPass::keep_only(const std::vector<LitVariant>& variants) {
+  std::erase_if(programs_, [&](const auto& entry) {
+    return std::find(variants.begin(), variants.end(), entry.first.first) == variants.end();
+  });
+}
+
+void LitPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  for (auto& [key, p] : programs_) f(p.program);
+}
+
+void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil) {
+  if (width == width_ && height == height_ && gbuffer == gbuffer_ && stencil == stencil_) return;
+  color_ = make_texture_2d(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
+  depth_ = GlRenderbuffer::create();
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, stencil ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24, width, height);
+  fbo_ = GlFramebuffer::create();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                            depth_.id());
+  // The G-buffer attachments exist only when a check asks for them.
+  visibility_ = {};
+  position_ = {};
+  normal_ = {};
+  if (gbuffer) {
+    visibility_ = make_texture_2d(GL_R32F, width, height, GL_RED, GL_FLOAT, GL_NEAREST);
+    position_ = make_texture_2d(GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, GL_NEAREST);
+    normal_ = make_texture_2d(GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, GL_NEAREST);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, visibility_.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, position_.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, normal_.id(), 0);
+  }
+  check_framebuffer("view");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  width_ = width;
+  height_ = height;
+  gbuffer_ = gbuffer;
+  stencil_ = stencil;
+}
+
+void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant) {
+  const auto it = programs_.find({variant, writes_gbuffer(variant, ctx.gbuffer)});
+  if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
+  Program& p = it->second;
+  if (p.u.generation != p.program.generation()) resolve(p.program, p.u);
+  if (variant == LitVariant::RemapView) {
+    bind_color_target(fbo_.id(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, width_, height_);
+  }
+  begin(variant, ctx.gbuffer);
+  glUseProgram(p.program.id());
+  set_uniforms(ctx, shadow, p.u);
+  ctx.gpu_scene.bind();
+  for (const auto& range : ctx.gpu_scene.ranges()) {
+    ctx.gpu_scene.draw(range);
+    ++ctx.stats.draws;
+  }
+  end();
+}
+
+void LitPass::begin(LitVariant variant, bool gbuffer) {
+  const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  glEnable(GL_DEPTH_TEST);
+  switch (variant) {
+    case LitVariant::Lit:
+    case LitVariant::VolumeAmbient: {  // the view from scratch: colour, depth (and the G-buffer)
+      glDrawBuffers(gbuffer ? 4 : 1, all);
+      glDepthMask(GL_TRUE);
+      glDepthFunc(GL_LESS);
+      const float background[] = {0.16f, 0.18f, 0.22f, 1.0f};
+      const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+      glClearBufferfv(GL_COLOR, 0, background);
+      if (gbuffer)
+        for (int i = 1; i < 4; ++i) glClearBufferfv(GL_COLOR, i, zero);  // position.w = 0 marks background
+      glClear(GL_DEPTH_BUFFER_BIT);
+      break;
+    }
+    case LitVariant::VolumeAdditive: {
+      // Colour and visibility only; positions and normals stay as the ambient pass wrote them.
+      const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_NONE};
+      glDrawBuffers(gbuffer ? 4 : 1, buffers);
+      glDepthMask(GL_FALSE);
+      glDepthFunc(GL_EQUAL);  // exactly the surfaces the ambient pass kept (lit.vert's gl_Position is invariant)
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 0, 0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+      break;
+    }
+    case LitVariant::RemapView:
+      // The same vertices through the same vertex shader give the same depths: LEQUAL keeps exactly the
+      // visible surfaces.
+      glDepthFunc(GL_LEQUAL);
+      glDepthMask(GL_FALSE);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      break;
+  }
+}
+
+void LitPass::end() {
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
+
+void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const {
+  const FrameLight& light = ctx.light;
+  const ParamSet& params = ctx.params;
+  u.view_proj.set(ctx.camera_view_proj());
+  u.light_tex_matrix.set(clip_to_texture() * light.view.view_projection());
+  u.light_view_proj.set(light.view.view_projection());
+  u.to_light.set(light.to_light);
+  u.bias_constant.set(params.get_float("shadow.bias"));
+  u.bias_slope.set(params.get_float("shadow.slope_bias"));
+  // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
+  // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
+  const float depth_range = 2.0f / std::abs(light.view.projection[2][2]);
+  u.texel_depth.set(light.view.world_size.x / static_cast<float>(shadow.size()) / depth_range);
+  u.ambient.set(params.get_float("view.ambient"));
+  // Positional lights: where the light stands, the spot's cone, its projection's planes, a texel's angle.
+  u.light_position.set(light.position);
+  u.spot_direction.set(light.spot_direction);
+  u.spot_cos_cone.set(std::cos(glm::radians(light.spot_cone_deg)));
+  const glm::mat4& proj = light.view.projection;  // near and far back from a perspective matrix
+  u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
+  u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
+  u.texel_angle.set(light.texel_angle(std::max(shadow.size(), 1)));
+  shadow.bind_lit_inputs(params, u);
+  u.shadow_map.set(0);
+}
+
+std::vector<std::uint8_t> LitPass::read_color() const {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  flip_rows(rgba, width_, height_, 4);
+  return rgba;
+}
+
+std::vector<float> LitPass::read_visibility() const {
+  if (!gbuffer_) throw std::logic_error("read_visibility needs a frame rendered with gbuffer = true");
+  return read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT1, width_, height_, GL_RED, 1);
+}
+
+GBuffer LitPass::read_gbuffer() const {
+  if (!gbuffer_) throw std::logic_error("read_gbuffer needs a frame rendered with gbuffer = true");
+  const auto pos = read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT2, width_, height_, GL_RGBA, 4);
+  const auto nrm = read_pixels(fbo_.id(), GL_COLOR_ATTACHMENT3, width_, height_, GL_RGBA, 4);
+  GBuffer g;
+  g.width = width_;
+  g.height = height_;
+  const std::size_t n = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  g.position.resize(n);
+  g.normal.resize(n);
+  g.covered.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    g.position[i] = {pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]};
+    g.normal[i] = {nrm[4 * i], nrm[4 * i + 1], nrm[4 * i + 2]};
+    g.covered[i] = pos[4 * i + 3] > 0.5f ? 1 : 0;
+  }
+  return g;
+}
+
+void LitPass::present(GLuint framebuffer, int width, int height) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,63 @@
+// The lit pass: the scene from the camera, ambient + Lambert, the light's term scaled by the shadow
+// technique's visibility ("lab/visibility.glsl"). It owns the view's render targets (colour, depth or
+// depth-stencil, and the G-buffer a check reads: visibility, world positions, normals) and the lit
+// programs, one per variant the shadow pass asks for (see LitVariant), built with the technique's
+// includes and the light type's defines.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "renderer/oracle.h"
+#include "renderer/shadow_pass.h"
+
+namespace shadowlab {
+
+class LitPass {
+ public:
+  // Builds these variants' programs (plain and G-buffer); false keeps the old programs (the error is in
+  // them). Programs of other variants stay until keep_only().
+  bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
+             const std::vector<LitVariant>& variants);
+  void keep_only(const std::vector<LitVariant>& variants);
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f);
+
+  // The view's targets for this size; with `stencil` a DEPTH24_STENCIL8 depth buffer (shadow volumes),
+  // with `gbuffer` the G-buffer attachments too.
+  void ensure_targets(int width, int height, bool gbuffer, bool stencil);
+  // Draws the scene with a variant's program, reading what `shadow` binds.
+  void draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant);
+
+  GLuint framebuffer() const { return fbo_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Read-backs of the last frame: colour RGBA8 top row first; the others bottom row first (GL order).
+  std::vector<std::uint8_t> read_color() const;
+  std::vector<float> read_visibility() const;
+  GBuffer read_gbuffer() const;
+  // Copies the colour onto another framebuffer (0: the window), scaled to its size.
+  void present(GLuint framebuffer, int width, int height) const;
+
+ private:
+  struct Program {
+    ReloadableProgram program;
+    LitUniforms u;
+  };
+  using Key = std::pair<LitVariant, bool>;  // variant, G-buffer
+  static void begin(LitVariant variant, bool gbuffer);
+  static void end();
+  void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
+
+  std::map<Key, Program> programs_;
+  int width_ = 0, height_ = 0;
+  bool gbuffer_ = false;
+  bool stencil_ = false;
+  GlTexture color_, visibility_, position_, normal_;
+  GlRenderbuffer depth_;
+  GlFramebuffer fbo_;
+};
+
+}  // namespace shadowlab

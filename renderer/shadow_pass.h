@@ -1,0 +1,138 @@
+// A shadow technique is a pass. It owns its render targets and programs; the renderer chooses it once
+// per feature set and light type (renderer/shadow_passes.cpp), and a frame runs it in the data flow's
+// order:
+//
+//   1. ensure_targets    allocate what the parameters ask for
+//   2. draw_map          the shadow map from the light, only when one of its inputs changed (the
+//                        renderer decides: the parameters declared kInvalidatesShadowMap, the light,
+//                        the scene, the targets, the pass's program generations)
+//      draw_view_passes  what the camera's view needs before the lit pass (shadow volumes' stencil)
+//   3. bind_lit_inputs   what the lit pass reads: textures and the technique's uniforms
+//   4. draw_views, draw_debug_quads   the technique's own debug views and its map in the corner
+//
+// A new technique is a class implementing this and one line in shadow_passes.cpp.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/frame_light.h"
+#include "renderer/frame_stats.h"
+#include "renderer/gpu_mesh.h"
+#include "renderer/pass_timer.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+// Virtual include name -> file, e.g. "lab/visibility.glsl" -> "shaders/shadow/hard.glsl".
+using IncludeMap = std::map<std::string, std::filesystem::path>;
+
+// Uniform locations of a lit program, resolved once per program generation. A program lacks the ones
+// its shadow test does not read (-1: setting them is a no-op).
+struct LitUniforms {
+  int generation = -1;
+  Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
+  Uniform min_variance, bleed_delta;
+  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_cube;
+  Uniform shadow_map_compare, pcf_radius, pcf_hardware;
+  Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
+};
+
+// The lit pass's program variants (the same scene, shader and uniforms; defines differ).
+enum class LitVariant {
+  Lit,             // ambient + Lambert scaled by the shadow test's visibility
+  VolumeAmbient,   // shadow volumes: ambient only, writing depth (and the G-buffer)
+  VolumeAdditive,  // shadow volumes: the light's share, added where the stencil counted no volume
+  RemapView,       // variance shadow maps' debug view: tints where the light-bleeding remap acted
+};
+
+// What a pass reads and records during one frame.
+struct PassContext {
+  const Scene& scene;
+  const GpuScene& gpu_scene;
+  const ParamSet& params;
+  const FrameLight& light;
+  FrameStats& stats;
+  PassTimer& timer;
+  GLuint empty_vao;  // core profile needs a VAO bound even for attribute-less full-screen draws
+  int cull;          // faces the shadow pass skips: 0 none, 1 front, 2 back (a feature's choice or shadow.cull)
+  glm::mat4 camera_view{1.0f}, camera_projection{1.0f};
+  bool infinite_far_plane = false;  // camera_projection's far plane is at infinity (shadow volumes)
+  bool gbuffer = false;             // the lit pass also writes visibility, positions and normals
+
+  glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
+  template <typename F>
+  void timed(const char* name, F&& pass) {
+    timer.time(name, stats, pass);
+  }
+  // Runs draws, adding the fragments that passed the depth test to stats.shadow_texels_written.
+  template <typename F>
+  void count_texels(F&& draws) {
+    stats.shadow_texels_written += timer.count_samples(draws);
+  }
+};
+
+// Where the debug quads go: squares `side` high along the bottom right of a width x height view, into
+// the bound framebuffer.
+struct DebugQuadArea {
+  int width = 0, height = 0, side = 0;
+  std::string channel;  // view.debug_channel: "all", "depth", "moment 1", "moment 2", "variance"
+  GLuint empty_vao = 0;
+};
+
+class LitPass;
+
+class ShadowPass {
+ public:
+  virtual ~ShadowPass() = default;
+
+  // How the technique shapes the frame around it (by default: a map, read by the plain lit pass).
+  struct Shape {
+    bool has_map = true;        // false: no map to draw, skip or show (shadow volumes)
+    bool view_stencil = false;  // the view needs a stencil buffer and a camera far plane at infinity
+    LitVariant lit = LitVariant::Lit;  // what the lit pass draws
+    // Every variant the pass uses (lit included), built with its includes.
+    std::vector<LitVariant> lit_variants{LitVariant::Lit};
+  };
+  virtual Shape shape() const { return {}; }
+
+  // Points the pass's programs at these includes (the technique's defaults, a feature's on top) under
+  // these rules (which files are confined, see IncludeRules) and builds them; false keeps the old
+  // programs (the error is in them).
+  virtual bool set_includes(const IncludeMap& includes, const IncludeRules& rules) = 0;
+  virtual void for_each_program(const std::function<void(ReloadableProgram&)>& f) = 0;
+  virtual void set_scene(const Scene&) {}
+
+  // 1. Targets for these parameters; true when they were (re)allocated and the map must be drawn again.
+  virtual bool ensure_targets(const ParamSet& params) = 0;
+  // 2. The shadow map, from the light.
+  virtual void draw_map(PassContext&) {}
+  virtual void draw_view_passes(PassContext&, LitPass&) {}
+  // 3. Binds what the lit pass reads (texture unit 0 is u_shadow_map) and sets the technique's
+  // uniforms; leaves texture unit 0 active.
+  virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
+  // 4. The technique's own debug views (after the lit pass), and its map in the corner.
+  virtual void draw_views(PassContext&, LitPass&) {}
+  virtual void draw_debug_quads(const DebugQuadArea&) {}
+
+  // Texels per side of the map (0 before its targets exist, and for techniques without one).
+  virtual int size() const = 0;
+  // The depths the map's depth test kept, bottom row first (empty with size 0 when there are none).
+  virtual std::vector<float> read_depth(int* size) const;
+  // The map as a picture (what the debug quad shows), RGBA8 top row first.
+  virtual std::vector<std::uint8_t> image(int* size) const = 0;
+};
+
+// Faces the shadow pass skips (0 none, 1 front, 2 back): enables or disables GL_CULL_FACE to match.
+void set_shadow_culling(int cull);
+// A depth map as a picture: the occupied range stretched to full contrast (the cleared background,
+// depth 1, stays white), RGBA8 top row first.
+std::vector<std::uint8_t> depth_map_image(const std::vector<float>& depth, int size);
+
+}  // namespace shadowlab

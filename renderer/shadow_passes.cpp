@@ -1,0 +1,72 @@
+#include "renderer/shadow_passes.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "renderer/cube_shadow_pass.h"
+#include "renderer/depth_map_pass.h"
+#include "renderer/image_io.h"
+#include "renderer/moments_pass.h"
+#include "renderer/shadow_volume_pass.h"
+
+namespace shadowlab {
+
+namespace {
+
+template <typename Pass>
+std::unique_ptr<ShadowPass> make() {
+  return std::make_unique<Pass>();
+}
+
+bool any_light(LightType) { return true; }
+
+const ShadowPassEntry kEntries[] = {
+    {ShadowTechnique::Depth, [](LightType l) { return l != LightType::Point; }, &DepthMapPass::default_includes,
+     &make<DepthMapPass>},
+    {ShadowTechnique::Depth, [](LightType l) { return l == LightType::Point; }, &CubeShadowPass::default_includes,
+     &make<CubeShadowPass>},
+    {ShadowTechnique::Moments, &any_light, &MomentsPass::default_includes, &make<MomentsPass>},
+    {ShadowTechnique::ShadowVolumes, &any_light, &ShadowVolumePass::default_includes, &make<ShadowVolumePass>},
+};
+
+}  // namespace
+
+const ShadowPassEntry& shadow_pass_entry(ShadowTechnique technique, LightType light) {
+  for (const auto& entry : kEntries)
+    if (entry.technique == technique && entry.serves(light)) return entry;
+  throw std::logic_error(std::string("no shadow pass for this technique and the ") + light_type_name(light) + " light");
+}
+
+std::vector<float> ShadowPass::read_depth(int* size) const {
+  *size = 0;
+  return {};
+}
+
+void set_shadow_culling(int cull) {
+  if (cull == 0) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glCullFace(cull == 1 ? GL_FRONT : GL_BACK);
+  }
+}
+
+std::vector<std::uint8_t> depth_map_image(const std::vector<float>& depth, int size) {
+  // Stretch the occupied depth range to full contrast (the fitted ortho box already spans [0, 1], the
+  // fixed tutorial box may not); the cleared background (depth 1) stays white.
+  float lo = 1.0f, hi = 0.0f;
+  for (float d : depth)
+    if (d < 1.0f) lo = std::min(lo, d), hi = std::max(hi, d);
+  const float scale = hi > lo ? 0.85f / (hi - lo) : 0.0f;
+  std::vector<std::uint8_t> rgba(depth.size() * 4);
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    const float v = depth[i] >= 1.0f ? 1.0f : (depth[i] - lo) * scale;
+    const auto g = static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+    rgba[4 * i] = rgba[4 * i + 1] = rgba[4 * i + 2] = g;
+    rgba[4 * i + 3] = 255;
+  }
+  flip_rows(rgba, size, size, 4);
+  return rgba;
+}
+
+}  // namespace shadowlab
