@@ -94,7 +94,7 @@ std::vector<BenchScene> scenes(const std::string& scene_file) {
     out.push_back({fs::path(scene_file).stem().string(), load_gltf(scene_file), {{"light.elevation", "30"}}, std::nullopt});
   } else {
     // The PalmTree: 10k triangles on a 392-unit sea; the camera looks at its 80-unit island.
-    const fs::path palm = data_dir() / ".." / "shared" / "assets" / "models" / "PalmTree" / "PalmTree.gltf";
+    const fs::path palm = data_dir() / "assets" / "models" / "PalmTree" / "PalmTree.gltf";
     Bounds island;
     island.extend(glm::vec3(-40.0f, -1.0f, -57.0f));
     island.extend(glm::vec3(38.0f, 4.0f, 22.0f));

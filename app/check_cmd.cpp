@@ -47,7 +47,9 @@ namespace {
 void print_result(const CheckResult& r) {
   std::printf("lab %d %-18s %-8s %s  (%.1f s)\n", r.lab, r.slug.c_str(), impl_name(r.impl),
               r.passed() ? "PASS" : r.status() == CheckStatus::Failed ? "FAIL" : status_name(r.status()), r.seconds);
-  if (!r.error.empty()) std::printf("    %s: %s\n", r.students_error ? "your file does not build" : "grader error", r.error.c_str());
+  if (!r.error.empty()) std::printf("    %s: %s\n", !r.students_error                            ? "grader error"
+                                         : r.status() == CheckStatus::CompileError ? "your file does not build"
+                                                                                   : "your exercise failed", r.error.c_str());
   if (!r.warnings.empty()) std::printf("    warnings:\n%s", r.warnings.c_str());
   for (const auto& c : r.criteria) {
     std::printf("    %-4s %-40s %12.6g %s %-10.6g %s\n", c.passed() ? "ok" : "FAIL", c.metric.c_str(), c.value,

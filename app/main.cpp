@@ -10,6 +10,7 @@
 #include "app/bench_cmd.h"
 #include "app/check_cmd.h"
 #include "app/exit_codes.h"
+#include "app/grade_cmd.h"
 #include "app/headless.h"
 #include "app/panel_lab.h"
 #include "app/window.h"
@@ -132,6 +133,27 @@ int main(int argc, char** argv) {
                     "Progress goes to stderr: one line rewritten on a terminal, a line per tenth of the sweep in a log.\n"
                     "Example: shadowlab bench --quick --out out/bench");
 
+  shadowlab::GradeOptions grade;
+  CLI::App* grade_cmd = app.add_subcommand(
+      "grade",
+      "Grade a class: each submission's labs, each in its own process with a time and a memory limit; writes "
+      "results.json, results.csv, junit.xml, gradescope/<student>/results.json. Exit 0 all passed, 1 some did "
+      "not, 2 usage error, 3 grader error");
+  grade_cmd->add_option("submissions", grade.submissions,
+                        "Folders laid out like the project (labs/NN_slug/<exercise files>), or .zip/.tar(.gz) archives of one");
+  grade_cmd->add_option("--out", grade.out_dir, "Folder for the results (created if missing)")->required();
+  grade_cmd->add_option("--lab", grade.labs, "all, one lab number, or a comma-separated list (3,4,5)");
+  grade_cmd->add_option("--jobs", grade.jobs, "Submissions graded at once, through GNU parallel (default 1)");
+  grade_cmd->add_option("--cpu-time", grade.cpu_time,
+                        "CPU seconds one lab may use before it is stopped: the same verdict whatever the load (default 60)");
+  grade_cmd->add_option("--timeout", grade.timeout, "Wall-clock seconds one lab may take before it is stopped (default 300)");
+  grade_cmd->add_option("--memory", grade.memory_mb, "Memory one lab's process may take, MB (default 2048)");
+  grade_cmd->add_option("--images", grade.images, "Diff images kept: none, failed (labs not passed; default), all")
+      ->check(CLI::IsMember({"none", "failed", "all"}));
+  grade_cmd->add_flag("--again", grade.again, "Grade every lab again, even those already recorded in --out");
+  grade_cmd->add_flag("--merge", grade.merge_only, "Only write the reports from the results in --out (after a Slurm run)");
+  grade_cmd->add_flag("--no-merge", grade.no_merge, "Only grade, do not write the reports (one task of a parallel or Slurm run)");
+
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
@@ -151,6 +173,7 @@ int main(int argc, char** argv) {
   if (*render_cmd) return shadowlab::run_render(render);
   if (*check_cmd) return shadowlab::run_check(check);
   if (*bench_cmd) return shadowlab::run_bench(bench);
+  if (*grade_cmd) return shadowlab::run_grade(grade);
   if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json);
   return shadowlab::run_window(window_options);
 }

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "labs/cpp_exercise.h"
 #include "renderer/image_io.h"
 
 namespace shadowlab {
@@ -23,13 +24,15 @@ const char* status_name(CheckStatus status) {
     case CheckStatus::Passed: return "passed";
     case CheckStatus::Failed: return "failed";
     case CheckStatus::CompileError: return "compile_error";
+    case CheckStatus::Crashed: return "crashed";
+    case CheckStatus::TimedOut: return "timed_out";
     case CheckStatus::GraderError: return "grader_error";
   }
   return "grader_error";
 }
 
 CheckStatus CheckResult::status() const {
-  if (!error.empty()) return students_error ? CheckStatus::CompileError : CheckStatus::GraderError;
+  if (!error.empty()) return students_error ? students_failure : CheckStatus::GraderError;
   return passed() ? CheckStatus::Passed : CheckStatus::Failed;
 }
 
@@ -382,6 +385,12 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
     if (!lab.check) throw std::runtime_error("lab " + std::to_string(lab.number) + " has no check");
     lab.check(ctx, result);
     result.images = ctx.images;
+  } catch (const ExerciseError& e) {  // a submitted C++ exercise that does not build, crashed or hung
+    result.error = e.what();
+    result.students_error = true;
+    result.students_failure = e.status() == "crashed"     ? CheckStatus::Crashed
+                              : e.status() == "timed_out" ? CheckStatus::TimedOut
+                                                          : CheckStatus::CompileError;
   } catch (const BuildError& e) {
     result.error = e.what();
     if (result.error.empty()) result.error = "the shaders did not build, and the driver's log is empty";

@@ -38,7 +38,9 @@ struct Criterion {
 // How a lab's grading ended. CompileError: the student's file does not build (the same program builds
 // with the solution's files); GraderError: the grader itself failed (its own shader, a missing asset,
 // no GL context), which says nothing about the student.
-enum class CheckStatus { Passed, Failed, CompileError, GraderError };
+// Crashed, TimedOut: a submitted C++ exercise, which runs in its own program (labs/cpp_exercise.h),
+// crashed or did not return.
+enum class CheckStatus { Passed, Failed, CompileError, GraderError, Crashed, TimedOut };
 const char* status_name(CheckStatus status);
 
 struct CheckResult {
@@ -54,6 +56,7 @@ struct CheckResult {
   std::vector<std::string> images;                   // files written under --out
   std::string error;                                 // a shader or setup failure fails the check
   bool students_error = false;                       // error is the student's (their file does not build)
+  CheckStatus students_failure = CheckStatus::CompileError;  // with students_error: how their code failed
   std::string warnings;                              // compiler warnings in the graded files
   double seconds = 0.0;
 

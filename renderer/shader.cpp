@@ -87,6 +87,10 @@ struct Expander {
         return {};
       }
     if (confined.count(fs::weakly_canonical(path))) {
+      // An offered renderer file (not a "lab/" name in the map) is the renderer's, never one beside the
+      // student's file: a planted copy there would not be confined.
+      if (desc.rules.offered.count(name) && !desc.includes.count(name) && fs::is_regular_file(data_dir() / "shaders" / name))
+        return data_dir() / "shaders" / name;
       if (!desc.rules.offered.count(name) || !desc.includes.count(name)) {
         std::string offered;
         for (const auto& o : desc.rules.offered) offered += (offered.empty() ? "" : ", ") + ("\"" + o + "\"");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN SHARED CASE
+# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN CASE
 set -uo pipefail
-bin="$1"; shared="$2"; case_name="$3"
+bin="$1"; case_name="$2"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 src="$(cd "$(dirname "$0")/.." && pwd)"  # the source tree: shaders/ and labs/
 # No test ever reads or writes the user's own settings file.
@@ -564,7 +564,7 @@ PY
   window_drop)  # a bad file dropped on the window shows an error in the panel; a good one replaces the scene
     png_reader
     echo "not a model" >"$tmp/bad.gltf"
-    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$shared/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
+    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$src/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
     python3 - "$tmp" <<'PY' || fail "drop not shown as expected"
 import sys
 sys.path.insert(0, sys.argv[1])

@@ -38,4 +38,4 @@ cmake -S "$copy" -B "$copy/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_
   -DSHADOWLAB_DATA_DIR="$src" "${launcher[@]}" >/dev/null
 cmake --build "$copy/build" --target shadowlab -j "$(nproc)" >"$work/build.log" 2>&1 \
   || { tail -30 "$work/build.log" >&2; echo "one_folder: the copy with labs/10_throwaway does not build" >&2; exit 1; }
-SHADOWLAB_DATA_DIR="$copy" bash "$copy/tests/cli.sh" "$copy/build/app/shadowlab" "$src/../shared" one_folder_lab
+SHADOWLAB_DATA_DIR="$copy" bash "$copy/tests/cli.sh" "$copy/build/app/shadowlab" one_folder_lab

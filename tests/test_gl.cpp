@@ -222,13 +222,14 @@ TEST_F(ShaderErrorTest, LiveReloadKeepsTheLastGoodProgram) {
 namespace shadowlab {
 namespace {
 
-// Every real model in shared/assets/models loads and renders headless with shadows on screen.
+// Every real model in assets/models loads and renders headless with shadows on screen.
 TEST_F(RendererTest, EveryAssetModelRenders) {
-  const std::filesystem::path models = std::filesystem::path(SHADOWLAB_SHARED_DIR) / "assets" / "models";
+  const std::filesystem::path models = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "assets" / "models";
   ASSERT_TRUE(std::filesystem::is_directory(models)) << models;
   int rendered = 0;
   Renderer r;
   for (const auto& dir : std::filesystem::directory_iterator(models)) {
+    if (!dir.is_directory()) continue;  // README.md
     for (const auto& file : std::filesystem::directory_iterator(dir.path())) {
       const auto ext = file.path().extension();
       if (ext != ".gltf" && ext != ".glb") continue;

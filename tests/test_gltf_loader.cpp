@@ -28,11 +28,10 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace shadowlab::test;
 
-// The peers' invalid suites live in the repository (assets/invalid, with their licenses). The valid
-// models are being copied into assets/models by another change; until then they come from the shared
-// folder (SHADOWLAB_SHARED_DIR), and only these model tests read from there.
+// The peers' invalid suites and the valid models live in the repository (assets/invalid and
+// assets/models, each with their licenses).
 const fs::path kInvalid = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "invalid";
-const fs::path kModels = fs::path(SHADOWLAB_SHARED_DIR) / "assets" / "models";
+const fs::path kModels = fs::path(SHADOWLAB_SOURCE_DIR) / "assets" / "models";
 
 void expect_sane(const Scene& scene) {
   for (const Mesh& m : scene.meshes) {
@@ -50,7 +49,7 @@ void expect_sane(const Scene& scene) {
 }
 
 // ---------------------------------------------------------------------------------------------------
-// The shared models.
+// The models in assets/models.
 
 TEST(GltfModels, EveryModelLoads) {
   // Triangle counts derived from the index accessors' counts of the drawn primitives in each file's JSON.

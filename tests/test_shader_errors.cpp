@@ -212,6 +212,24 @@ TEST_F(IncludeConfinementTest, OnlyOfferedNamesAreFollowed) {
   EXPECT_TRUE(ok.program) << ok.error;
 }
 
+// An offered renderer file (lab 7 offers shadow/slope.glsl) is read from the renderer's shaders, never
+// from a copy planted beside the student's file.
+TEST_F(IncludeConfinementTest, AnOfferedRendererFileIsTheRenderers) {
+  fs::create_directories(dir / "shadow");
+  write("shadow/slope.glsl", "this planted line must never be compiled\n");
+  write("exercise.glsl", "// exercise\n#include \"shadow/slope.glsl\"\n"
+                         "float student(float x) { return shadow_tan_incidence(x); }\n");
+  ProgramDesc desc{dir / "grader.vert", {}, dir / "grader.frag", {}, {{"lab/student.glsl", dir / "exercise.glsl"}}, {}};
+  desc.rules.confined = {dir / "exercise.glsl"};
+  desc.rules.offered = {"shadow/slope.glsl"};
+  const ProgramBuild b = build_program(desc);
+  EXPECT_TRUE(b.program) << b.error;
+  desc.rules.offered.clear();
+  const ProgramBuild refused = build_program(desc);
+  EXPECT_FALSE(refused.program);
+  EXPECT_NE(refused.error.find("is not offered by this lab"), std::string::npos) << refused.error;
+}
+
 TEST_F(IncludeConfinementTest, AnIncludeMayEndInAComment) {
   write("helper.glsl", "float helper(float x) { return x; }\n");
   write("exercise.glsl", "// exercise\n#include \"lab/helper.glsl\"  // the helper\nfloat student(float x) { return helper(x); }\n");

@@ -3,12 +3,22 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "renderer/light.h"
 
 namespace shadowlab {
 
 LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light);
+
+// One call of a submitted exercise.cpp, compiled into its own program (labs/cpp_exercise.h): the
+// check sends a FitCall, exercise_host.cpp answers with the fit's LightView as a FitAnswer.
+struct FitCall {
+  float box_min[3], box_max[3], to_light[3];
+};
+struct FitAnswer {
+  float view[16], projection[16], image_x[3], image_y[3], world_size[2];
+};
 
 struct FitVerification {
   int directions = 0;
@@ -26,6 +36,9 @@ struct FitVerification {
   // map then keeps the farthest surfaces).
   int depth_reversed = 0;
 };
+
+// The directions verify_light_fit tries: the six axes, then `random_directions` from a fixed seed.
+std::vector<glm::vec3> fit_test_directions(int random_directions = 10000);
 
 // Fits the box for 10,000 random directions plus the six axis directions and checks that every corner
 // maps into [-1, 1]^3 within `tolerance` and touches the boundary on each axis.

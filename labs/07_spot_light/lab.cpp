@@ -149,7 +149,9 @@ Lab SHADOWLAB_LAB_MAKER() {
       place_preset(kPlaces[1], "Low and near, inside the scene's box: the check's second place."),
       {"narrow", "A 15-degree cone: the same texels on a small spot, crisp shadows.", {{"light.cone_deg", "15"}}},
   };
-  lab.offered_includes = {"lab/bias.glsl"};
+  // shadow/slope.glsl comes with lab/bias.glsl anyway; offered by name so the renderer's own spot.glsl,
+  // handed in as an exercise, builds.
+  lab.offered_includes = {"lab/bias.glsl", "shadow/slope.glsl"};
   lab.make_hooks = visibility_lab_hooks(LightType::Spot);
   lab.check = check_spot;
   return lab;
