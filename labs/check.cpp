@@ -374,4 +374,18 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
   return result;
 }
 
+Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {
+  Bounds b;
+  for (const auto& mesh : scene.meshes) {
+    if (mesh.name == "receiver") continue;
+    const Bounds m = mesh.bounds();
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec3 c = m.corner(i);
+      b.extend(glm::vec3(c.x, 0.0f, c.z));
+      b.extend(c - to_light * (c.y / to_light.y));
+    }
+  }
+  return b;
+}
+
 }  // namespace shadowlab

@@ -170,6 +170,11 @@ void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metric
 // Only the "not measurable" criterion, for measurements graded otherwise.
 void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m);
 
+// The region where the occluders' shadows fall on the receiver (y = 0) of the stacked-occluder scene,
+// so the camera spends its pixels on the overlaps where light bleeding happens rather than on open
+// ground (labs 4 and 13).
+Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light);
+
 // A held-out condition for a directional light: a scene, a light direction and a map size the lab's
 // text does not fix, drawn from the seed and recorded in the result's "conditions".
 struct DirectionalCase {

@@ -4,6 +4,7 @@
 // where the remap acts, and each lab's check passes with its solution and fails with its exercise.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "labs/check.h"
@@ -138,7 +139,7 @@ TEST_F(VsmTest, NoNanOrInfInMomentsOrLitOutput) {
   Renderer r;
   // Every lab's exercise and solution, both formats, with and without blur, under a steep, a grazing
   // and a straight-down light (flat receivers with zero slope: the variance cancels to 0 there).
-  for (int number : {3, 4, 5}) {
+  for (int number : {3, 4, 5, 13}) {  // 13: EVSM, c at each format's limit (42 RG32F, 5 RG16F)
     const Lab& lab = *find_lab(number);
     for (Impl impl : {Impl::Exercise, Impl::Solution}) {
       ASSERT_TRUE(r.set_features(lab.hooks(impl))) << r.shader_error();
@@ -271,6 +272,54 @@ TEST_F(VsmTest, Lab4SolutionPassesExerciseAndDeltaZeroFail) {
   EXPECT_FALSE(run_check(4, Impl::Exercise).passed());
   const CheckResult no_remap = run_check(4, Impl::Solution, {"vsm.bleed_delta=0"});
   EXPECT_FALSE(no_remap.passed()) << "delta = 0 leaves the bleeding in";
+}
+
+TEST_F(VsmTest, EvsmStoresTheWarpedDepthWithTheExponentClampedForTheFormat) {
+  ParamSet p = lab_params(*find_lab(13));
+  p.set("view.debug_quad", 0.0);
+  EXPECT_EQ(evsm_exponent(p), 42.0f);
+  p.apply_assignment("vsm.format=RG16F");
+  EXPECT_EQ(evsm_exponent(p), kEvsmMaxExponentRG16F) << "c is clamped to the half-float range";
+  p.apply_assignment("vsm.warp=none");
+  EXPECT_EQ(evsm_exponent(p), 0.0f) << "no warp: plain VSM";
+  p.apply_assignment("vsm.warp=exponential");
+  for (const char* format : {"RG32F", "RG16F"}) {
+    p.apply_assignment(std::string("vsm.format=") + format);
+    const float c = evsm_exponent(p);
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_features(find_lab(13)->hooks(Impl::Solution))) << r.shader_error();
+    r.render(p, request());
+    int size = 0, depth_size = 0;
+    const std::vector<float> moments = r.read_moments(&size);
+    const std::vector<float> depth = r.read_shadow_depth(&depth_size);
+    ASSERT_EQ(size, depth_size);
+    const std::array<float, 4> clear = moments_clear(c);
+    long covered = 0, wrong = 0;
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+      const float w = moments[2 * i], w2 = moments[2 * i + 1];
+      const float stored = std::string(format) == "RG16F" ? 0x1p-11f : 0.0f;  // half floats round the clear value
+      if (depth[i] >= 1.0f) {  // background: the warped far plane
+        ASSERT_LE(std::abs(w - clear[0]), stored * clear[0]) << format;
+        ASSERT_LE(std::abs(w2 - clear[1]), stored * clear[1]) << format;
+        continue;
+      }
+      ++covered;
+      // The first moment is exp(c z) of the stored depth: back in depth units within the format's
+      // precision (RG16F: 2^-11 relative, 4.9e-4 / c in z).
+      const double z = std::log(static_cast<double>(w)) / c;
+      wrong += !(std::abs(z - depth[i]) <= (std::string(format) == "RG16F" ? 1e-3 : 1e-5));
+      wrong += !(w2 >= w * w * (1.0f - 1e-3f) && w2 <= 2.0f * w * w * (1.0f + 1e-3f));
+    }
+    EXPECT_GT(covered, 1000) << format;
+    EXPECT_EQ(wrong, 0) << format;
+  }
+}
+
+TEST_F(VsmTest, Lab13SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(13, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(13, Impl::Exercise).passed()) << "the stock exercise is VSM: it bleeds as much";
 }
 
 TEST_F(VsmTest, Lab5SolutionPassesExerciseFails) {
