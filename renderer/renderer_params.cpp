@@ -91,6 +91,10 @@ std::vector<ParamSpec> vsm_param_specs() {
        "c in w = exp(c z), z in [0, 1]. Clamped to the format's range: 42 for RG32F (2c = 84 < ln(FLT_MAX) = 88.7, "
        "room for the slope term), 5 for RG16F (2c = 10 < ln(65504 / 2) = 10.4). Larger c: less bleeding.",
        {}, moments},
+      {"vsm.msm_moment_bias", "MSM moment bias (alpha)", ParamKind::Float, 3e-5, 1e-7, 1e-2,
+       "Moment shadow maps: the share of a uniform distribution's moments mixed into the filtered ones, so the "
+       "4x4 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
+       "moments are nearly singular (flat receivers).", {}, kInvalidatesNothing, true},
   };
 }
 

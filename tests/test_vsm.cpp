@@ -11,6 +11,7 @@
 #include "labs/lab.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
+#include "renderer/msm_pass.h"
 #include "renderer/renderer.h"
 #include "renderer/vsm_params.h"
 #include "tests/gl_fixture.h"
@@ -320,6 +321,53 @@ TEST_F(VsmTest, Lab13SolutionPassesExerciseFails) {
   const CheckResult solution = run_check(13, Impl::Solution);
   EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
   EXPECT_FALSE(run_check(13, Impl::Exercise).passed()) << "the stock exercise is VSM: it bleeds as much";
+}
+
+TEST_F(VsmTest, MsmStoresFourPowerMomentsAndStaysFinite) {
+  // Lab 14's pass: RGBA32F moments (z, z^2, z^3, z^4) of the stored depth, the background the far
+  // plane's (1, 1, 1, 1); the Hamburger bound finite and in [0, 1] under steep, grazing and straight-down
+  // lights, with the solution and with the stock exercise (whose missing moments make the solve singular).
+  const Lab& lab = *find_lab(14);
+  ParamSet p = lab_params(lab);
+  p.set("view.debug_quad", 0.0);
+  for (Impl impl : {Impl::Solution, Impl::Exercise}) {
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_features(lab.hooks(impl))) << r.shader_error();
+    for (const char* elevation : {"50", "8", "90"}) {
+      p.apply_assignment(std::string("light.elevation=") + elevation);
+      r.render(p, request(true, 160, 90));
+      const std::vector<float> vis = r.read_visibility();
+      for (float v : vis) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << impl_name(impl) << " elevation " << elevation << ": " << v;
+    }
+    if (impl == Impl::Exercise) continue;
+    int size = 0;
+    const std::vector<float> depth = r.read_shadow_depth(&size);
+    ASSERT_GT(size, 0);
+    const auto* pass = dynamic_cast<const MsmPass*>(r.shadow_pass());
+    ASSERT_NE(pass, nullptr);
+    const std::vector<float> m = pass->read_moments();
+    ASSERT_EQ(m.size(), depth.size() * 4);
+    long covered = 0, wrong = 0;
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+      const double z = m[4 * i];
+      if (depth[i] >= 1.0f) {
+        wrong += !(m[4 * i] == 1.0f && m[4 * i + 1] == 1.0f && m[4 * i + 2] == 1.0f && m[4 * i + 3] == 1.0f);
+        continue;
+      }
+      ++covered;
+      wrong += !(std::abs(z - depth[i]) <= 1e-6);  // 24-bit depth against the float moment
+      for (int k = 1; k < 4; ++k) wrong += !(std::abs(m[4 * i + k] - std::pow(z, k + 1)) <= 1e-6);
+    }
+    EXPECT_GT(covered, 1000);
+    EXPECT_EQ(wrong, 0);
+  }
+}
+
+TEST_F(VsmTest, Lab14SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(14, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(14, Impl::Exercise).passed()) << "two moments are not enough for the Hamburger bound";
 }
 
 TEST_F(VsmTest, Lab5SolutionPassesExerciseFails) {
