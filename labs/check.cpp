@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -386,6 +387,15 @@ Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {
     }
   }
   return b;
+}
+
+void grade_default_and_grazing(CheckContext& ctx, CheckResult& result, const ParamSet& params, const Features& hooks,
+                               const std::string& prefix) {
+  ParamSet grazing = params;
+  grazing.set("light.elevation", 10.0);
+  const std::pair<std::string, const ParamSet*> cases[] = {{"default", &params}, {"grazing", &grazing}};
+  for (const auto& [tag, p] : cases)
+    grade_hard_shadow(result, tag, ctx.measure(*p, hooks, prefix + "_" + tag + "_" + impl_name(ctx.impl)).metrics);
 }
 
 }  // namespace shadowlab

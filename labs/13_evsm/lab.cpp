@@ -53,13 +53,7 @@ void check_evsm(CheckContext& ctx, CheckResult& result) {
 
   // 1. The default scene and a grazing light (elevation 10 deg): a hard shadow's interior within lab 1's
   // bounds (measured with c = 42: every interior pixel exact at delta 0.125, 1.6e-5 at delta 0).
-  ParamSet grazing = params;
-  grazing.set("light.elevation", 10.0);
-  const std::pair<std::string, const ParamSet*> ordinary[] = {{"default", &params}, {"grazing", &grazing}};
-  for (const auto& [tag, p] : ordinary) {
-    const auto m = ctx.measure(*p, hooks, "lab13_" + tag + "_" + impl_name(ctx.impl));
-    grade_hard_shadow(result, tag, m.metrics);
-  }
+  grade_default_and_grazing(ctx, result, params, hooks, "lab13");
 
   // 2. The stacked occluders, against VSM (the same shaders with vsm.warp = none) at the same settings.
   ctx.use_scene(make_stacked_occluders_scene());

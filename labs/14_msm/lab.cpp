@@ -35,11 +35,7 @@ void check_msm(CheckContext& ctx, CheckResult& result) {
   const Features hooks = ctx.hooks();
 
   // 1. The default scene and a grazing light: a hard shadow's interior within lab 1's bounds.
-  ParamSet grazing = params;
-  grazing.set("light.elevation", 10.0);
-  const std::pair<std::string, const ParamSet*> ordinary[] = {{"default", &params}, {"grazing", &grazing}};
-  for (const auto& [tag, p] : ordinary)
-    grade_hard_shadow(result, tag, ctx.measure(*p, hooks, "lab14_" + tag + "_" + impl_name(ctx.impl)).metrics);
+  grade_default_and_grazing(ctx, result, params, hooks, "lab14");
 
   // 2. The stacked occluders: MSM, then VSM (lab 4's solution) on the same frame, without and with the cut.
   ctx.use_scene(make_stacked_occluders_scene());
