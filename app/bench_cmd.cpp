@@ -23,6 +23,7 @@
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/platform.h"
+#include "renderer/vsm_params.h"
 
 namespace shadowlab {
 
@@ -386,6 +387,8 @@ int run_bench(const BenchOptions& options) {
       const std::vector<int> radii = options.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8, 16};
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
       if (!options.quick) {  // half floats too: less bandwidth, the same passes
+        // The blurred-moments lab (lab 4) may not put the format on its panel: declare it here.
+        if (!blur_params.find("vsm.format")) blur_params.declare(vsm_param_specs({"vsm.format"}).at(0));
         blur_params.set_from_string("vsm.format", "RG16F");
         const auto rg16 = measure_blur_methods(renderer, blur_params, radii, 7);
         blur_rows.insert(blur_rows.end(), rg16.begin(), rg16.end());

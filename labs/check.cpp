@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -405,6 +406,29 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {
+  Bounds b;
+  for (const auto& mesh : scene.meshes) {
+    if (mesh.name == "receiver") continue;
+    const Bounds m = mesh.bounds();
+    for (int i = 0; i < 8; ++i) {
+      const glm::vec3 c = m.corner(i);
+      b.extend(glm::vec3(c.x, 0.0f, c.z));
+      b.extend(c - to_light * (c.y / to_light.y));
+    }
+  }
+  return b;
+}
+
+void grade_default_and_grazing(CheckContext& ctx, CheckResult& result, const ParamSet& params, const Features& hooks,
+                               const std::string& prefix) {
+  ParamSet grazing = params;
+  grazing.set("light.elevation", 10.0);
+  const std::pair<std::string, const ParamSet*> cases[] = {{"default", &params}, {"grazing", &grazing}};
+  for (const auto& [tag, p] : cases)
+    grade_hard_shadow(result, tag, ctx.measure(*p, hooks, prefix + "_" + tag + "_" + impl_name(ctx.impl)).metrics);
 }
 
 }  // namespace shadowlab

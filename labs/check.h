@@ -173,6 +173,17 @@ void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metric
 // Only the "not measurable" criterion, for measurements graded otherwise.
 void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m);
 
+// The region where the occluders' shadows fall on the receiver (y = 0) of the stacked-occluder scene,
+// so the camera spends its pixels on the overlaps where light bleeding happens rather than on open
+// ground (labs 4 and 13).
+Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light);
+
+// The default scene and the same light at a grazing elevation (10 deg), each graded as a hard shadow
+// (grade_hard_shadow, lab 1's bounds, tags "default" and "grazing"): for soft techniques that must still
+// shade an ordinary scene right (labs 13, 14). Pictures are named `<prefix>_<tag>_<impl>`.
+void grade_default_and_grazing(CheckContext& ctx, CheckResult& result, const ParamSet& params, const Features& hooks,
+                               const std::string& prefix);
+
 // A held-out condition for a directional light: a scene, a light direction and a map size the lab's
 // text does not fix, drawn from the seed and recorded in the result's "conditions".
 struct DirectionalCase {

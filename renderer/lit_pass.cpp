@@ -39,6 +39,8 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_shadow_map"),
        Uniform(id, "u_min_variance"),
        Uniform(id, "u_bleed_delta"),
+       Uniform(id, "u_warp_exponent"),
+       Uniform(id, "u_msm_moment_bias"),
        Uniform(id, "u_light_position"),
        Uniform(id, "u_spot_direction"),
        Uniform(id, "u_spot_cos_cone"),

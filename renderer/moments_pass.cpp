@@ -1,5 +1,7 @@
 #include "renderer/moments_pass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "renderer/lit_pass.h"
@@ -105,17 +107,20 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
 void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, bool cull_casters,
                                long& draws, long& culled) {
   if (moments_u_.generation != moments_.generation())
-    moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj")};
+    moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj"),
+                  Uniform(moments_.id(), "u_warp_exponent")};
   bind_color_target(moments_fbo_.id(), size_, size_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glClearBufferfv(GL_COLOR, 0, kMomentsClear);
+  const std::array<float, 4> clear = moments_clear(warp_exponent_);
+  glClearBufferfv(GL_COLOR, 0, clear.data());
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
   set_shadow_culling(cull);
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);
+  moments_u_.warp_exponent.set(warp_exponent_);
   const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters);
   draws += counts.drawn;
   culled += counts.culled;
@@ -124,6 +129,7 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
 
 bool MomentsPass::ensure_targets(const ParamSet& params) {
   const bool blur = static_cast<int>(vsm_param(params, "vsm.blur_radius")) > 0;
+  set_warp_exponent(evsm_exponent(params));
   return ensure_targets(std::stoi(params.get_choice("shadow.map_size")), vsm_choice(params, "vsm.format"), blur);
 }
 
@@ -142,7 +148,9 @@ void MomentsPass::draw_map(PassContext& ctx) {
   const auto sigma = static_cast<float>(vsm_param(ctx.params, "vsm.blur_sigma"));
   if (radius > 0) blur_map(ctx, radius, sigma, blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
   // Half floats run out of precision on large depth ranges: measure it so that it can be shown.
-  ctx.stats.moments_negative_variance = format_ == "RG16F" ? negative_variance_share(read_moments()) : -1.0;
+  // (Of depths only: warped moments have another background and scale.)
+  ctx.stats.moments_negative_variance =
+      format_ == "RG16F" && warp_exponent_ == 0.0f ? negative_variance_share(read_moments()) : -1.0;
 }
 
 void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method) {
@@ -163,7 +171,20 @@ void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod
   ctx.stats.blur_passes += 2;
 }
 
+float evsm_exponent(const ParamSet& params) {
+  if (vsm_choice(params, "vsm.warp") != "exponential") return 0.0f;
+  const float limit = vsm_choice(params, "vsm.format") == "RG16F" ? kEvsmMaxExponentRG16F : kEvsmMaxExponentRG32F;
+  return std::clamp(static_cast<float>(vsm_param(params, "vsm.evsm_exponent")), 0.0f, limit);
+}
+
+std::array<float, 4> moments_clear(float warp_exponent) {
+  if (warp_exponent == 0.0f) return {kMomentsClear[0], kMomentsClear[1], kMomentsClear[2], kMomentsClear[3]};
+  return {static_cast<float>(std::exp(static_cast<double>(warp_exponent))),
+          static_cast<float>(std::exp(2.0 * warp_exponent)), 0.0f, 0.0f};
+}
+
 void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
+  u.warp_exponent.set(evsm_exponent(params));
   u.min_variance.set(static_cast<float>(vsm_param(params, "vsm.min_variance")));
   u.bleed_delta.set(static_cast<float>(vsm_param(params, "vsm.bleed_delta")));
   glActiveTexture(GL_TEXTURE0);
@@ -198,12 +219,14 @@ void MomentsPass::set_fast_path(FastPath path) {
 
 void MomentsPass::draw_debug_quad(int channel, GLuint empty_vao) {
   if (debug_u_.generation != debug_.generation())
-    debug_u_ = {debug_.generation(), Uniform(debug_.id(), "u_moments"), Uniform(debug_.id(), "u_channel")};
+    debug_u_ = {debug_.generation(), Uniform(debug_.id(), "u_moments"), Uniform(debug_.id(), "u_channel"),
+                Uniform(debug_.id(), "u_warp_exponent")};
   glUseProgram(debug_.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
   debug_u_.moments.set(0);
   debug_u_.channel.set(channel);
+  debug_u_.warp_exponent.set(warp_exponent_);
   glBindVertexArray(empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -21,6 +21,7 @@
 // depth-map techniques allocate none of it; the ping-pong texture exists only while a blur runs.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
@@ -45,6 +46,19 @@ struct MomentsTargetInfo {
 // The clear value of the moments texture: depth 1 (the far plane) and its square, so texels nothing
 // was drawn into read as "nothing in front of anything" and light every point.
 inline constexpr float kMomentsClear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
+
+// Exponential variance shadow maps (EVSM, two moments) reuse this pass, its targets and its blur: the
+// moments are of w = exp(c z) instead of z (vsm.warp, vsm.evsm_exponent; the shaders are lab 13's). c is
+// clamped for the format so that exp(2c), the cleared background's second moment, and the slope term
+// (at most w^2 more) stay finite: 2 exp(2c) <= the format's largest value.
+inline constexpr float kEvsmMaxExponentRG32F = 42.0f;  // 2 e^84 = 6e36 < 3.4e38
+inline constexpr float kEvsmMaxExponentRG16F = 5.0f;   // 2 e^10 = 44053 < 65504
+// The exponent the moments are warped with under these parameters: 0 without the warp (plain VSM),
+// else vsm.evsm_exponent clamped to the format's limit above.
+float evsm_exponent(const ParamSet& params);
+// The clear value of the moments texture for an exponent from evsm_exponent(): kMomentsClear at 0, else
+// (exp(c), exp(2c)), the warped far plane.
+std::array<float, 4> moments_clear(float warp_exponent);
 
 // How the moments are blurred (the vsm.blur_method choices, in order).
 enum class BlurMethod {
@@ -99,6 +113,10 @@ class MomentsPass final : public ShadowPass {
   // 1. The moments of the nearest surface per texel, from the light. cull: 0 none, 1 front, 2 back.
   void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, bool cull_casters, long& draws,
                     long& culled);
+  // The exponent of EVSM's warp (0: none, plain VSM) the next draw_moments uses: its clear value and the
+  // moments shader's u_warp_exponent. ensure_targets(params) sets it from evsm_exponent(params).
+  void set_warp_exponent(float c) { warp_exponent_ = c; }
+  float warp_exponent() const { return warp_exponent_; }
   // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
   // Needs ensure_targets(..., blur = true).
   void blur(int direction, int radius, float sigma, GLuint empty_vao);
@@ -129,7 +147,7 @@ class MomentsPass final : public ShadowPass {
   ReloadableProgram moments_, blur_x_, blur_y_, debug_;
   struct MomentsUniforms {
     int generation = -1;
-    Uniform light_view_proj;
+    Uniform light_view_proj, warp_exponent;
   } moments_u_;
   struct BlurUniforms {
     int generation = -1;
@@ -137,7 +155,7 @@ class MomentsPass final : public ShadowPass {
   } blur_x_u_, blur_y_u_;
   struct DebugUniforms {
     int generation = -1;
-    Uniform moments, channel;
+    Uniform moments, channel, warp_exponent;
   } debug_u_;
   // The fast blur's programs, built on first use per radius (compiled in, the code unrolled): compute
   // shaders per radius and format (the image format is part of the shader), or the fragment fallback.
@@ -161,6 +179,7 @@ class MomentsPass final : public ShadowPass {
   void blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method);
 
   int size_ = 0;
+  float warp_exponent_ = 0.0f;
   std::string format_;
   GlTexture moments_texture_;  // A
   GlRenderbuffer depth_;       // the depth test while the moments are drawn

@@ -107,6 +107,8 @@ class Renderer {
   // The moments texture as (E[z], E[z^2]) pairs, bottom row first (after the blur, if one ran); throws
   // unless the moments technique is on.
   std::vector<float> read_moments(int* size) const;
+  // The current technique's pass (null before the first set_features), for what only it can read back.
+  const ShadowPass* shadow_pass() const { return shadow_.get(); }
   // The moments targets' format, filtering and attachments as GL reports them.
   MomentsTargetInfo moments_targets() const;
   // The shadow map as a picture (what the debug quad shows), RGBA8 top row first. A point light's six

@@ -82,6 +82,19 @@ std::vector<ParamSpec> vsm_param_specs() {
        "separable Gaussian, weights computed once on the CPU, each texel read once per 16 outputs (a compute shader; "
        "1.7-6x faster on llvmpipe for radii 1-16). brute2d: one pass over all (2r+1)^2 texels, for comparison.",
        {"separable", "fast", "brute2d"}, moments},
+      {"vsm.warp", "Depth warp", ParamKind::Choice, 0.0, 0.0, 1.0,
+       "What the moments are of. none: depth z (VSM). exponential: w = exp(c z) (EVSM, two moments), which "
+       "sharpens Chebyshev's bound behind an occluder and so cuts light bleeding. Needs a moments shader that "
+       "reads u_warp_exponent (lab 13's).",
+       {"none", "exponential"}, moments},
+      {"vsm.evsm_exponent", "EVSM exponent c", ParamKind::Float, 42.0, 1.0, 42.0,
+       "c in w = exp(c z), z in [0, 1]. Clamped to the format's range: 42 for RG32F (2c = 84 < ln(FLT_MAX) = 88.7, "
+       "room for the slope term), 5 for RG16F (2c = 10 < ln(65504 / 2) = 10.4). Larger c: less bleeding.",
+       {}, moments},
+      {"vsm.msm_moment_bias", "MSM moment bias (alpha)", ParamKind::Float, 3e-5, 1e-7, 1e-2,
+       "Moment shadow maps: the share of a uniform distribution's moments mixed into the filtered ones, so the "
+       "4x4 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
+       "moments are nearly singular (flat receivers).", {}, kInvalidatesNothing, true},
   };
 }
 

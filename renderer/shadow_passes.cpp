@@ -7,6 +7,7 @@
 #include "renderer/depth_map_pass.h"
 #include "renderer/image_io.h"
 #include "renderer/moments_pass.h"
+#include "renderer/msm_pass.h"
 #include "renderer/shadow_volume_pass.h"
 
 namespace shadowlab {
@@ -27,6 +28,7 @@ const ShadowPassEntry kEntries[] = {
      &make<CubeShadowPass>},
     {ShadowTechnique::Moments, &any_light, &MomentsPass::default_includes, &make<MomentsPass>},
     {ShadowTechnique::ShadowVolumes, &any_light, &ShadowVolumePass::default_includes, &make<ShadowVolumePass>},
+    {ShadowTechnique::MomentShadowMaps, &any_light, &MsmPass::default_includes, &make<MsmPass>},
 };
 
 }  // namespace

@@ -14,7 +14,8 @@ namespace shadowlab {
 // What the shadow pass stores: one depth per texel (depth texture, compared in the lit pass; a cube map
 // of distances for a point light) or the first two moments of depth (colour texture, filtered, read
 // through Chebyshev's bound). ShadowVolumes has no shadow map: stencil shadow volumes from adjacency.
-enum class ShadowTechnique { Depth, Moments, ShadowVolumes };
+// MomentShadowMaps: four power moments (RGBA32F) read through the Hamburger bound (renderer/msm_pass.h).
+enum class ShadowTechnique { Depth, Moments, ShadowVolumes, MomentShadowMaps };
 
 class ShadowPass;
 

@@ -256,11 +256,12 @@ PY
       || fail "a solution fails at GL $v: $(grep -v '^    ok' "$tmp/out" | head -40) $(cat "$tmp/err")"
     "$bin" check --lab all --impl exercise --json "$tmp/exercise.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 1 ] || fail "the stock exercises at GL $v: exit $rc, expected 1 (failed, not broken): $(cat "$tmp/err")"
-    python3 - "$tmp/solution.json" "$tmp/exercise.json" <<'PY' || fail "verdicts at GL $v"
-import json, sys
+    python3 - "$tmp/solution.json" "$tmp/exercise.json" "$src" <<'PY' || fail "verdicts at GL $v"
+import json, pathlib, sys
 sol = json.load(open(sys.argv[1]))["labs"]
 ex = json.load(open(sys.argv[2]))["labs"]
-assert len(sol) == len(ex) == 10, (len(sol), len(ex))
+folders = len([d for d in pathlib.Path(sys.argv[3], "labs").glob("[0-9][0-9]_*") if d.is_dir()])
+assert len(sol) == len(ex) == folders, (len(sol), len(ex), folders)  # every lab folder graded
 assert all(r["status"] == "passed" for r in sol), [(r["lab"], r["status"]) for r in sol]
 assert all(r["status"] != "grader_error" for r in ex), [(r["lab"], r["status"]) for r in ex]
 print("solutions passed:", len(sol), "exercises failed:", sum(r["status"] != "passed" for r in ex))

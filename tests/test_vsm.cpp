@@ -4,12 +4,14 @@
 // where the remap acts, and each lab's check passes with its solution and fails with its exercise.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
+#include "renderer/msm_pass.h"
 #include "renderer/renderer.h"
 #include "renderer/vsm_params.h"
 #include "tests/gl_fixture.h"
@@ -138,7 +140,7 @@ TEST_F(VsmTest, NoNanOrInfInMomentsOrLitOutput) {
   Renderer r;
   // Every lab's exercise and solution, both formats, with and without blur, under a steep, a grazing
   // and a straight-down light (flat receivers with zero slope: the variance cancels to 0 there).
-  for (int number : {3, 4, 5}) {
+  for (int number : {3, 4, 5, 13}) {  // 13: EVSM, c at each format's limit (42 RG32F, 5 RG16F)
     const Lab& lab = *find_lab(number);
     for (Impl impl : {Impl::Exercise, Impl::Solution}) {
       ASSERT_TRUE(r.set_features(lab.hooks(impl))) << r.shader_error();
@@ -271,6 +273,101 @@ TEST_F(VsmTest, Lab4SolutionPassesExerciseAndDeltaZeroFail) {
   EXPECT_FALSE(run_check(4, Impl::Exercise).passed());
   const CheckResult no_remap = run_check(4, Impl::Solution, {"vsm.bleed_delta=0"});
   EXPECT_FALSE(no_remap.passed()) << "delta = 0 leaves the bleeding in";
+}
+
+TEST_F(VsmTest, EvsmStoresTheWarpedDepthWithTheExponentClampedForTheFormat) {
+  ParamSet p = lab_params(*find_lab(13));
+  p.set("view.debug_quad", 0.0);
+  EXPECT_EQ(evsm_exponent(p), 42.0f);
+  p.apply_assignment("vsm.format=RG16F");
+  EXPECT_EQ(evsm_exponent(p), kEvsmMaxExponentRG16F) << "c is clamped to the half-float range";
+  p.apply_assignment("vsm.warp=none");
+  EXPECT_EQ(evsm_exponent(p), 0.0f) << "no warp: plain VSM";
+  p.apply_assignment("vsm.warp=exponential");
+  for (const char* format : {"RG32F", "RG16F"}) {
+    p.apply_assignment(std::string("vsm.format=") + format);
+    const float c = evsm_exponent(p);
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_features(find_lab(13)->hooks(Impl::Solution))) << r.shader_error();
+    r.render(p, request());
+    int size = 0, depth_size = 0;
+    const std::vector<float> moments = r.read_moments(&size);
+    const std::vector<float> depth = r.read_shadow_depth(&depth_size);
+    ASSERT_EQ(size, depth_size);
+    const std::array<float, 4> clear = moments_clear(c);
+    long covered = 0, wrong = 0;
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+      const float w = moments[2 * i], w2 = moments[2 * i + 1];
+      const float stored = std::string(format) == "RG16F" ? 0x1p-11f : 0.0f;  // half floats round the clear value
+      if (depth[i] >= 1.0f) {  // background: the warped far plane
+        ASSERT_LE(std::abs(w - clear[0]), stored * clear[0]) << format;
+        ASSERT_LE(std::abs(w2 - clear[1]), stored * clear[1]) << format;
+        continue;
+      }
+      ++covered;
+      // The first moment is exp(c z) of the stored depth: back in depth units within the format's
+      // precision (RG16F: 2^-11 relative, 4.9e-4 / c in z).
+      const double z = std::log(static_cast<double>(w)) / c;
+      wrong += !(std::abs(z - depth[i]) <= (std::string(format) == "RG16F" ? 1e-3 : 1e-5));
+      wrong += !(w2 >= w * w * (1.0f - 1e-3f) && w2 <= 2.0f * w * w * (1.0f + 1e-3f));
+    }
+    EXPECT_GT(covered, 1000) << format;
+    EXPECT_EQ(wrong, 0) << format;
+  }
+}
+
+TEST_F(VsmTest, Lab13SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(13, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(13, Impl::Exercise).passed()) << "the stock exercise is VSM: it bleeds as much";
+}
+
+TEST_F(VsmTest, MsmStoresFourPowerMomentsAndStaysFinite) {
+  // Lab 14's pass: RGBA32F moments (z, z^2, z^3, z^4) of the stored depth, the background the far
+  // plane's (1, 1, 1, 1); the Hamburger bound finite and in [0, 1] under steep, grazing and straight-down
+  // lights, with the solution and with the stock exercise (whose missing moments make the solve singular).
+  const Lab& lab = *find_lab(14);
+  ParamSet p = lab_params(lab);
+  p.set("view.debug_quad", 0.0);
+  for (Impl impl : {Impl::Solution, Impl::Exercise}) {
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_features(lab.hooks(impl))) << r.shader_error();
+    for (const char* elevation : {"50", "8", "90"}) {
+      p.apply_assignment(std::string("light.elevation=") + elevation);
+      r.render(p, request(true, 160, 90));
+      const std::vector<float> vis = r.read_visibility();
+      for (float v : vis) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << impl_name(impl) << " elevation " << elevation << ": " << v;
+    }
+    if (impl == Impl::Exercise) continue;
+    int size = 0;
+    const std::vector<float> depth = r.read_shadow_depth(&size);
+    ASSERT_GT(size, 0);
+    const auto* pass = dynamic_cast<const MsmPass*>(r.shadow_pass());
+    ASSERT_NE(pass, nullptr);
+    const std::vector<float> m = pass->read_moments();
+    ASSERT_EQ(m.size(), depth.size() * 4);
+    long covered = 0, wrong = 0;
+    for (std::size_t i = 0; i < depth.size(); ++i) {
+      const double z = m[4 * i];
+      if (depth[i] >= 1.0f) {
+        wrong += !(m[4 * i] == 1.0f && m[4 * i + 1] == 1.0f && m[4 * i + 2] == 1.0f && m[4 * i + 3] == 1.0f);
+        continue;
+      }
+      ++covered;
+      wrong += !(std::abs(z - depth[i]) <= 1e-6);  // 24-bit depth against the float moment
+      for (int k = 1; k < 4; ++k) wrong += !(std::abs(m[4 * i + k] - std::pow(z, k + 1)) <= 1e-6);
+    }
+    EXPECT_GT(covered, 1000);
+    EXPECT_EQ(wrong, 0);
+  }
+}
+
+TEST_F(VsmTest, Lab14SolutionPassesExerciseFails) {
+  const CheckResult solution = run_check(14, Impl::Solution);
+  EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
+  EXPECT_FALSE(run_check(14, Impl::Exercise).passed()) << "two moments are not enough for the Hamburger bound";
 }
 
 TEST_F(VsmTest, Lab5SolutionPassesExerciseFails) {

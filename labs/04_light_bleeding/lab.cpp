@@ -34,22 +34,6 @@ constexpr int kBlurRadius = 4;
 constexpr double kBlurSigma = 2.0;
 constexpr double kSweep[] = {0.0, 0.025, 0.05, 0.1, 0.125, 0.15, 0.2, 0.3, 0.4, 0.5};
 
-// The region where the occluders' shadows fall on the receiver (y = 0), so the camera spends its pixels
-// on the overlaps where bleeding happens rather than on open ground.
-Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {
-  Bounds b;
-  for (const auto& mesh : scene.meshes) {
-    if (mesh.name == "receiver") continue;
-    const Bounds m = mesh.bounds();
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec3 c = m.corner(i);
-      b.extend(glm::vec3(c.x, 0.0f, c.z));
-      b.extend(c - to_light * (c.y / to_light.y));
-    }
-  }
-  return b;
-}
-
 // The shadow test alone (labs/probe.h): one moments texel per case, read at its centre through a light
 // whose texture space is world space, n.l = 1 (the bias is the constant slider). Means, variances and
 // depths are chosen so float32 computes z - bias, E[z^2] - E[z]^2 and z - E[z] exactly; the reference is

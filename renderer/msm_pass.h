@@ -1,0 +1,55 @@
+// Moment shadow maps (Peters & Klein 2015, "Moment Shadow Mapping"), the four-moment Hamburger bound:
+// the moments pass stores (z, z^2, z^3, z^4) of the nearest surface per texel in an RGBA32F texture
+// (linear filtering; no blur: VSM's blurs are two-channel), and the lit pass bounds the light reaching
+// depth z from below by the Hamburger problem's extreme distribution (shaders/msm/hamburger.glsl).
+//
+//   moments pass:  scene from the light -> moments texture (RGBA32F, linear) + D24 renderbuffer
+//
+// The texture is cleared to the far plane's moments (1, 1, 1, 1). The moment bias (vsm.msm_moment_bias)
+// pulls the filtered moments towards those of a uniform distribution so the Hankel matrix stays
+// invertible in float32.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "renderer/shadow_pass.h"
+
+namespace shadowlab {
+
+inline constexpr float kMsmClear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+
+class MsmPass final : public ShadowPass {
+ public:
+  MsmPass();
+  static std::map<std::string, std::string> default_includes(LightType light);
+
+  // Points the moments program's "lab/msm_moments.glsl" at its file and rebuilds it.
+  bool set_includes(const IncludeMap& includes, const IncludeRules& rules) override;
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
+  // shadow.map_size: the RGBA32F texture and its depth renderbuffer.
+  bool ensure_targets(const ParamSet& params) override;
+  void draw_map(PassContext& ctx) override;
+  // The moments on unit 0 and vsm.msm_moment_bias.
+  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  int size() const override { return size_; }
+  std::vector<float> read_depth(int* size) const override;
+  std::vector<std::uint8_t> image(int* size) const override;
+  // The moments as RGBA quadruples, bottom row first.
+  std::vector<float> read_moments() const;
+
+ private:
+  ReloadableProgram moments_;
+  struct {
+    int generation = -1;
+    Uniform light_view_proj;
+  } moments_u_;
+  int size_ = 0;
+  GlTexture texture_;
+  GlRenderbuffer depth_;
+  GlFramebuffer fbo_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,8 @@
+#version 330 core
+// Moments pass of moment shadow maps: four power moments of the nearest surface's depth per texel
+// into an RGBA32F attachment ("lab/msm_moments.glsl", lab 14).
+#include "lab/msm_moments.glsl"
+
+layout(location = 0) out vec4 o_moments;
+
+void main() { o_moments = msm_moments(gl_FragCoord.z); }
