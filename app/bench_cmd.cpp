@@ -121,7 +121,7 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
     renderer.invalidate_shadow_map();               // time the whole pipeline, every pass
     const FrameStats& stats = renderer.render(params, request);
     if (frame < 0) continue;
-    for (const auto& p : stats.passes) pass_ms[p.name].push_back(p.gpu_ms);
+    for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
     cpu_ms.push_back(stats.cpu_ms);
   }
   for (auto& [name, v] : pass_ms) {

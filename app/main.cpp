@@ -79,6 +79,8 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", window_options.screenshot, "Save the last frame, panel included, to this PNG");
   app.add_option("--bench", window_options.bench_file,
                  "Open the Speed against error window on this bench.json (default: docs/bench.json, when opened)");
+  app.add_option("--frame-report", window_options.frame_report,
+                 "On closing, write what the frames cost (times, glFinish calls, blocking reads) as JSON to this file");
   app.add_option("--script", window_options.script,
                  "Scripted input for tests: key:K,frames:N,screenshot:F,resize:WxH,iconify,restore,wait:S,drop:F");
 

@@ -157,8 +157,8 @@ void draw_pass_overlay(const FrameStats& left, const FrameStats* right) {
     std::string text;
     double total = 0.0;
     char item[96];
-    for (const auto& p : s.passes) {
-      std::snprintf(item, sizeof item, "%s %.2f  ", p.name.c_str(), p.gpu_ms);
+    for (const auto& p : s.shown_passes()) {
+      std::snprintf(item, sizeof item, "%.*s %.2f  ", static_cast<int>(p.name.size()), p.name.data(), p.gpu_ms);
       text += item;
       total += p.gpu_ms;
     }

@@ -18,6 +18,9 @@ struct WindowOptions {
   // The bench.json shown in the Speed against error window (opened at start when given). Empty: the
   // project's measured docs/bench.json, loaded when the window is first opened.
   std::string bench_file;
+  // Written when the window closes: what the interactive frames cost (frame times, and the glFinish
+  // calls and blocking query reads with the pass-time line shown and hidden). For tests and benchmarks.
+  std::string frame_report;
 };
 
 // Returns the process exit code. Without a display it prints one line naming the headless commands.
