@@ -81,7 +81,10 @@ bool SplitView::handle_divider(CompareState& state) {
 void SplitView::compose(const ParamSet& right, const FrameRequest& request, const CompareState& state, const Lab& lab,
                         Impl impl) {
   if (!renderer_ || !state.split) return;
-  renderer_->render(right, request);
+  // The right side is drawn offscreen and copied (its shadow passes must not meet the scissor).
+  FrameRequest offscreen = request;
+  offscreen.to_window = false;
+  renderer_->render(right, offscreen);
   // The blit honours the scissor rectangle: only the part right of the divider is replaced.
   const int x0 = static_cast<int>(std::lround(state.divider * static_cast<float>(request.width)));
   glEnable(GL_SCISSOR_TEST);

@@ -392,8 +392,8 @@ void render_view(App& app, int width, int height) {
   request.camera = app.camera;
   request.width = width;
   request.height = height;
+  request.to_window = true;  // drawn where it is seen: the split view and the magnifier read it there too
   app.renderer->render(app.params, request);
-  app.renderer->present(0, width, height);
   if (app.compare.split)
     app.split.compose(app.split.right_params(*app.lab, app.params, app.compare), request, app.compare, *app.lab, app.impl);
   if (app.compare.magnifier) {
@@ -497,7 +497,8 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     side.gl_finishes += FrameCost::finishes(app) - finishes_before;
     side.blocking_reads += FrameCost::blocking(app) - blocking_before;
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    // With the panel hidden and no line or hint shown there is nothing over the view to draw.
+    if (ImGui::GetDrawData()->TotalVtxCount > 0) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ++frame;
     script.frame_drawn();
     const bool last_frame = (options.frames > 0 && frame >= options.frames) || (!script.empty() && script.finished());

@@ -67,6 +67,10 @@ struct FrameRequest {
   int width = 1280;
   int height = 720;
   bool gbuffer = false;  // also write visibility, world positions and normals (for the oracle)
+  // Draw the view straight into the window's framebuffer (0, width x height, with depth and stencil)
+  // instead of the renderer's own target: no copy (present() is then not needed, read-backs of the
+  // view have nothing to read). Not with gbuffer.
+  bool to_window = false;
 };
 
 class Renderer {
