@@ -74,6 +74,11 @@ int main(int argc, char** argv) {
   shadowlab::WindowOptions window_options;
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
   app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
+  app.add_option("--set", window_options.assignments,
+                 "Parameter value over the lab's saved values, key=value (repeatable; see `shadowlab labs --params`)");
+  app.add_option("--camera", window_options.camera,
+                 "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
+  app.add_option("--size", window_options.size, "Window size in pixels, WxH (default 1440x860)");
   app.add_option("--frames", window_options.frames, "Close the window after this many frames (for tests)")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", window_options.screenshot, "Save the last frame, panel included, to this PNG");
@@ -89,6 +94,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--lab", render.lab, "Lab whose features and parameters to use")->check(CLI::Range(0, 99));
   render_cmd->add_option("--scene", render.scene_file, "glTF 2.0 file (.gltf or .glb); default: the built-in scene");
   render_cmd->add_option("--set", render.assignments, "Parameter value, key=value (repeatable; see `shadowlab labs --params`)");
+  render_cmd->add_option("--camera", render.camera,
+                         "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
   render_cmd->add_option("--width", render.width, "Image width in pixels")->check(CLI::Range(16, 8192));
   render_cmd->add_option("--height", render.height, "Image height in pixels")->check(CLI::Range(16, 8192));
   render_cmd->add_option("--impl", render.impl, "Run the lab's exercise or its solution")

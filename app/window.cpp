@@ -54,7 +54,7 @@ constexpr const char* kHeadlessHint =
 
 // Creates a window with the highest core profile the driver gives, 4.6 down to 3.3. A hidden one holds
 // the context the Check runs in on its worker thread. On failure GLFW's reason is kept (take_glfw_error).
-GLFWwindow* create_window(bool visible) {
+GLFWwindow* create_window(bool visible, int width = 1440, int height = 860) {
   const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
   for (const auto& v : versions) {
     glfwDefaultWindowHints();
@@ -66,7 +66,7 @@ GLFWwindow* create_window(bool visible) {
 #ifndef NDEBUG
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
 #endif
-    if (GLFWwindow* w = glfwCreateWindow(visible ? 1440 : 1, visible ? 860 : 1, "shadowlab", nullptr, nullptr)) {
+    if (GLFWwindow* w = glfwCreateWindow(visible ? width : 1, visible ? height : 1, "shadowlab", nullptr, nullptr)) {
       take_glfw_error();  // the versions refused before this one are not an error
       return w;
     }
@@ -542,6 +542,17 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     return kExitUsage;
   }
+  int width = 1440, height = 860;
+  OrbitCamera camera;
+  try {
+    if (!options.size.empty()) parse_size_option(options.size, &width, &height);
+    ParamSet check = lab_params(*lab);
+    for (const auto& a : options.assignments) apply_set_option(check, a);
+    camera = camera_option(options.camera, scene.bounds());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    return kExitUsage;
+  }
   std::optional<BenchPlots> bench;  // asked for on the command line: read it now, or say why not
   try {
     if (!options.bench_file.empty()) bench = load_bench_plots(options.bench_file);
@@ -554,7 +565,7 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: cannot open a window: %s; %s\n", take_glfw_error().c_str(), kHeadlessHint);
     return kExitRuntime;
   }
-  GLFWwindow* window = create_window(true);
+  GLFWwindow* window = create_window(true, width, height);
   if (!window) {
     std::fprintf(stderr, "shadowlab: cannot create an OpenGL 3.3 core window: %s; %s\n", take_glfw_error().c_str(),
                  kHeadlessHint);
@@ -581,12 +592,15 @@ int run_window(const WindowOptions& options) {
     app.gl_fallbacks = gl_fallbacks();
     app.renderer = std::make_unique<Renderer>();
     app.renderer->set_scene(scene);
-    app.camera = OrbitCamera::framing(scene.bounds());
+    app.camera = camera;
+    app.windowed[2] = width;
+    app.windowed[3] = height;
     app.bench.path = options.bench_file.empty() ? (data_dir() / "docs" / "bench.json").string() : options.bench_file;
     app.bench_plots = std::move(bench);
     app.bench.open = app.bench_plots.has_value();
     app.settings.start();  // only now: a run that failed to start never touches the settings file
     app.open_lab(*lab);
+    for (const auto& a : options.assignments) apply_set_option(app.params, a);  // over the saved values
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, drop_callback);  // ImGui's backend does not use this one
     try {

@@ -2,12 +2,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
 struct WindowOptions {
   int lab = 0;
   std::string scene_file;
+  // As `render` takes them: parameter values over the lab's (and its saved settings'), the camera
+  // ("eye=x,y,z target=x,y,z fov=deg"), the window's size in pixels.
+  std::vector<std::string> assignments;
+  std::string camera;
+  std::string size;  // "WxH"; empty: 1440x860
   // For tests and documentation: quit after this many frames (0: run until closed), saving the last
   // frame, panel included, to `screenshot` if given.
   int frames = 0;
