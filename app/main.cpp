@@ -135,6 +135,8 @@ int main(int argc, char** argv) {
   shadowlab::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
+  bench_cmd->add_flag("--frame-cost", bench.frame_cost_only,
+                      "Only the frame-cost figures: each lab's frame against its lit pass, lab 6 against the bare two-pass baseline");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
   bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out); 3 runtime error.\n"

@@ -77,9 +77,10 @@ void LitPass::for_each_program(const std::function<void(ReloadableProgram&)>& f)
   for (auto& [key, p] : programs_) f(p.program);
 }
 
-void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window) {
+void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window, GLuint window) {
   if (to_window && gbuffer) throw std::logic_error("the window's framebuffer has no G-buffer");
   to_window_ = to_window;
+  window_ = window;
   if (to_window) {  // drawn where it is seen: the own targets go (made again if a copy is asked for)
     width_ = width;
     height_ = height;
@@ -129,7 +130,7 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
     glViewport(0, 0, width_, height_);
   }
-  begin(variant, ctx.gbuffer, to_window_);
+  begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
   set_uniforms(ctx, shadow, p.u);
   ctx.gpu_scene.bind();
@@ -140,14 +141,14 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   end();
 }
 
-void LitPass::begin(LitVariant variant, bool gbuffer, bool to_window) {
+void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {
   const GLenum window[] = {GL_BACK};
   const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glEnable(GL_DEPTH_TEST);
   switch (variant) {
     case LitVariant::Lit:
     case LitVariant::VolumeAmbient: {  // the view from scratch: colour, depth (and the G-buffer)
-      glDrawBuffers(gbuffer ? 4 : 1, to_window ? window : all);
+      glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : all);
       glDepthMask(GL_TRUE);
       glDepthFunc(GL_LESS);
       const float background[] = {0.16f, 0.18f, 0.22f, 1.0f};
@@ -161,7 +162,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer, bool to_window) {
     case LitVariant::VolumeAdditive: {
       // Colour and visibility only; positions and normals stay as the ambient pass wrote them.
       const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_NONE};
-      glDrawBuffers(gbuffer ? 4 : 1, to_window ? window : buffers);
+      glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : buffers);
       glDepthMask(GL_FALSE);
       glDepthFunc(GL_EQUAL);  // exactly the surfaces the ambient pass kept (lit.vert's gl_Position is invariant)
       glEnable(GL_STENCIL_TEST);

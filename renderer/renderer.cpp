@@ -134,7 +134,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape shape = shadow.shape();
   if (shadow.ensure_targets(params)) ++targets_generation_;
-  lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window);
+  lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
+                       request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
 
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's

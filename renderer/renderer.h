@@ -71,6 +71,7 @@ struct FrameRequest {
   // instead of the renderer's own target: no copy (present() is then not needed, read-backs of the
   // view have nothing to read). Not with gbuffer.
   bool to_window = false;
+  GLuint window_framebuffer = 0;  // with to_window: the framebuffer that stands for the window (0: its own)
 };
 
 class Renderer {
