@@ -474,9 +474,26 @@ void draw_table(const Block& b, const InlineContext& body, const UiFonts* fonts,
   ImGui::EndTable();
 }
 
+// HTML comments (`<!-- ... -->`) are invisible where Markdown is rendered; the lab texts use them to tie
+// their figures to the code (tests/docs/lab_texts.py). md4c runs without inline HTML, so they go first.
+// (A comment inside a code span goes too: the lab texts have none.)
+std::string without_html_comments(const std::string& markdown) {
+  std::string out;
+  out.reserve(markdown.size());
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t open = markdown.find("<!--", at);
+    const std::size_t close = open == std::string::npos ? open : markdown.find("-->", open + 4);
+    if (close == std::string::npos) return out + markdown.substr(at);
+    out += markdown.substr(at, open - at);
+    at = close + 3;
+  }
+}
+
 }  // namespace
 
-MarkdownDocument::MarkdownDocument(const std::string& markdown) {
+MarkdownDocument::MarkdownDocument(const std::string& text) {
+  const std::string markdown = without_html_comments(text);
   Builder builder(blocks_);
   MD_PARSER parser{};
   parser.abi_version = 0;

@@ -134,6 +134,23 @@ std::string Criterion::explain() const {
   return s + needs + (fix.empty() ? "." : ": " + fix);
 }
 
+void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,
+                                   const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
+                                   const std::vector<HeldOutRange>& ranges, const HardLimits& limits) {
+  const Features features = ctx.hooks();
+  const std::string impl = impl_name(ctx.impl);
+  const auto m = ctx.measure(params, features, prefix + "_" + tag + "_" + impl);
+  grade_hard_shadow(result, tag, m.metrics, limits);
+  result.metrics[tag]["render_ms"] = m.render_ms;
+  result.metrics[tag]["oracle_ms"] = m.oracle_ms;
+  for (const auto& c : draw_directional_cases(ctx, ranges)) {
+    const auto h = ctx.measure(c.apply(ctx, held_out_params), features, prefix + "_" + c.tag + "_" + impl);
+    grade_hard_shadow(result, c.tag, h.metrics, limits);
+    result.conditions.push_back(c.to_json());
+  }
+  ctx.use_default_scene();
+}
+
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits) {
   result.metrics[tag] = to_json(m);
   result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, limits.lit_advice});
@@ -154,7 +171,13 @@ CheckContext::CheckContext(Renderer& r, const Lab& l, Impl i, const Scene& defau
 void CheckContext::grade_submission(const std::filesystem::path& folder) {
   impl = Impl::Exercise;
   graded.clear();
-  for (const auto& file : lab.exercise_files) graded.push_back(std::filesystem::absolute(folder / file));
+  for (const auto& file : lab.exercise_files) {
+    const auto path = std::filesystem::absolute(folder / file);
+    // Not the grader's fault, and not to be graded as the stock file: the student's answer is missing.
+    if (!std::filesystem::is_regular_file(path))
+      throw BuildError(file + ": not in the submission " + folder.string() + " (lay it out like the project: " + file + ")");
+    graded.push_back(path);
+  }
 }
 
 Features CheckContext::hooks_with_only(std::size_t slot) const {
@@ -361,6 +384,7 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
     result.images = ctx.images;
   } catch (const BuildError& e) {
     result.error = e.what();
+    if (result.error.empty()) result.error = "the shaders did not build, and the driver's log is empty";
     // The student's fault when the same programs build with the solution's files in their place.
     try {
       result.students_error = renderer.set_features(lab.hooks(Impl::Solution)) && !lab.files(Impl::Exercise).empty();

@@ -191,6 +191,13 @@ struct HeldOutRange {
 // One case per range (so low and high lights are always both there), azimuth within 75 degrees of the
 // lab's, the rest picked from the range's lists, all drawn from the seed.
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges);
+// Grades a hard shadow at the lab's own light (`params`, as `tag`, with its render and oracle times), then
+// at the held-out directional cases drawn from `ranges` (`held_out_params` with each case's light, map
+// size and scene), recording each case in result.conditions; images are named `<prefix>_<tag>_<impl>`.
+// Leaves the default scene in use.
+void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,
+                                   const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
+                                   const std::vector<HeldOutRange>& ranges, const HardLimits& limits);
 
 // One lab's grading as `shadowlab check` and the window's Check button run it.
 struct CheckRun {

@@ -98,6 +98,12 @@ std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sw
   return out;
 }
 
+// The bias probe's limits, as ratios of the bias found to a texel's footprint with its slope term.
+constexpr double kMinBiasRatio = 0.5;         // below: acne
+constexpr double kMaxBiasRatio = 4.0;         // above: peter-panning
+constexpr double kMaxBiasRatioSpread = 1.4;   // per n.l, largest over least ratio across distances and texel sizes
+constexpr double kMinBiasSlopeGrowth = 1.5;   // bias(n.l = 0.5) / bias(n.l = 1), median
+
 void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>& thresholds, double slope) {
   double least = std::numeric_limits<double>::infinity(), most = 0.0;
   std::map<double, std::pair<double, double>> per_slope;  // n.l -> (least, most) ratio
@@ -129,15 +135,15 @@ void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>
   result.metrics["bias_probe"] = list;
   const std::string why = "probe: the offset at which a point behind a stored occluder turns shadowed, against "
                           "distance x texel angle x (1 + slope x tan)";
-  result.criteria.push_back({"bias.too_small", least, Criterion::kAtLeast, 0.5, why,
+  result.criteria.push_back({"bias.too_small", least, Criterion::kAtLeast, kMinBiasRatio, why,
                              "the bias must cover a texel's footprint at the fragment's distance (distance x "
                              "u_texel_angle), or surfaces shadow themselves (acne)."});
-  result.criteria.push_back({"bias.too_large", most, Criterion::kAtMost, 4.0, why,
+  result.criteria.push_back({"bias.too_large", most, Criterion::kAtMost, kMaxBiasRatio, why,
                              "the bias is several texels' footprints too large: shadows detach (peter-panning)."});
-  result.criteria.push_back({"bias.not_proportional", spread, Criterion::kAtMost, 1.4, why,
+  result.criteria.push_back({"bias.not_proportional", spread, Criterion::kAtMost, kMaxBiasRatioSpread, why,
                              "the bias must grow in proportion to the distance from the light and to u_texel_angle "
                              "(a texel's footprint), not be a constant tuned to one place or map size."});
-  result.criteria.push_back({"bias.slope_growth", slope_growth, Criterion::kAtLeast, 1.5, why,
+  result.criteria.push_back({"bias.slope_growth", slope_growth, Criterion::kAtLeast, kMinBiasSlopeGrowth, why,
                              "the bias must grow with the slope (u_bias_slope x tan of the angle of incidence)."});
 }
 

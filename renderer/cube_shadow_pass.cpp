@@ -7,39 +7,53 @@ namespace shadowlab {
 
 namespace {
 
-GlTexture make_cube(GLenum internal_format, GLenum format, int size) {
+constexpr const char* kStoreInclude = "lab/cube_store.glsl";
+constexpr const char* kDefaultStore = "shaders/cube/store.glsl";
+
+// Six layers, one per cube face in GL's order (the lit pass selects the face itself: lab 8).
+GlTexture make_faces(GLenum internal_format, GLenum format, int size) {
   GlTexture t = GlTexture::create();
-  glBindTexture(GL_TEXTURE_CUBE_MAP, t.id());
-  for (int f = 0; f < 6; ++f)
-    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, static_cast<GLint>(internal_format), size, size, 0, format,
-                 GL_FLOAT, nullptr);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, t.id());
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internal_format), size, size, 6, 0, format, GL_FLOAT, nullptr);
   // Nearest: a distance averaged across an object's outline is a distance where there is no surface.
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   return t;
 }
 
 }  // namespace
 
 CubeShadowPass::CubeShadowPass()
-    : faces_({"shaders/cube/distance.vert", {}, "shaders/cube/distance.frag", {}, {}}),
+    : faces_({"shaders/cube/distance.vert", {}, "shaders/cube/distance.frag", {}, {{kStoreInclude, kDefaultStore}}}),
       layered_({"shaders/cube/distance.vert", "shaders/cube/layers.geom", "shaders/cube/distance.frag",
-                {{"LAYERED", "1"}}, {}}),
+                {{"LAYERED", "1"}}, {{kStoreInclude, kDefaultStore}}}),
       face_quad_({"shaders/fullscreen.vert", {}, "shaders/debug/cube_face.frag", {}, {}}) {
   if (!faces_.rebuild() || !layered_.rebuild())
     throw std::runtime_error("cannot build the cube shadow pass's shaders:\n" + faces_.error() + layered_.error());
 }
 
 std::map<std::string, std::string> CubeShadowPass::default_includes(LightType) {
-  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"}, {"lab/visibility.glsl", "shaders/shadow/cube.glsl"}};
+  return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
+          {"lab/visibility.glsl", "shaders/shadow/cube.glsl"},
+          {kStoreInclude, kDefaultStore}};
 }
 
-bool CubeShadowPass::set_includes(const IncludeMap&, const IncludeRules&) {
-  // The distance programs include no feature files (built in the constructor).
-  return face_quad_.rebuild();
+bool CubeShadowPass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {
+  // The distance programs include what the faces store (lab 8's part 1): a file that does not compile is
+  // reported here, not at the first frame.
+  bool ok = true;
+  for (ReloadableProgram* p : {&faces_, &layered_}) {
+    ProgramDesc d = p->desc();
+    d.includes = includes;
+    d.rules = rules;
+    if (!d.includes.count(kStoreInclude)) d.includes[kStoreInclude] = kDefaultStore;
+    p->set_desc(std::move(d));
+    ok = p->rebuild() && ok;
+  }
+  return face_quad_.rebuild() && ok;
 }
 
 void CubeShadowPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
@@ -65,8 +79,8 @@ void CubeShadowPass::draw_map(PassContext& ctx) {
 
 void CubeShadowPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
   glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, distance_.id());
-  u.shadow_cube.set(2);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
+  u.shadow_faces.set(2);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, 0);
 }
@@ -79,7 +93,7 @@ void CubeShadowPass::draw_debug_quads(const DebugQuadArea& area) {
   const int cell = area.side / 2;
   glUseProgram(face_quad_.id());
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, distance_.id());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
   face_quad_u_.cube.set(0);
   face_quad_u_.far_plane.set(std::max(far_plane_, 1e-6f));
   glBindVertexArray(area.empty_vao);
@@ -112,8 +126,8 @@ std::vector<std::uint8_t> CubeShadowPass::image(int* size) const {
 
 bool CubeShadowPass::ensure_targets(int size) {
   if (size == size_ && distance_) return false;
-  distance_ = make_cube(GL_R32F, GL_RED, size);
-  depth_ = make_cube(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, size);
+  distance_ = make_faces(GL_R32F, GL_RED, size);
+  depth_ = make_faces(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, size);
   fbo_ = GlFramebuffer::create();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0);  // layered: all six faces
@@ -165,9 +179,8 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
     glUseProgram(faces_.id());
     faces_u_.light_position.set(light_position);
     for (int f = 0; f < 6; ++f) {
-      const GLenum target = GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(f);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, distance_.id(), 0);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, target, depth_.id(), 0);
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0, f);
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth_.id(), 0, f);
       glClearBufferfv(GL_COLOR, 0, empty);
       glClearBufferfv(GL_DEPTH, 0, &far_depth);
       faces_u_.light_view_proj.set(view_proj[f]);
@@ -181,8 +194,7 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
 std::vector<float> CubeShadowPass::read_face(int face) const {
   GlFramebuffer read = GlFramebuffer::create();
   glBindFramebuffer(GL_READ_FRAMEBUFFER, read.id());
-  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face),
-                         distance_.id(), 0);
+  glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0, face);
   return read_pixels(read.id(), GL_COLOR_ATTACHMENT0, size_, size_, GL_RED, 1);
 }
 

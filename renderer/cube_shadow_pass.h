@@ -33,7 +33,7 @@ class CubeShadowPass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   // The six faces (point.single_pass: in one draw through the layering geometry shader).
   void draw_map(PassContext& ctx) override;
-  // The cube on texture unit 2 (u_shadow_cube).
+  // The six faces, a six-layer array, on texture unit 2 (u_shadow_faces).
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
   // The six faces in a 3 x 2 grid, top row +X -X +Y, bottom row -Y +Z -Z, together `side` high.
   void draw_debug_quads(const DebugQuadArea& area) override;
@@ -72,8 +72,8 @@ class CubeShadowPass final : public ShadowPass {
   float far_plane_ = 1.0f;  // the far plane the faces were drawn with: the largest distance they store
 
   int size_ = 0;
-  GlTexture distance_;  // GL_TEXTURE_CUBE_MAP, R32F, nearest
-  GlTexture depth_;     // GL_TEXTURE_CUBE_MAP, DEPTH_COMPONENT24: the depth test, never sampled
+  GlTexture distance_;  // GL_TEXTURE_2D_ARRAY, six layers in GL's cube face order, R32F, nearest
+  GlTexture depth_;     // GL_TEXTURE_2D_ARRAY, DEPTH_COMPONENT24: the depth test, never sampled
   GlFramebuffer fbo_;
 };
 

@@ -45,7 +45,7 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_light_near"),
        Uniform(id, "u_light_far"),
        Uniform(id, "u_texel_angle"),
-       Uniform(id, "u_shadow_cube"),
+       Uniform(id, "u_shadow_faces"),
        Uniform(id, "u_shadow_map_compare"),
        Uniform(id, "u_pcf_radius"),
        Uniform(id, "u_pcf_hardware"),

@@ -73,7 +73,18 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
   bool ok = lit_->build(includes, features.include_rules, light, variants);
   ok = pass.set_includes(includes, features.include_rules) && ok;
-  if (!ok) return false;
+  if (!ok) {
+    // Kept now: a fresh pass that failed is dropped, and shader_error() walks only the kept passes.
+    failed_build_error_.clear();
+    const auto collect = [&](ReloadableProgram& program) {
+      if (!program.error().empty() && failed_build_error_.find(program.error()) == std::string::npos)
+        failed_build_error_ += program.error();
+    };
+    lit_->for_each_program(collect);
+    pass.for_each_program(collect);
+    return false;
+  }
+  failed_build_error_.clear();
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
@@ -99,6 +110,7 @@ bool Renderer::poll_shader_files() {
 }
 
 std::string Renderer::shader_error() const {
+  if (!failed_build_error_.empty()) return failed_build_error_;
   std::string out;
   for_each_program([&](ReloadableProgram& program) {
     if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
@@ -217,6 +229,15 @@ std::vector<float> Renderer::read_moments(int* size) const {
 MomentsTargetInfo Renderer::moments_targets() const {
   const auto* moments = dynamic_cast<const MomentsPass*>(shadow_.get());
   return moments ? moments->query_targets() : MomentsTargetInfo{};
+}
+
+VolumeTriangles Renderer::count_volume_triangles(bool caps) {
+  auto* volumes = dynamic_cast<ShadowVolumePass*>(shadow_.get());
+  if (!volumes || !lit_) throw std::logic_error("count_volume_triangles needs the shadow-volume technique and a frame");
+  glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
+  const VolumeTriangles count = volumes->count_triangles(light_.vector4(), caps);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return count;
 }
 
 std::vector<VolumeMeshReport> Renderer::volume_report() const {

@@ -39,6 +39,7 @@ class LitPass;
 class DebugViews;
 struct MomentsTargetInfo;
 struct VolumeMeshReport;
+struct VolumeTriangles;
 
 // The features a frame uses beyond the parameters: shader includes, a light fit, the shadow technique,
 // a fixed light type. Whoever sets them (a lab, a benchmark, a test), the renderer sees only these.
@@ -141,6 +142,9 @@ class Renderer {
   // The shadow volumes' adjacency report per shadow-casting mesh (empty unless shadow volumes or their
   // wireframe view were drawn).
   std::vector<VolumeMeshReport> volume_report() const;
+  // The triangles the shadow volumes emit for the last frame's light (caps: as z-fail draws them), sorted
+  // into sides and caps; needs the shadow-volume technique.
+  VolumeTriangles count_volume_triangles(bool caps);
   // One face of the point light's distance cube, bottom row first; throws unless a point light's shadow
   // map was rendered.
   std::vector<float> read_cube_face(int face, int* size) const;
@@ -162,6 +166,8 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_scene_;
   long scene_generation_ = 0;  // bumps with every set_scene
   Features features_;
+  // The errors of the last set_features that failed: its programs may belong to a pass that was not kept.
+  std::string failed_build_error_;
   LightType programs_light_ = LightType::Directional;  // the light type the programs were built for
   const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique shadow_ is
   std::unique_ptr<ShadowPass> shadow_;

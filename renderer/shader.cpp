@@ -287,6 +287,11 @@ ProgramBuild build_program(const ProgramDesc& desc) {
   }
   GlProgram program = GlProgram::create();
   for (const auto& s : shaders) glAttachShader(program.id(), s.id());
+  if (!desc.feedback_varyings.empty()) {
+    std::vector<const char*> names;
+    for (const auto& name : desc.feedback_varyings) names.push_back(name.c_str());
+    glTransformFeedbackVaryings(program.id(), static_cast<GLsizei>(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
+  }
   glLinkProgram(program.id());
   for (const auto& s : shaders) glDetachShader(program.id(), s.id());
   if (!succeeded(program.id(), GL_LINK_STATUS, glGetProgramiv)) {

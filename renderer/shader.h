@@ -62,6 +62,8 @@ struct ProgramDesc {
   // Virtual include names: `#include "lab/shadow.glsl"` can be pointed at a lab's exercise or solution.
   std::map<std::string, std::filesystem::path> includes;
   IncludeRules rules = {};
+  // Outputs of the last vertex-processing stage that transform feedback may capture (interleaved).
+  std::vector<std::string> feedback_varyings = {};
 };
 
 struct ProgramBuild {

@@ -39,7 +39,7 @@ struct LitUniforms {
   int generation = -1;
   Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
   Uniform min_variance, bleed_delta;
-  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_cube;
+  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
 };

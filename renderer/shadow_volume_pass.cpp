@@ -1,6 +1,8 @@
 #include "renderer/shadow_volume_pass.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "renderer/adjacency.h"
 #include "renderer/lit_pass.h"
@@ -9,7 +11,7 @@ namespace shadowlab {
 
 ShadowVolumePass::ShadowVolumePass()
     : program_({"shaders/volume/volume.vert", "shaders/volume/extrude.geom", "shaders/volume/volume.frag", {},
-                {{"lab/volume.glsl", "shaders/volume/volume.glsl"}}}),
+                {{"lab/volume.glsl", "shaders/volume/volume.glsl"}}, {}, {"v_world_w"}}),
       vao_(GlVertexArray::create()),
       positions_(GlBuffer::create()),
       indices_(GlBuffer::create()) {}
@@ -83,8 +85,7 @@ void ShadowVolumePass::set_scene(const Scene& scene) {
   index_count_ = indices.size();
 }
 
-void ShadowVolumePass::draw_volumes(const glm::mat4& view_proj, const glm::vec4& light, bool caps,
-                                    const glm::vec4& color, long& draws) {
+void ShadowVolumePass::use_program(const glm::mat4& view_proj, const glm::vec4& light, bool caps, const glm::vec4& color) {
   if (!program_.valid()) throw std::runtime_error("shadow volume program failed to build:\n" + program_.error());
   if (u_.generation != program_.generation()) {
     const GLuint id = program_.id();
@@ -96,9 +97,18 @@ void ShadowVolumePass::draw_volumes(const glm::mat4& view_proj, const glm::vec4&
   u_.light.set(light);
   u_.caps.set(caps ? 1 : 0);
   u_.color.set(color);
+}
+
+void ShadowVolumePass::draw_adjacency(long& draws) {
   glBindVertexArray(vao_.id());
   glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
   ++draws;
+}
+
+void ShadowVolumePass::draw_volumes(const glm::mat4& view_proj, const glm::vec4& light, bool caps,
+                                    const glm::vec4& color, long& draws) {
+  use_program(view_proj, light, caps, color);
+  draw_adjacency(draws);
 }
 
 void ShadowVolumePass::draw_stencil(const glm::mat4& view_proj, const glm::vec4& light, bool z_fail, long& draws) {
@@ -130,6 +140,39 @@ void ShadowVolumePass::draw_stencil(const glm::mat4& view_proj, const glm::vec4&
   glDisable(GL_DEPTH_CLAMP);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
+}
+
+VolumeTriangles ShadowVolumePass::count_triangles(const glm::vec4& light, bool caps) {
+  // Each input triangle emits at most max_vertices = 18 vertices: a strip of at most 16 triangles.
+  const std::size_t most = index_count_ / 6 * 16 * 3;
+  GlBuffer feedback = GlBuffer::create();
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback.id());
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(most, 3) * sizeof(float)),
+               nullptr, GL_STATIC_READ);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback.id());
+  GlQuery written = GlQuery::create();
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, written.id());
+  use_program(glm::mat4(1.0f), light, caps, glm::vec4(0.0f));  // before: no program change while capturing
+  glBeginTransformFeedback(GL_TRIANGLES);
+  long draws = 0;
+  draw_adjacency(draws);
+  glEndTransformFeedback();
+  glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+  glDisable(GL_RASTERIZER_DISCARD);
+  GLuint64 triangles = 0;
+  glGetQueryObjectui64v(written.id(), GL_QUERY_RESULT, &triangles);
+  std::vector<float> w(static_cast<std::size_t>(triangles) * 3);
+  if (!w.empty()) glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLsizeiptr>(w.size() * sizeof(float)), w.data());
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+  VolumeTriangles count;
+  for (std::size_t t = 0; t < static_cast<std::size_t>(triangles); ++t) {
+    int finite = 0;
+    for (int v = 0; v < 3; ++v) finite += w[3 * t + static_cast<std::size_t>(v)] != 0.0f;
+    (finite == 3 ? count.near_caps : finite == 0 ? count.far_caps : count.sides) += 1;
+  }
+  return count;
 }
 
 void ShadowVolumePass::draw_wireframe(const glm::mat4& view_proj, const glm::vec4& light, bool caps, long& draws) {

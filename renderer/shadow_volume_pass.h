@@ -36,6 +36,13 @@ struct VolumeMeshReport {
   bool closed_manifold() const { return open_edges == 0 && non_manifold_edges == 0 && inconsistent_edges == 0; }
 };
 
+// The triangles a volume program emits for one light, sorted by kind.
+struct VolumeTriangles {
+  long sides = 0;      // finite points and points at infinity: the quads swept by edges
+  long near_caps = 0;  // finite points only
+  long far_caps = 0;   // points at infinity only
+};
+
 class ShadowVolumePass final : public ShadowPass {
  public:
   ShadowVolumePass();
@@ -63,11 +70,17 @@ class ShadowVolumePass final : public ShadowPass {
   // light: xyz the position (w = 1) or the direction toward the light (w = 0). view_proj must have an
   // infinite far plane. Draws the volumes into the bound framebuffer's stencil buffer.
   void draw_stencil(const glm::mat4& view_proj, const glm::vec4& light, bool z_fail, long& draws);
+  // Captures the triangles the volumes emit for this light (transform feedback, nothing rasterised) and
+  // sorts them by kind: how a grader tells an extrusion of the silhouette from one of every edge. A
+  // complete framebuffer must be bound (draws need one even with rasterisation off).
+  VolumeTriangles count_triangles(const glm::vec4& light, bool caps);
   // The same geometry as lines, in colour, depth-tested against the scene (the debug view).
   void draw_wireframe(const glm::mat4& view_proj, const glm::vec4& light, bool caps, long& draws);
 
  private:
   void draw_volumes(const glm::mat4& view_proj, const glm::vec4& light, bool caps, const glm::vec4& color, long& draws);
+  void use_program(const glm::mat4& view_proj, const glm::vec4& light, bool caps, const glm::vec4& color);
+  void draw_adjacency(long& draws);
 
   ReloadableProgram program_;
   struct Uniforms {

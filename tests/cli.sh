@@ -343,6 +343,13 @@ PY
     [ "$rc" -eq 1 ] || fail "including the solution: exit $rc, expected 1"
     grep -q "not offered by this lab" "$tmp/out" || fail "including the solution was not refused: $(cat "$tmp/out")"
     expect_error "--submission $tmp/none: not a folder" "$bin" check --lab 6 --submission "$tmp/none"; one_line
+    # A folder without the lab's file (a flat folder, or nothing handed in): the student's, named, not graded as stock.
+    mkdir -p "$tmp/flat"; cp "$src/shaders/shadow/pcf.glsl" "$tmp/flat/exercise.glsl"
+    "$bin" check --lab 6 --submission "$tmp/flat" --json "$tmp/flat.json" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "a missing file: exit $rc, expected 1"
+    grep -q "labs/06_pcf/exercise.glsl: not in the submission" "$tmp/out" || fail "the missing file is not named: $(cat "$tmp/out")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='compile_error', r" "$tmp/flat.json" \
+      || fail "JSON does not record the missing file"
     ;;
   check_grader_error)  # the grader's own shader missing: status grader_error, exit 3 (not the student's fault)
     mkdir -p "$tmp/data"; cp -r "$src/labs" "$src/shaders" "$tmp/data/"; rm "$tmp/data/shaders/lit.frag"

@@ -105,6 +105,40 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
   EXPECT_TRUE(saw_open_box);
 }
 
+// What lab 9's check counts (transform feedback): one box lit from above at an angle shows the light its
+// top and two sides (six triangles), outlined by six silhouette edges (a hexagon).
+TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
+  Scene s;
+  Mesh box = make_box({0.0f, 1.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.5f, 0.5f, 0.5f});
+  box.name = "box";
+  s.meshes.push_back(box);
+  Renderer r;
+  r.set_scene(s);
+  Features hooks;
+  hooks.technique = ShadowTechnique::ShadowVolumes;
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
+  r.render(lab_set({"light.type=directional", "light.azimuth=35", "light.elevation=50"}), request(OrbitCamera::framing(s.bounds())));
+  const VolumeTriangles open = r.count_volume_triangles(false);
+  EXPECT_EQ(open.sides, 12);  // six silhouette edges, a quad (two triangles) each
+  EXPECT_EQ(open.near_caps, 0);
+  EXPECT_EQ(open.far_caps, 0);
+  const VolumeTriangles closed = r.count_volume_triangles(true);
+  EXPECT_EQ(closed.sides, 12);
+  EXPECT_EQ(closed.near_caps, 6);  // the lit triangles
+  EXPECT_EQ(closed.far_caps, 0) << "a directional light's far cap has no area and is left out";
+  r.render(lab_set({"light.type=point", "light.position_x=3", "light.position_y=4", "light.position_z=2"}),
+           request(OrbitCamera::framing(s.bounds())));
+  const VolumeTriangles point = r.count_volume_triangles(true);
+  EXPECT_EQ(point.sides, 12);
+  EXPECT_EQ(point.near_caps, 6);
+  EXPECT_EQ(point.far_caps, 6);
+  // Lab 9's stock exercise emits nothing: the capture must still link (its output is written in main).
+  ASSERT_TRUE(r.set_features(find_lab(9)->hooks(Impl::Exercise))) << r.shader_error();
+  r.render(lab_set({"light.type=point"}), request(OrbitCamera::framing(s.bounds())));
+  const VolumeTriangles none = r.count_volume_triangles(true);
+  EXPECT_EQ(none.sides + none.near_caps + none.far_caps, 0);
+}
+
 TEST_F(LightsTest, CubeMapSixPassesAndOnePassStoreTheSameDistances) {
   Renderer r;
   r.set_scene(scene);

@@ -49,6 +49,18 @@ TEST(Markdown, OutlineHasEveryBlockKind) {
   EXPECT_EQ(doc.outline(), expected);
 }
 
+TEST(Markdown, HtmlCommentsAreInvisible) {
+  // The lab texts tie figures to the code with comments right after them (tests/docs/lab_texts.py).
+  const MarkdownDocument doc("at least 99.5 %<!-- = labs/x/lab.cpp:kMin*100 --> of pixels\n\n"
+                             "| a | b |\n|---|---|\n| limit | <= 1<!-- = f:k --> |\n\nopen <!-- never closed\n");
+  const auto o = doc.outline();
+  ASSERT_EQ(o.size(), 3u);
+  EXPECT_EQ(o[0], "p: at least 99.5 % of pixels");
+  EXPECT_EQ(o[1].find("<!--"), std::string::npos) << o[1];
+  EXPECT_NE(o[1].find("<= 1"), std::string::npos) << o[1];
+  EXPECT_EQ(o[2], "p: open <!-- never closed");
+}
+
 TEST(Markdown, EntitiesAndHardBreaks) {
   const MarkdownDocument doc("a &amp; b &lt; c &#8212; d  \nnext line\n");
   ASSERT_EQ(doc.outline().size(), 1u);

@@ -121,6 +121,34 @@ TEST_F(CompileErrorTest, WarningsArePlacedToo) {
 }
 
 // Each driver's log format, placed in the same file table: file k's line n is k * stride + n.
+// Every GLSL lab through the renderer: a syntax error in each exercise file is reported with that file's
+// name, although most labs switch the renderer to another shadow pass, one that is not kept when it
+// does not build (its error was once lost, and lab 5's broken blur was graded "failed" with no reason).
+TEST_F(GlTest, EveryLabsBrokenExerciseIsReportedByTheRenderer) {
+  const fs::path dir = fs::temp_directory_path() / ("shadowlab-broken-exercises-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  int graded = 0;
+  for (const Lab& lab : all_labs()) {
+    const SlotFiles stock = lab.files(Impl::Exercise);
+    for (std::size_t slot = 0; slot < stock.size(); ++slot) {
+      if (stock[slot].extension() != ".glsl") continue;  // lab 2's exercise is C++
+      SlotFiles files = lab.files(Impl::Solution);
+      const fs::path broken = dir / (std::to_string(lab.number) + "_" + stock[slot].filename().string());
+      std::ifstream in(data_dir() / stock[slot]);
+      std::ofstream(broken) << in.rdbuf() << "\nint broken_on_purpose = ;\n";
+      files[slot] = broken;
+      Renderer renderer;  // starts on its default technique, as the check and the window do
+      EXPECT_FALSE(renderer.set_features(lab.hooks_for(files))) << "lab " << lab.number << " built a broken file";
+      EXPECT_NE(renderer.shader_error().find(broken.filename().string() + ":"), std::string::npos)
+          << "lab " << lab.number << ": the error does not name " << broken.filename() << ":\n"
+          << renderer.shader_error();
+      ++graded;
+    }
+  }
+  fs::remove_all(dir);
+  EXPECT_GE(graded, 10);  // labs 0, 1, 3 (two files), 4-9
+}
+
 TEST(ShaderLog, EveryCommonDriverFormatIsPlaced) {
   const std::vector<fs::path> files = {"shaders/lit.frag", "labs/06_pcf/exercise.glsl"};
   const int line = kShaderLineStride + 12;

@@ -6,10 +6,11 @@ uniform mat4 u_light_view_proj;  // world -> the light's clip space, as the shad
 
 // Returns 1 where the light reaches the point, 0 where something nearer to the light hides it.
 float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
-  // 1. Where the point lands in the light's clip space, divided by w (1 for an orthographic light).
+  // 1. Where the point lands in the light's clip space, divided by w (1 for an orthographic light):
+  // normalised device coordinates (NDC).
   vec4 clip = u_light_view_proj * vec4(world_position, 1.0);
   vec3 s = clip.xyz / clip.w;
-  // TODO: clip space runs from -1 to 1 on every axis, but texture coordinates and the stored depths run
+  // TODO: NDC run from -1 to 1 on every axis, but texture coordinates and the stored depths run
   // from 0 to 1. Apply the course's "bias matrix" (scale 0.5, offset 0.5) before using s. Then run:
   //   shadowlab check --lab 0 --impl exercise
   // 2. Outside the map nothing was drawn, so nothing can shadow the point.

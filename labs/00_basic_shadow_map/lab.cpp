@@ -106,21 +106,11 @@ void check_basic(CheckContext& ctx, CheckResult& result) {
   probe_shadow_test(ctx, result);
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
-  const Features hooks = ctx.hooks();
-  // 1. The lab's own scene and light.
-  const auto m = ctx.measure(params, hooks, std::string("lab00_") + impl_name(ctx.impl));
-  grade_hard_shadow(result, "lab_light", m.metrics, kLimits);
-  result.metrics["lab_light"]["render_ms"] = m.render_ms;
-  result.metrics["lab_light"]["oracle_ms"] = m.oracle_ms;
-  // 2. Held-out lights, map sizes and scenes: the bias matrix is the same for every one.
+  // The lab's own scene and light, then held-out lights, map sizes and scenes: the bias matrix is the
+  // same for every one.
   ParamSet sloped = params;
   sloped.set("shadow.slope_bias", kHeldOutSlopeBias);
-  for (const auto& c : draw_directional_cases(ctx, kHeldOut)) {
-    const auto h = ctx.measure(c.apply(ctx, sloped), hooks, "lab00_" + c.tag + "_" + impl_name(ctx.impl));
-    grade_hard_shadow(result, c.tag, h.metrics, kLimits);
-    result.conditions.push_back(c.to_json());
-  }
-  ctx.use_default_scene();
+  grade_lab_and_held_out_lights(ctx, result, "lab00", "lab_light", params, sloped, kHeldOut, kLimits);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Lab 1 solution: a slope-scaled bias; both faces in the shadow map (see the README for culling).
+// Lab 1 solution: a slope-scaled bias; both faces in the shadow map (culling front faces leaks on this scene: INSTRUCTOR.md).
 #define SHADOW_PASS_CULL NONE
 
 uniform float u_bias_constant;

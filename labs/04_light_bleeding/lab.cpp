@@ -59,6 +59,7 @@ constexpr int kVarianceExponents[] = {-8, -11, -14, -18};
 constexpr int kDistanceExponents[] = {-3, -5, -7, -9};
 constexpr float kMinVariance = 0x1p-20f;
 constexpr double kProbeTolerance = 1e-5;
+constexpr double kMaxProbeMismatch = 0;  // cases off the reference by more than that: none
 struct ProbePass {
   const char* part;  // which criterion the pass grades
   float delta, bias;
@@ -134,7 +135,7 @@ void probe_visibility(CheckContext& ctx, CheckResult& result) {
       {"combined", "first the bias on z, then the bound, then the remap."}};
   for (const auto& [part, advice] : parts)
     result.criteria.push_back({std::string("probe.") + part + "_mismatch", wrong[part].first / wrong[part].second,
-                               Criterion::kAtMost, 0, why, advice});
+                               Criterion::kAtMost, kMaxProbeMismatch, why, advice});
 }
 
 void check_light_bleeding(CheckContext& ctx, CheckResult& result) {

@@ -10,7 +10,8 @@ uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
   // TODO: this reads one texel, so both passes copy the moments unchanged. Average the 2r + 1 texels
   // texel + i * direction, i = -r..r, with Gaussian weights exp(-i^2 / (2 sigma^2)) divided by their
-  // sum. Clamp the coordinates to [0, textureSize - 1] (clamp to edge) and read with texelFetch: Mesa
-  // rejects textureOffset with a loop variable. Then run: shadowlab check --lab 5 --impl exercise
+  // sum. Clamp the coordinates to [0, textureSize - 1] (clamp to edge) and read with texelFetch:
+  // GLSL requires textureOffset's offset to be a constant expression, which a loop variable is not.
+  // Then run: shadowlab check --lab 5 --impl exercise
   return texelFetch(moments, texel, 0).rg;
 }

@@ -133,9 +133,20 @@ Lab SHADOWLAB_LAB_MAKER() {
     if (spec.key == "light.cone_deg") spec.default_value = kPlaces[0].cone_deg;
     lab.params.push_back(spec);
   }
+  // The check's places as presets, built from the same constants so the window shows what is graded.
+  auto place_preset = [](const SpotPlace& place, const char* description) {
+    auto text = [](float v) {
+      char s[32];
+      std::snprintf(s, sizeof s, "%g", static_cast<double>(v));
+      return std::string(s);
+    };
+    return Preset{place.tag, description,
+                  {{"light.position_x", text(place.x)}, {"light.position_y", text(place.y)},
+                   {"light.position_z", text(place.z)}, {"light.cone_deg", text(place.cone_deg)}}};
+  };
   lab.presets = {
-      {"high", "High and far: the check's first place.", {{"light.position_x", "5"}, {"light.position_y", "7"}, {"light.position_z", "4"}, {"light.cone_deg", "40"}}},
-      {"low", "Low and near: the check's second place.", {{"light.position_x", "-5.5"}, {"light.position_y", "3.2"}, {"light.position_z", "3"}, {"light.cone_deg", "50"}}},
+      place_preset(kPlaces[0], "High and far: the check's first place."),
+      place_preset(kPlaces[1], "Low and near, inside the scene's box: the check's second place."),
       {"narrow", "A 15-degree cone: the same texels on a small spot, crisp shadows.", {{"light.cone_deg", "15"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};

@@ -1,21 +1,24 @@
-// Lab 8 exercise: the point light's shadow test against a cube map. Edit this file; the lab reloads it
-// when you save.
-uniform samplerCube u_shadow_cube;  // per direction from the light: distance to the nearest surface
-uniform float u_texel_angle;  // angle one texel spans at a face's centre (2 / size)
+// Lab 8 exercise, part 2: the point light's shadow test, in the lit pass. Edit this file; the lab reloads
+// it when you save.
+uniform sampler2DArray u_shadow_faces;  // the six faces: layers 0-5 = +X, -X, +Y, -Y, +Z, -Z
+uniform float u_texel_angle;  // the angle one texel spans at a face's centre (2 / size), in radians
 uniform float u_bias_slope;   // slider "Slope bias", in texels per unit of tan(angle of incidence)
+// Also available: u_light_position (world space).
 
-const float MAX_TAN_INCIDENCE = 10.0;
+// Face selection: what the shadow pass stored for direction d (not normalised) from the light. Read it
+// with texture(u_shadow_faces, vec3(s, t, layer)), s and t in [0, 1]. Keep the name and the signature:
+// the check calls this function on its own.
+float stored_distance(vec3 d) {
+  // TODO: the faces were rendered as the faces of a GL cube map, each a 90-degree view in GL's face
+  // order and orientation. Pick the face and the place on it that direction d passes through, by the
+  // rule GL uses for cube maps. This reads the middle of the +X face, whatever d is.
+  return texture(u_shadow_faces, vec3(0.5, 0.5, 0.0)).r;
+}
 
+// Returns 1 where the light reaches the point, 0 where something nearer to the light hides it.
 float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
-  // The lighting already needs the vector toward the light, so the first attempt reuses it.
-  vec3 to_light = u_light_position - world_position;
-  float distance_to_light = length(to_light);
-  // TODO: a cube map is addressed by a direction from its centre, and the shadow pass looked from the
-  // light outward. Which way must this vector point? Look at the debug picture (--out) of the
-  // exercise: whose shadows appear where? Then run: shadowlab check --lab 8 --impl exercise
-  float stored = texture(u_shadow_cube, to_light).r;
-  float texel_world = distance_to_light * u_texel_angle;
-  float tan_incidence = min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / n_dot_l, MAX_TAN_INCIDENCE);
-  float bias = texel_world * (1.0 + u_bias_slope * tan_incidence);
-  return distance_to_light - bias > stored ? 0.0 : 1.0;
+  // TODO: compare the fragment with what the shadow pass stored in its direction, with a bias in world
+  // units that covers a texel's footprint at the fragment's distance and grows with the slope (lab 1's
+  // slope term). Everything is lit until you do. Then run: shadowlab check --lab 8 --impl exercise
+  return 1.0;
 }

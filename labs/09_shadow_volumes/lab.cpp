@@ -2,9 +2,11 @@
 // Demonstrates: silhouette edges found per triangle in a geometry shader from GL_TRIANGLES_ADJACENCY,
 // side quads extruded to infinity (w = 0) under a projection with its far plane at infinity, z-pass
 // and z-fail (Carmack's reverse) counting in a two-sided stencil pass, the ambient / stencil / additive
-// lit passes, and the adjacency report of open and non-manifold edges. Check: agreement with the oracle
-// on non-edge pixels for a directional and a point light, and with the camera inside a shadow volume,
-// where z-fail must stay right and z-pass is shown failing.
+// lit passes, and the adjacency report of open and non-manifold edges. The student writes what a
+// triangle emits: silhouette sides and both caps. Check: agreement with the oracle on non-edge pixels
+// for a directional and a point light, z-pass from outside (the sides alone) and z-fail (closed
+// volumes), a held-out light, and the camera inside a shadow volume, where z-fail must stay right and
+// z-pass is shown failing; the volumes' triangle count against the solution's (each silhouette once).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -28,8 +30,13 @@ constexpr double kMinAgreement = 0.995;
 // pixels (rasterisation and ray casting may differ by a pixel along an edge).
 constexpr int kBandPixels = 1;
 // z-pass with the camera inside a volume must fail visibly: at least this share of the graded pixels
-// wrong (measured 40 %, README).
+// wrong. The eye is inside exactly one volume, so every count is off by one and the picture inverts
+// (measured error: labs/09_shadow_volumes/INSTRUCTOR.md).
 constexpr double kMinZPassInsideError = 0.05;
+// Silhouette extrusion: the volumes may hold no more side triangles (quads swept by edges) than the
+// solution's: each silhouette edge once. Extruding every edge of every lit triangle gives the same shadows
+// with several times the sides (and fill); how a student caps the volumes is graded by the images.
+constexpr double kMaxSidesRatio = 1.0;
 
 // Inside the big box's shadow (light at azimuth 35, elevation 50): a point 0.3 above the ground just
 // beyond the box, looking away from it across the shadow it casts.
@@ -52,7 +59,15 @@ void report_adjacency(CheckContext& ctx, CheckResult& result) {
   result.metrics["adjacency"] = meshes;
 }
 
-void grade(CheckResult& result, const std::string& tag, const CheckContext::Measurement& m, bool graded) {
+const char* kSidesAdvice =
+    "extrude each silhouette edge (between a triangle facing the light and a neighbour facing away) once, into a "
+    "quad to infinity, counter-clockwise seen from outside the volume (in the order the lit triangle runs the edge).";
+const char* kCapsAdvice =
+    "with u_caps (z-fail) close each volume: the lit triangle itself as the near cap and the same triangle at "
+    "infinity, in reversed order, as the far cap (both facing out of the volume).";
+
+void grade(CheckResult& result, const std::string& tag, const CheckContext::Measurement& m, bool graded,
+           const char* advice = kCapsAdvice) {
   const double agreement = interior_agreement(m.metrics);
   result.metrics[tag] = to_json(m.metrics);
   result.metrics[tag]["interior_agreement"] = agreement;
@@ -61,11 +76,20 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
               static_cast<unsigned long long>(m.metrics.interior_lit + m.metrics.interior_shadowed));
   if (graded) {
     result.criteria.push_back({tag + ".interior_agreement", agreement, Criterion::kAtLeast, kMinAgreement,
-                               "exact hard shadows: >= 99.5 % of non-edge pixels",
-                               "every silhouette edge of a lit triangle extruded once; with u_caps (z-fail) close each volume "
-                               "with the lit triangles at the near end and the same triangles at infinity at the far end."});
+                               "exact hard shadows: >= 99.5 % of non-edge pixels", advice});
     require_measurable(result, tag, m.metrics);
   }
+}
+
+// The side triangles the solution's volumes hold for the current scene and light.
+long solution_sides(CheckContext& ctx, const ParamSet& params, bool caps) {
+  ctx.use(ctx.lab.hooks(Impl::Solution));
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(ctx.scene().bounds());
+  request.width = 64;
+  request.height = 64;
+  ctx.renderer.render(params, request);
+  return ctx.renderer.count_volume_triangles(caps).sides;
 }
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
@@ -75,15 +99,29 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
   ParamSet base = ctx.params();
   base.set("view.volumes", 0.0);
 
-  // 1. A directional light and a point light among the objects, from the usual view, both methods.
+  // 1. A directional light and a point light among the objects, from the usual view, both methods: z-pass
+  // from outside every volume grades the sides alone (no caps drawn), z-fail the closed volumes.
   for (const char* type : {"directional", "point"}) {
-    for (const char* method : {"z-fail", "z-pass"}) {
+    for (const char* method : {"z-pass", "z-fail"}) {
       ParamSet p = base;
       p.set_from_string("light.type", type);
       p.set_from_string("volume.method", method);
-      const std::string tag = std::string(type) + "_" + (method[2] == 'f' ? "zfail" : "zpass");
+      const bool z_fail = method[2] == 'f';
+      const std::string tag = std::string(type) + "_" + (z_fail ? "zfail" : "zpass");
       const auto m = ctx.measure(p, hooks, "lab09_" + tag + "_" + impl_name(ctx.impl), nullptr, band);
-      grade(result, tag, m, method[2] == 'f');
+      grade(result, tag, m, true, z_fail ? kCapsAdvice : kSidesAdvice);
+      if (std::string(type) != "point" || !z_fail) continue;
+      // Each silhouette edge once: the point light's side triangles against the solution's.
+      const VolumeTriangles graded = ctx.renderer.count_volume_triangles(true);
+      const long reference = solution_sides(ctx, p, true);
+      result.metrics["volume_triangles"] = {{"sides", graded.sides}, {"near_caps", graded.near_caps},
+                                            {"far_caps", graded.far_caps}, {"solution_sides", reference}};
+      result.criteria.push_back({"silhouettes.side_triangles_ratio_to_solution",
+                                 reference > 0 ? static_cast<double>(graded.sides) / static_cast<double>(reference) : 0.0,
+                                 Criterion::kAtMost, kMaxSidesRatio,
+                                 "each silhouette edge extruded once: no more side triangles than the solution's",
+                                 "extrude only the silhouette edges, each once (from its light-facing triangle): extruding "
+                                 "every edge gives the same shadows with several times the triangles and fill."});
     }
   }
   // A held-out directional light, drawn from the seed, within 60 degrees of the lab's azimuth (from
@@ -130,7 +168,7 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
 Lab SHADOWLAB_LAB_MAKER() {
   Lab lab;
   lab.title = "Stencil shadow volumes";
-  lab.summary = "Silhouettes from adjacency in a geometry shader, extruded to infinity; z-pass vs z-fail.";
+  lab.summary = "Find silhouette edges from adjacency in a geometry shader, extrude them to infinity, cap the volumes for z-fail.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
   lab.params = technique_param_specs(

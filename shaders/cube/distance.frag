@@ -1,9 +1,11 @@
 #version 330 core
-// What a point light's cube map stores: the distance from the light to the nearest surface, in world
-// units. The depth buffer only picks the nearest surface; its perspective depth is not linear in
-// distance and differs from face to face, so it is not what the lit pass compares against.
+// A point light's shadow pass: what each texel of the six faces stores, decided by
+// "lab/cube_store.glsl" (lab 8's exercise; the renderer's own is shaders/cube/store.glsl). The depth
+// buffer only picks the surface nearest the light along each texel's direction.
 in vec3 v_world_position;
 uniform vec3 u_light_position;
 layout(location = 0) out float o_distance;
 
-void main() { o_distance = length(v_world_position - u_light_position); }
+#include "lab/cube_store.glsl"
+
+void main() { o_distance = value_to_store(v_world_position); }

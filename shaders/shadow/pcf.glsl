@@ -12,13 +12,13 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   vec3 s = shadow_coords(world_position);
   if (outside_shadow_map(s)) return 1.0;
   vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
-  // A tap k texels away reads the receiver k texels along its slope: the bias must reach that far too
-  // (half a texel more for the bilinear footprint of a hardware tap).
-  float reach = 1.0 + float(u_pcf_radius) + (u_pcf_hardware ? 0.5 : 0.0);
+  // A tap k texels away reads the receiver k texels along its slope: the bias must reach that far too.
+  // The corner taps are r sqrt(2) texels away; half a texel more for a hardware tap's bilinear footprint.
+  float reach = 1.0 + 1.41421356 * float(u_pcf_radius) + (u_pcf_hardware ? 0.5 : 0.0);
   float z = s.z - shadow_bias(n_dot_l) * reach;
   float lit = 0.0;
-  // Loop offsets are not constant, so texture() with a computed coordinate, not textureOffset (Mesa
-  // rejects non-constant offsets).
+  // Loop offsets are not constant, so texture() with a computed coordinate, not textureOffset (GLSL
+  // requires its offset to be a constant expression).
   for (int y = -u_pcf_radius; y <= u_pcf_radius; ++y) {
     for (int x = -u_pcf_radius; x <= u_pcf_radius; ++x) {
       vec2 uv = s.xy + vec2(x, y) * texel;

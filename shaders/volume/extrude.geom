@@ -1,18 +1,23 @@
 #version 330 core
 // Stencil shadow volumes (lecture 9), built per triangle from GL_TRIANGLES_ADJACENCY: vertices 0, 2, 4
 // are the triangle, 1, 3, 5 the far vertices of the neighbours across edges 0-2, 2-4 and 4-0. What a
-// triangle emits is decided in "lab/volume.glsl" (lab 9's exercise); the helpers below do the geometry.
+// triangle emits (silhouette sides, caps) is decided in "lab/volume.glsl" (lab 9's exercise); the
+// helpers below are what is not the lesson: a facing test that neighbours evaluate identically, the
+// point at infinity, and emitting one vertex.
 //
-// Orientation: every face is emitted counter-clockwise seen from outside its volume, so the stencil
-// pass can count front faces +1 and back faces -1 (two-sided stencil).
+// Orientation: every face must be emitted counter-clockwise seen from outside its volume, so the
+// stencil pass can count front faces +1 and back faces -1 (two-sided stencil).
 layout(triangles_adjacency) in;
-layout(triangle_strip, max_vertices = 18) out;  // three side quads (12) and two caps (6)
+layout(triangle_strip, max_vertices = 18) out;  // room for three side quads (3 x 4) and two caps (2 x 3)
 
 in vec3 v_world_position[];
 
 uniform mat4 u_view_proj;  // the camera's, with the far plane at infinity
 uniform vec4 u_light;      // w = 1: the position of a point or spot light; w = 0: direction toward the light
 uniform bool u_caps;       // z-fail needs closed volumes; z-pass draws no caps
+// Per vertex: 1 a point, 0 a point at infinity. Only read when the grader captures the volumes'
+// triangles (transform feedback) to tell sides from caps.
+out float v_world_w;
 
 bool directional_light() { return u_light.w == 0.0; }
 
@@ -31,45 +36,23 @@ bool faces_light(vec3 a, vec3 b, vec3 c) {
   return faces_light_from(a, b, c);
 }
 
-// The point at infinity straight away from the light behind p: homogeneous w = 0 is a direction, and
-// the infinite far plane keeps it on screen (depth 1).
+// The point at infinity straight away from the light behind p: homogeneous w = 0 is a direction. The
+// camera's far plane is at infinity and the stencil pass clamps depth (GL_DEPTH_CLAMP), so it is drawn
+// at depth 1 instead of being clipped by rounding.
 vec4 at_infinity(vec3 p) { return vec4(-toward_light(p), 0.0); }
 
+// One vertex of the current triangle strip, in world space (w = 1 a point, w = 0 a point at infinity).
+// End each strip with EndPrimitive().
 void emit(vec4 world) {
   gl_Position = u_view_proj * world;
+  v_world_w = world.w;
   EmitVertex();
-}
-
-// The side of the volume swept by edge a -> b (as the light-facing triangle runs it) pushed to infinity.
-void emit_side(vec3 a, vec3 b) {
-  emit(vec4(a, 1.0));
-  emit(at_infinity(a));
-  emit(vec4(b, 1.0));
-  emit(at_infinity(b));
-  EndPrimitive();
-}
-
-// The near cap: the light-facing triangle itself, closing the volume at the occluder.
-void emit_near_cap(vec3 a, vec3 b, vec3 c) {
-  emit(vec4(a, 1.0));
-  emit(vec4(b, 1.0));
-  emit(vec4(c, 1.0));
-  EndPrimitive();
-}
-
-// The far cap: the same triangle at infinity, reversed so it faces out of the volume. A directional
-// light sends every point to the same point at infinity: the cap has no area and is skipped.
-void emit_far_cap(vec3 a, vec3 b, vec3 c) {
-  if (directional_light()) return;
-  emit(at_infinity(a));
-  emit(at_infinity(c));
-  emit(at_infinity(b));
-  EndPrimitive();
 }
 
 #include "lab/volume.glsl"
 
 void main() {
+  v_world_w = 1.0;  // written here too: an exercise that emits nothing must still link with the capture
   emit_volume(v_world_position[0], v_world_position[1], v_world_position[2], v_world_position[3],
               v_world_position[4], v_world_position[5]);
 }

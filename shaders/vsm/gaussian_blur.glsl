@@ -5,7 +5,7 @@ uniform float u_blur_sigma;  // slider "Blur sigma (texels)"
 
 vec2 blur_moments(sampler2D moments, ivec2 texel, ivec2 direction) {
   // texelFetch with clamped integer coordinates: exact texel values (no filtering) and the same
-  // clamp-to-edge rule as the CPU reference. textureOffset would need constant offsets on Mesa.
+  // clamp-to-edge rule as the CPU reference. textureOffset would need a constant offset (GLSL's rule).
   ivec2 last = textureSize(moments, 0) - 1;
   float two_sigma_sq = 2.0 * u_blur_sigma * u_blur_sigma;
   vec2 sum = vec2(0.0);
