@@ -187,7 +187,7 @@ PY
   help_text)  # --help: defaults, environment, exit codes, window keys, and an example per command
     "$bin" --help >"$tmp/main" || fail "--help: exit $?"
     for want in "Exit codes" "  2  usage" "  3  runtime error" SHADOWLAB_SETTINGS SHADOWLAB_DATA_DIR MESA_GL_VERSION_OVERRIDE \
-                "Window keys" "hide this panel (H again shows it)" "Examples" "--version"; do
+                "Window keys" "hide this panel and the pass-time line (H again shows them)" "pass-time line on / off" "Examples" "--version"; do
       grep -qF -- "$want" "$tmp/main" || fail "--help lacks '$want'"
     done
     for cmd in render check bench labs; do
