@@ -81,12 +81,10 @@ void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, 
   if (to_window && gbuffer) throw std::logic_error("the window's framebuffer has no G-buffer");
   to_window_ = to_window;
   window_ = window;
-  if (to_window) {  // drawn where it is seen: the own targets go (made again if a copy is asked for)
+  if (to_window) {  // drawn where it is seen: no targets of its own are made (those made before stay)
+    if (width != width_ || height != height_) fbo_ = {};
     width_ = width;
     height_ = height;
-    color_ = {};
-    depth_ = {};
-    fbo_ = {};
     return;
   }
   if (fbo_ && width == width_ && height == height_ && gbuffer == gbuffer_ && stencil == stencil_) return;
