@@ -16,6 +16,7 @@
 #include "app/headless.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
+#include "app/bench_baseline.h"
 #include "app/bench_plot.h"
 #include "labs/check.h"
 #include "app/bench_figures.h"
@@ -122,7 +123,7 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
     renderer.invalidate_shadow_map();               // time the whole pipeline, every pass
     const FrameStats& stats = renderer.render(params, request);
     if (frame < 0) continue;
-    for (const auto& p : stats.passes) pass_ms[p.name].push_back(p.gpu_ms);
+    for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
     cpu_ms.push_back(stats.cpu_ms);
   }
   for (auto& [name, v] : pass_ms) {
@@ -249,6 +250,122 @@ nlohmann::json measure_overlays(Renderer& renderer, const Scene& scene, int fram
           {"no_panel_ui_ms", no_panel_ms}};
 }
 
+// The lab's windowed-path frame against the bare two-pass baseline (app/bench_baseline.h), side by side
+// in one run: LearnOpenGL's scene, light direction ((-2, 4, -1) toward the origin) and camera (at
+// (0, 0, 3) looking down -z, 45 degrees), 1280 x 720, 1024^2 map. The lab's frame is what the window
+// draws with the panel hidden and a still light: straight into a framebuffer standing for the window,
+// no timing (TimingMode::Off), the shadow pass skipped; the baseline redraws its map every frame, as
+// the tutorial does. Each frame is the wall time from the first call to a glFinish after the last, the
+// two alternating frame by frame. Then every lab's whole frame (the same way) against its lit pass
+// alone (Exact timing).
+nlohmann::json measure_frame_cost(Renderer& renderer, int frames) {
+  constexpr int kW = 1280, kH = 720;
+  const Scene scene = make_learnopengl_scene();
+  renderer.set_scene(scene);
+  GlTexture color = make_texture_2d(GL_RGBA8, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
+  GlRenderbuffer depth = GlRenderbuffer::create();
+  glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, kW, kH);
+  GlFramebuffer window = GlFramebuffer::create();
+  glBindFramebuffer(GL_FRAMEBUFFER, window.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+  check_framebuffer("the bench's window stand-in");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  FrameRequest request;
+  request.camera = OrbitCamera::looking({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 2.0f}, 45.0f, scene.bounds());
+  request.width = kW;
+  request.height = kH;
+  request.to_window = true;
+  request.window_framebuffer = window.id();
+  auto wall = [](const auto& draw) {
+    const auto start = std::chrono::steady_clock::now();
+    draw();
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  };
+  auto lab_setup = [&](const Lab& lab) {
+    ParamSet params = lab_params(lab);
+    params.set_from_string("light.azimuth", "153.43");   // toward (-2, 4, -1)
+    params.set_from_string("light.elevation", "60.79");
+    params.set_from_string("shadow.map_size", "1024");
+    params.set("view.debug_quad", 0.0);
+    if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
+    return params;
+  };
+  // One lab's whole frame (no timing, into the window stand-in) and its lit pass alone (Exact).
+  auto frame_and_lit = [&](const ParamSet& params, std::vector<double>* frame_ms, std::vector<double>* lit_ms) {
+    renderer.set_timing(TimingMode::Exact);
+    for (int f = 0; f < 2; ++f) renderer.render(params, request);  // warm-up: programs, targets, the map
+    for (int f = 0; f < frames; ++f) {
+      renderer.set_timing(TimingMode::Off);
+      frame_ms->push_back(wall([&] { renderer.render(params, request); }));
+      renderer.set_timing(TimingMode::Exact);
+      for (const auto& p : renderer.render(params, request).passes)
+        if (p.name == "lit") lit_ms->push_back(p.gpu_ms);
+    }
+  };
+
+  const Lab* pcf = find_lab(6);
+  if (!pcf) throw std::runtime_error("the frame-cost figure needs lab 6 (PCF)");
+  ParamSet params = lab_setup(*pcf);
+  renderer.set_timing(TimingMode::Off);
+  renderer.render(params, request);
+  BareTwoPass bare(scene, 1024);
+  const glm::mat4 light_vp = renderer.light_view().projection * renderer.light_view().view;
+  const glm::mat4 camera_vp = renderer.camera_projection() * renderer.camera_view();
+  auto bare_frame = [&] { bare.draw(light_vp, renderer.to_light(), camera_vp, window.id(), kW, kH); };
+  for (int f = 0; f < 2; ++f) wall(bare_frame);
+  // What each of issue 17's changes saved, in the same run: the frame as the window drew it before
+  // (every pass finished and its query read, drawn offscreen and copied), then without the copy.
+  FrameRequest offscreen = request;
+  offscreen.to_window = false;
+  std::vector<double> lab_ms, bare_ms, exact_ms, before_ms;
+  for (int f = 0; f < frames; ++f) {
+    renderer.set_timing(TimingMode::Off);
+    lab_ms.push_back(wall([&] { renderer.render(params, request); }));
+    bare_ms.push_back(wall(bare_frame));
+    renderer.set_timing(TimingMode::Exact);
+    exact_ms.push_back(wall([&] { renderer.render(params, request); }));
+    before_ms.push_back(wall([&] {
+      renderer.render(params, offscreen);
+      renderer.present(window.id(), kW, kH);
+    }));
+  }
+  nlohmann::json labs = nlohmann::json::array();
+  for (const auto& lab : all_labs()) {
+    const ParamSet lp = lab_setup(lab);
+    std::vector<double> frame_ms, lit_ms;
+    frame_and_lit(lp, &frame_ms, &lit_ms);
+    const double frame = median(frame_ms), lit = median(lit_ms);
+    labs.push_back({{"lab", lab.number}, {"frame_ms", frame}, {"lit_pass_ms", lit}, {"ratio_to_lit_pass", lit > 0 ? frame / lit : 0.0}});
+  }
+  renderer.set_timing(TimingMode::Exact);
+  const double lab_frame = median(lab_ms), bare_frame_ms = median(bare_ms);
+  return {{"frames", frames},
+          {"size", {kW, kH}},
+          {"lab6_frame_ms", lab_frame},
+          {"lab6_frame_exact_timing_ms", median(exact_ms)},
+          {"lab6_frame_exact_timing_copied_ms", median(before_ms)},
+          {"bare_two_pass_ms", bare_frame_ms},
+          {"ratio_to_bare", bare_frame_ms > 0 ? lab_frame / bare_frame_ms : 0.0},
+          {"labs", labs}};
+}
+
+void print_frame_cost(const nlohmann::json& frame_cost) {
+  std::printf("frame cost, lab 6 at LearnOpenGL's view, 1280x720, panel hidden, still light: %.2f ms = %.2fx the bare "
+              "two-pass baseline (%.2f ms; done when <= 1.1x); with every pass finished and timed: %.2f ms; and drawn "
+              "offscreen and copied (the window before issue 17): %.2f ms\n",
+              frame_cost["lab6_frame_ms"].get<double>(), frame_cost["ratio_to_bare"].get<double>(),
+              frame_cost["bare_two_pass_ms"].get<double>(), frame_cost["lab6_frame_exact_timing_ms"].get<double>(),
+              frame_cost["lab6_frame_exact_timing_copied_ms"].get<double>());
+  for (const auto& l : frame_cost["labs"])
+    std::printf("frame cost, lab %d: whole frame %.2f ms = %.2fx its lit pass (%.2f ms; done when <= 1.15x)\n",
+                l["lab"].get<int>(), l["frame_ms"].get<double>(), l["ratio_to_lit_pass"].get<double>(),
+                l["lit_pass_ms"].get<double>());
+}
+
 nlohmann::json blur_json(const std::vector<BlurTiming>& rows) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& b : rows)
@@ -335,6 +452,16 @@ int run_bench(const BenchOptions& options) {
     auto context = HeadlessContext::create(&error);
     if (!context) throw std::runtime_error(error);
 
+    if (options.frame_cost_only) {
+      nlohmann::json frame_cost;
+      {
+        Renderer renderer;
+        frame_cost = measure_frame_cost(renderer, options.quick ? 9 : 25);
+      }
+      write_text_atomic(fs::path(options.out_dir) / "frame_cost.json", frame_cost.dump(2) + "\n");
+      print_frame_cost(frame_cost);
+      return 0;
+    }
     const std::vector<int> sizes = options.quick ? std::vector<int>{512, 1024, 2048} : std::vector<int>{512, 1024, 2048, 4096};
     const int frames = options.quick ? 3 : 7;
     const auto techs = techniques(options.quick);
@@ -342,7 +469,7 @@ int run_bench(const BenchOptions& options) {
     for (const auto& t : techs) per_scene += t.entry.uses_map ? sizes.size() : 1;
     const std::size_t total = bench_scenes.size() * per_scene;
     std::vector<BenchPoint> points;
-    nlohmann::json skipping, overlays;
+    nlohmann::json skipping, overlays, frame_cost;
     std::vector<BlurTiming> blur_rows;
     std::vector<TechniquePasses> technique_rows;
     OracleCost oracle_cost;
@@ -373,6 +500,8 @@ int run_bench(const BenchOptions& options) {
         }
       }
       if (terminal) std::fprintf(stderr, "\n");
+      std::fprintf(stderr, "frame cost against the bare two-pass baseline...\n");
+      frame_cost = measure_frame_cost(renderer, options.quick ? 9 : 25);
       skipping = measure_skipping(renderer, bench_scenes.front().scene, options.quick ? 12 : 36);
       overlays = measure_overlays(renderer, bench_scenes.front().scene, options.quick ? 5 : 15);
       // The blur methods side by side at 1024^2 RG32F: the taught separable blur, the fast one, brute 2D.
@@ -433,6 +562,7 @@ int run_bench(const BenchOptions& options) {
                              {"seconds", seconds},
                              {"points", json_points},
                              {"skipping", skipping},
+                             {"frame_cost", frame_cost},
                              {"hidden_views", overlays},
                              {"blur_methods", blur_json(blur_rows)},
                              {"technique_passes", technique_passes_json(technique_rows)},
@@ -457,6 +587,7 @@ int run_bench(const BenchOptions& options) {
     write_png(out / "pareto.png", cols * plot_w, rows * plot_h, pixels);
     std::printf("%zu points in %.0f s; wrote %s/bench.csv, bench.json, pareto.png\n", points.size(), seconds,
                 options.out_dir.c_str());
+    print_frame_cost(frame_cost);
     std::printf("steady frame with skipping: %.2f ms = %.2f x the lit pass alone (%.2f ms); without skipping %.2f ms\n",
                 skipping["with_skipping_ms"].get<double>(), skipping["ratio_to_lit_pass"].get<double>(),
                 skipping["lit_pass_ms"].get<double>(), skipping["without_skipping_ms"].get<double>());

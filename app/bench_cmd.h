@@ -12,6 +12,9 @@ struct BenchOptions {
   bool quick = false;
   std::string scene_file;  // replaces the large real model
   std::string out_dir;
+  // Only the frame-cost figures (every lab's frame against its lit pass, lab 6 against the bare
+  // two-pass baseline): frame_cost.json, in about half a minute.
+  bool frame_cost_only = false;
 };
 
 int run_bench(const BenchOptions& options);

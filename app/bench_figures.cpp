@@ -158,7 +158,7 @@ std::vector<TechniquePasses> measure_technique_passes(Renderer& renderer, int ma
     std::map<std::string, std::vector<double>> ms;
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {
       renderer.invalidate_shadow_map();
-      for (const auto& pass : renderer.render(params, request).passes) ms[pass.name].push_back(pass.gpu_ms);
+      for (const auto& pass : renderer.render(params, request).passes) ms[std::string(pass.name)].push_back(pass.gpu_ms);
     }
     TechniquePasses row{c.name, {}, 0.0};
     for (auto& [name, v] : ms) {

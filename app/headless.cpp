@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
+#include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
@@ -78,6 +80,69 @@ void apply_set_option(ParamSet& params, const std::string& assignment) {
   }
 }
 
+OrbitCamera camera_option(const std::string& spec, const Bounds& bounds) {
+  const OrbitCamera framed = OrbitCamera::framing(bounds);
+  if (spec.empty()) return framed;
+  glm::vec3 eye = framed.eye(), target = framed.target;
+  float fov = framed.fov_y_deg;
+  std::istringstream words(spec);
+  std::string word;
+  auto bad = [&](const std::string& why) { return std::invalid_argument("--camera " + spec + ": " + word + ": " + why); };
+  auto number = [&](const std::string& text) {
+    std::size_t used = 0;
+    float v = 0.0f;
+    try {
+      v = std::stof(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || !std::isfinite(v)) throw bad("'" + text + "' is not a number");
+    return v;
+  };
+  while (words >> word) {
+    const auto eq = word.find('=');
+    const std::string key = word.substr(0, eq), value = eq == std::string::npos ? "" : word.substr(eq + 1);
+    if (key == "eye" || key == "target") {
+      glm::vec3 v{0.0f};
+      std::istringstream parts(value);
+      std::string part;
+      int n = 0;
+      while (std::getline(parts, part, ',')) {
+        if (n == 3) throw bad("three numbers expected, x,y,z");
+        v[n++] = number(part);
+      }
+      if (n != 3) throw bad("three numbers expected, x,y,z");
+      (key == "eye" ? eye : target) = v;
+    } else if (key == "fov") {
+      fov = number(value);
+      if (fov < 1.0f || fov > 170.0f) throw bad("the field of view is 1-170 degrees");
+    } else {
+      throw bad("expected eye=x,y,z, target=x,y,z or fov=deg");
+    }
+  }
+  word = "eye, target";
+  if (glm::length(eye - target) < 1e-6f) throw bad("the eye and the target are the same point");
+  return OrbitCamera::looking(eye, target, fov, bounds);
+}
+
+void parse_size_option(const std::string& spec, int* width, int* height) {
+  const auto x = spec.find('x');
+  std::size_t used_w = 0, used_h = 0;
+  int w = 0, h = 0;
+  try {
+    if (x != std::string::npos) {
+      w = std::stoi(spec.substr(0, x), &used_w);
+      h = std::stoi(spec.substr(x + 1), &used_h);
+    }
+  } catch (const std::exception&) {
+    w = h = 0;
+  }
+  if (x == std::string::npos || used_w != x || used_h != spec.size() - x - 1 || w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw std::invalid_argument("--size " + spec + ": expected WxH, each 16-8192 pixels (e.g. 1280x720)");
+  *width = w;
+  *height = h;
+}
+
 namespace {
 
 nlohmann::json matrix_json(const glm::mat4& m) {
@@ -102,6 +167,7 @@ int run_render(const RenderOptions& options) {
     ParamSet params = lab_params(*lab);
     for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = load_scene_or_default(options.scene_file);
+    const OrbitCamera camera = camera_option(options.camera, scene.bounds());
     std::optional<BenchPlots> bench_plots;
     if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
     make_output_dir(options.out_dir);
@@ -119,7 +185,7 @@ int run_render(const RenderOptions& options) {
       if (!renderer.set_features(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
       FrameRequest request;
-      request.camera = OrbitCamera::framing(scene.bounds());
+      request.camera = camera;
       request.width = options.width;
       request.height = options.height;
       request.gbuffer = options.buffers;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/light.h"
 #include "renderer/params.h"
 #include "renderer/scene.h"
 
@@ -14,6 +15,7 @@ struct RenderOptions {
   int lab = 0;
   std::string scene_file;  // empty: the built-in default scene
   std::vector<std::string> assignments;  // --set key=value
+  std::string camera;  // --camera "eye=x,y,z target=x,y,z fov=deg" (empty: the scene framed)
   int width = 1280;
   int height = 720;
   std::string out_dir;
@@ -45,6 +47,12 @@ std::string one_line_error(const std::string& message);
 // Applies one `--set key=value` (render and check): a bad one throws std::invalid_argument naming it.
 void apply_set_option(ParamSet& params, const std::string& assignment);
 
+// The camera of `--camera "eye=x,y,z target=x,y,z fov=deg"` (render and the window): each part
+// optional, what is not given is the framing's (the scene framed from the default angle). A bad spec
+// throws std::invalid_argument naming the part.
+OrbitCamera camera_option(const std::string& spec, const Bounds& bounds);
+// `--size WxH` (the window): throws std::invalid_argument unless both are 16-8192.
+void parse_size_option(const std::string& spec, int* width, int* height);
 // Exit codes (app/exit_codes.h): 0 written; 2 the command line cannot be used as given; 3 runtime error.
 int run_render(const RenderOptions& options);
 int run_list_labs(bool show_params, bool json = false);

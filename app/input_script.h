@@ -31,7 +31,7 @@ class InputScript {
   std::string advance(GLFWwindow* window, double now);
   // Call after each drawn frame.
   void frame_drawn() { ++frames_drawn_; }
-  bool finished() const { return next_ >= steps_.size() && pending_release_ < 0; }
+  bool finished() const { return next_ >= steps_.size() && pending_release_ < 0 && frames_drawn_ >= wait_until_frame_; }
   // True once after a `check` step.
   bool take_check_request() { return std::exchange(check_requested_, false); }
 

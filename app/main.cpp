@@ -75,11 +75,18 @@ int main(int argc, char** argv) {
   shadowlab::WindowOptions window_options;
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
   app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
+  app.add_option("--set", window_options.assignments,
+                 "Parameter value over the lab's saved values, key=value (repeatable; see `shadowlab labs --params`)");
+  app.add_option("--camera", window_options.camera,
+                 "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
+  app.add_option("--size", window_options.size, "Window size in pixels, WxH (default 1440x860)");
   app.add_option("--frames", window_options.frames, "Close the window after this many frames (for tests)")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", window_options.screenshot, "Save the last frame, panel included, to this PNG");
   app.add_option("--bench", window_options.bench_file,
                  "Open the Speed against error window on this bench.json (default: docs/bench.json, when opened)");
+  app.add_option("--frame-report", window_options.frame_report,
+                 "On closing, write what the frames cost (times, glFinish calls, blocking reads) as JSON to this file");
   app.add_option("--script", window_options.script,
                  "Scripted input for tests: key:K,frames:N,screenshot:F,resize:WxH,iconify,restore,wait:S,drop:F");
 
@@ -88,6 +95,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--lab", render.lab, "Lab whose features and parameters to use")->check(CLI::Range(0, 99));
   render_cmd->add_option("--scene", render.scene_file, "glTF 2.0 file (.gltf or .glb); default: the built-in scene");
   render_cmd->add_option("--set", render.assignments, "Parameter value, key=value (repeatable; see `shadowlab labs --params`)");
+  render_cmd->add_option("--camera", render.camera,
+                         "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
   render_cmd->add_option("--width", render.width, "Image width in pixels")->check(CLI::Range(16, 8192));
   render_cmd->add_option("--height", render.height, "Image height in pixels")->check(CLI::Range(16, 8192));
   render_cmd->add_option("--impl", render.impl, "Run the lab's exercise or its solution")
@@ -127,6 +136,8 @@ int main(int argc, char** argv) {
   shadowlab::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
+  bench_cmd->add_flag("--frame-cost", bench.frame_cost_only,
+                      "Only the frame-cost figures: each lab's frame against its lit pass, lab 6 against the bare two-pass baseline");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
   bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out); 3 runtime error.\n"

@@ -211,7 +211,10 @@ void draw_compare(PanelModel& m, PanelActions& a) {
 
 void draw_stats(PanelModel& m) {
   if (!m.stats || !ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  for (const auto& p : m.stats->passes) ImGui::Text("%-12s %7.2f ms%s", p.name.c_str(), p.gpu_ms, p.wall_clock ? " (wall)" : "");
+  for (const auto& p : m.stats->shown_passes())
+    ImGui::Text("%-12.*s %7.2f ms%s", static_cast<int>(p.name.size()), p.name.data(), p.gpu_ms, p.wall_clock ? " (wall)" : "");
+  if (m.stats->shown_passes().empty() && !m.stats->passes.empty())
+    ImGui::TextDisabled("not timed while the pass-time line is off (T)");
   if (!m.stats->passes.empty() && m.stats->passes.front().wall_clock)
     ImGui::TextDisabled("(wall): glFinish-bracketed time; a software rasteriser's real cost");
   ImGui::Text("shadow passes run: %ld of %ld frames", m.stats->shadow_passes, m.stats->frames);
@@ -327,7 +330,8 @@ const std::vector<std::pair<std::string, std::string>>& window_keys() {
       {"N / P", "next / previous lab (also Page Down / Page Up)"},
       {"S", "split view"},
       {"M", "magnifier"},
-      {"H", "hide this panel (H again shows it)"},
+      {"H", "hide this panel and the pass-time line (H again shows them)"},
+      {"T", "pass-time line on / off (a software rasteriser times passes only while it is shown)"},
       {"F11", "fullscreen"},
       {"F12", "screenshot"},
   };

@@ -81,7 +81,10 @@ bool SplitView::handle_divider(CompareState& state) {
 void SplitView::compose(const ParamSet& right, const FrameRequest& request, const CompareState& state, const Lab& lab,
                         Impl impl) {
   if (!renderer_ || !state.split) return;
-  renderer_->render(right, request);
+  // The right side is drawn offscreen and copied (its shadow passes must not meet the scissor).
+  FrameRequest offscreen = request;
+  offscreen.to_window = false;
+  renderer_->render(right, offscreen);
   // The blit honours the scissor rectangle: only the part right of the divider is replaced.
   const int x0 = static_cast<int>(std::lround(state.divider * static_cast<float>(request.width)));
   glEnable(GL_SCISSOR_TEST);
@@ -157,8 +160,8 @@ void draw_pass_overlay(const FrameStats& left, const FrameStats* right) {
     std::string text;
     double total = 0.0;
     char item[96];
-    for (const auto& p : s.passes) {
-      std::snprintf(item, sizeof item, "%s %.2f  ", p.name.c_str(), p.gpu_ms);
+    for (const auto& p : s.shown_passes()) {
+      std::snprintf(item, sizeof item, "%.*s %.2f  ", static_cast<int>(p.name.size()), p.name.data(), p.gpu_ms);
       text += item;
       total += p.gpu_ms;
     }

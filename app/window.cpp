@@ -20,6 +20,9 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <nlohmann/json.hpp>
+
+#include "app/bench_figures.h"
 #include "app/camera_input.h"
 #include "app/exit_codes.h"
 #include "app/headless.h"
@@ -51,7 +54,7 @@ constexpr const char* kHeadlessHint =
 
 // Creates a window with the highest core profile the driver gives, 4.6 down to 3.3. A hidden one holds
 // the context the Check runs in on its worker thread. On failure GLFW's reason is kept (take_glfw_error).
-GLFWwindow* create_window(bool visible) {
+GLFWwindow* create_window(bool visible, int width = 1440, int height = 860) {
   const int versions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
   for (const auto& v : versions) {
     glfwDefaultWindowHints();
@@ -63,7 +66,7 @@ GLFWwindow* create_window(bool visible) {
 #ifndef NDEBUG
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
 #endif
-    if (GLFWwindow* w = glfwCreateWindow(visible ? 1440 : 1, visible ? 860 : 1, "shadowlab", nullptr, nullptr)) {
+    if (GLFWwindow* w = glfwCreateWindow(visible ? width : 1, visible ? height : 1, "shadowlab", nullptr, nullptr)) {
       take_glfw_error();  // the versions refused before this one are not an error
       return w;
     }
@@ -151,7 +154,10 @@ struct App {
   std::string status;       // last screenshot path or error
   std::string scene_error;  // the last dropped file that could not be opened
   bool screenshot_requested = false;
-  bool panel_hidden = false;  // H: no ImGui window is built or drawn (the pass-time line stays)
+  bool panel_hidden = false;  // H: no ImGui window is built or drawn, nor the pass-time line
+  double hidden_since = 0.0;  // when H hid the panel: a hint says how to get it back, for a few seconds
+  bool pass_line = true;      // T: the pass-time line (shown while the panel is)
+  bool pass_line_shown() const { return pass_line && !panel_hidden; }
   std::string screenshot_path;  // empty: a timestamped name
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
@@ -265,11 +271,18 @@ void handle_keys(App& app) {
     app.rebuild_split();
   }
   if (key_pressed(Key::M)) app.compare.magnifier = !app.compare.magnifier;
-  if (key_pressed(Key::H)) app.panel_hidden = !app.panel_hidden;
+  if (key_pressed(Key::H)) {
+    app.panel_hidden = !app.panel_hidden;
+    app.hidden_since = glfwGetTime();
+  }
+  if (key_pressed(Key::T)) app.pass_line = !app.pass_line;
 }
 
-// With the panel hidden, one line in the corner says how to get it back.
-void draw_hidden_hint() {
+// For a few seconds after the panel is hidden, one line in the corner says how to get it back; then
+// nothing is drawn over the view.
+void draw_hidden_hint(const App& app) {
+  constexpr double kHintSeconds = 3.0;
+  if (glfwGetTime() - app.hidden_since > kHintSeconds) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(10.0f, display.y - 10.0f), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowBgAlpha(0.6f);
@@ -379,16 +392,46 @@ void render_view(App& app, int width, int height) {
   request.camera = app.camera;
   request.width = width;
   request.height = height;
+  request.to_window = true;  // drawn where it is seen: the split view and the magnifier read it there too
   app.renderer->render(app.params, request);
-  app.renderer->present(0, width, height);
   if (app.compare.split)
     app.split.compose(app.split.right_params(*app.lab, app.params, app.compare), request, app.compare, *app.lab, app.impl);
   if (app.compare.magnifier) {
     app.magnifier.capture(width, height);
     app.magnifier.draw();
   }
-  draw_pass_overlay(app.renderer->stats(), app.compare.split ? app.split.stats() : nullptr);
+  if (app.pass_line_shown()) draw_pass_overlay(app.renderer->stats(), app.compare.split ? app.split.stats() : nullptr);
 }
+
+// What the interactive frames cost, for --frame-report: frame times, and the glFinish calls and
+// blocking query reads (the window's renderers) with the pass-time line shown and hidden.
+struct FrameCost {
+  struct Side {
+    long frames = 0, gl_finishes = 0, blocking_reads = 0;
+  };
+  Side shown, hidden;
+  std::vector<double> frame_ms;  // from the start of one frame to the next, after the first few
+
+  static long finishes(const App& app) {
+    const FrameStats* right = app.split.stats();
+    return app.renderer->stats().gl_finishes + (right ? right->gl_finishes : 0);
+  }
+  static long blocking(const App& app) {
+    const FrameStats* right = app.split.stats();
+    return app.renderer->stats().blocking_query_reads + (right ? right->blocking_query_reads : 0);
+  }
+  void write(const std::string& path, const App& app) const {
+    auto side = [](const Side& s) {
+      return nlohmann::json{{"frames", s.frames}, {"gl_finishes", s.gl_finishes}, {"blocking_query_reads", s.blocking_reads}};
+    };
+    nlohmann::json j = {{"timers_work", app.renderer->timers_work()},
+                        {"frames_timed", frame_ms.size()},
+                        {"median_frame_ms", median(frame_ms)},
+                        {"pass_line_shown", side(shown)},
+                        {"pass_line_hidden", side(hidden)}};
+    write_text_atomic(path, j.dump(2) + "\n");
+  }
+};
 
 void drop_callback(GLFWwindow* window, int count, const char** paths) {
   auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
@@ -397,6 +440,10 @@ void drop_callback(GLFWwindow* window, int count, const char** paths) {
 
 void run_loop(App& app, const WindowOptions& options, InputScript& script) {
   int frame = 0;
+  FrameCost cost;
+  if (!options.frame_report.empty()) cost.frame_ms.reserve(options.frames > 0 ? static_cast<std::size_t>(options.frames) : 1024);
+  double frame_start = glfwGetTime();
+  constexpr int kWarmUpFrames = 5;  // shaders compile, targets are made
   while (!glfwWindowShouldClose(app.window)) {
     const std::string scripted_shot = script.advance(app.window, glfwGetTime());
     if (!scripted_shot.empty()) {
@@ -431,16 +478,27 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       app.settings.autosave(app.lab->number, app.params);
     }
     if (!app.panel_hidden) draw_panel(app);
-    else draw_hidden_hint();
+    else draw_hidden_hint(app);
     if (script.take_check_request()) app.check_requested = true;
     if (app.check_requested) {
       std::string error;
       if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), &error)) app.status = error;
       app.check_requested = false;
     }
+    // The pass-time line decides how passes are timed: for nothing, where it is not shown and the
+    // driver's timer queries are useless; never by waiting for the GPU where they work.
+    const TimingMode timing = interactive_timing(app.renderer->timers_work(), app.pass_line_shown());
+    app.renderer->set_timing(timing);
+    app.split.set_timing(timing);
+    const long finishes_before = FrameCost::finishes(app), blocking_before = FrameCost::blocking(app);
     render_view(app, width, height);
+    FrameCost::Side& side = app.pass_line_shown() ? cost.shown : cost.hidden;
+    ++side.frames;
+    side.gl_finishes += FrameCost::finishes(app) - finishes_before;
+    side.blocking_reads += FrameCost::blocking(app) - blocking_before;
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    // With the panel hidden and no line or hint shown there is nothing over the view to draw.
+    if (ImGui::GetDrawData()->TotalVtxCount > 0) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ++frame;
     script.frame_drawn();
     const bool last_frame = (options.frames > 0 && frame >= options.frames) || (!script.empty() && script.finished());
@@ -454,8 +512,12 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       app.screenshot_path.clear();
     }
     glfwSwapBuffers(app.window);
+    const double now = glfwGetTime();
+    if (frame > kWarmUpFrames && !options.frame_report.empty()) cost.frame_ms.push_back(1000.0 * (now - frame_start));
+    frame_start = now;
     if (last_frame) glfwSetWindowShouldClose(app.window, GLFW_TRUE);
   }
+  if (!options.frame_report.empty()) cost.write(options.frame_report, app);
 }
 
 }  // namespace
@@ -480,6 +542,17 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     return kExitUsage;
   }
+  int width = 1440, height = 860;
+  OrbitCamera camera;
+  try {
+    if (!options.size.empty()) parse_size_option(options.size, &width, &height);
+    ParamSet check = lab_params(*lab);
+    for (const auto& a : options.assignments) apply_set_option(check, a);
+    camera = camera_option(options.camera, scene.bounds());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab: %s\n", e.what());
+    return kExitUsage;
+  }
   std::optional<BenchPlots> bench;  // asked for on the command line: read it now, or say why not
   try {
     if (!options.bench_file.empty()) bench = load_bench_plots(options.bench_file);
@@ -492,7 +565,7 @@ int run_window(const WindowOptions& options) {
     std::fprintf(stderr, "shadowlab: cannot open a window: %s; %s\n", take_glfw_error().c_str(), kHeadlessHint);
     return kExitRuntime;
   }
-  GLFWwindow* window = create_window(true);
+  GLFWwindow* window = create_window(true, width, height);
   if (!window) {
     std::fprintf(stderr, "shadowlab: cannot create an OpenGL 3.3 core window: %s; %s\n", take_glfw_error().c_str(),
                  kHeadlessHint);
@@ -519,12 +592,15 @@ int run_window(const WindowOptions& options) {
     app.gl_fallbacks = gl_fallbacks();
     app.renderer = std::make_unique<Renderer>();
     app.renderer->set_scene(scene);
-    app.camera = OrbitCamera::framing(scene.bounds());
+    app.camera = camera;
+    app.windowed[2] = width;
+    app.windowed[3] = height;
     app.bench.path = options.bench_file.empty() ? (data_dir() / "docs" / "bench.json").string() : options.bench_file;
     app.bench_plots = std::move(bench);
     app.bench.open = app.bench_plots.has_value();
     app.settings.start();  // only now: a run that failed to start never touches the settings file
     app.open_lab(*lab);
+    for (const auto& a : options.assignments) apply_set_option(app.params, a);  // over the saved values
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, drop_callback);  // ImGui's backend does not use this one
     try {

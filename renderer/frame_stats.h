@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -10,15 +11,25 @@
 namespace shadowlab {
 
 struct PassTiming {
-  std::string name;
+  std::string_view name;    // a string literal: recording a pass allocates nothing
   double gpu_ms = 0.0;      // the pass's cost: its timer query, or its wall time where that is the truth
   bool wall_clock = false;  // gpu_ms is the glFinish-bracketed wall time (see PassTimer)
-  double wall_ms = 0.0;     // the glFinish-bracketed wall time around the pass, always measured
+  double wall_ms = 0.0;     // the glFinish-bracketed wall time around the pass (Exact timing only)
+  bool timed = false;       // gpu_ms holds a measurement (false: the pass ran, its time is not known yet)
 };
 
 struct FrameStats {
-  std::vector<PassTiming> passes;  // this frame's passes, in order, with GPU time (GL_TIME_ELAPSED)
-  double cpu_ms = 0.0;  // wall time of render(), passes included (each is finished before the next)
+  // This frame's passes, in order; with their times under TimingMode::Exact (see PassTimer).
+  std::vector<PassTiming> passes;
+  // Under TimingMode::Queries: the passes of the latest frame whose timer queries have come back,
+  // timed_frames_ago frames before this one (empty, 0 until one has).
+  std::vector<PassTiming> timed_passes;
+  long timed_frames_ago = 0;
+  // The passes the pass-time line shows: this frame's when timed, else the latest timed frame's.
+  const std::vector<PassTiming>& shown_passes() const {
+    return !passes.empty() && passes.front().timed ? passes : timed_passes;
+  }
+  double cpu_ms = 0.0;  // wall time of render() (under Exact timing every pass is finished inside it)
   // Counters over the renderer's lifetime, so tests can see what was skipped.
   long frames = 0;
   long shadow_passes = 0;   // shadow-map updates (depth, cube or moments)
@@ -27,6 +38,9 @@ struct FrameStats {
   long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)
   long stencil_passes = 0;  // shadow-volume stencil passes
   long draws = 0;
+  // What timing cost the pipeline (lifetime): glFinish calls and query reads that wait for the GPU.
+  long gl_finishes = 0;
+  long blocking_query_reads = 0;
   // Shadow casters not drawn into a shadow map (or cube face) because their bounds lie outside the
   // light's volume: they could not have written a texel.
   long casters_culled = 0;

@@ -59,7 +59,7 @@ GlSampler make_compare_sampler() {
 
 void bind_color_target(GLuint framebuffer, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  const GLenum color = GL_COLOR_ATTACHMENT0;
+  const GLenum color = framebuffer == 0 ? GL_BACK : GL_COLOR_ATTACHMENT0;  // 0: the window's
   glDrawBuffers(1, &color);
   glViewport(0, 0, width, height);
 }

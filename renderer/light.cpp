@@ -135,6 +135,22 @@ glm::mat4 OrbitCamera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
 }
 
+OrbitCamera OrbitCamera::looking(const glm::vec3& eye, const glm::vec3& target, float fov_y_deg, const Bounds& bounds) {
+  OrbitCamera cam;
+  const glm::vec3 d = eye - target;
+  cam.target = target;
+  cam.distance = std::max(glm::length(d), 1e-6f);
+  cam.yaw_deg = glm::degrees(std::atan2(d.x, d.z));
+  cam.pitch_deg = glm::degrees(std::asin(std::clamp(d.y / cam.distance, -1.0f, 1.0f)));
+  cam.fov_y_deg = fov_y_deg;
+  if (bounds.empty()) return cam;
+  const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
+  const float to_centre = glm::length(eye - bounds.center());
+  cam.far_plane = to_centre + radius;
+  cam.near_plane = std::max(to_centre - radius, 1e-3f * cam.far_plane);
+  return cam;
+}
+
 OrbitCamera OrbitCamera::framing(const Bounds& bounds, float yaw_deg, float pitch_deg) {
   OrbitCamera cam;
   cam.yaw_deg = yaw_deg;

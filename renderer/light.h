@@ -77,6 +77,9 @@ struct OrbitCamera {
   // Frames a bounding box: target at its centre, distance so the bounding sphere fits, near and far
   // planes as tight as the sphere allows (depth precision).
   static OrbitCamera framing(const Bounds& bounds, float yaw_deg = 30.0f, float pitch_deg = 30.0f);
+  // A camera at `eye` looking at `target` (distinct points) with this vertical field of view; near and
+  // far planes as tight as `bounds` allows (as framing's).
+  static OrbitCamera looking(const glm::vec3& eye, const glm::vec3& target, float fov_y_deg, const Bounds& bounds);
 };
 
 }  // namespace shadowlab

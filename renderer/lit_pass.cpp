@@ -79,8 +79,17 @@ void LitPass::for_each_program(const std::function<void(ReloadableProgram&)>& f)
   for (auto& [key, p] : programs_) f(p.program);
 }
 
-void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil) {
-  if (width == width_ && height == height_ && gbuffer == gbuffer_ && stencil == stencil_) return;
+void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window, GLuint window) {
+  if (to_window && gbuffer) throw std::logic_error("the window's framebuffer has no G-buffer");
+  to_window_ = to_window;
+  window_ = window;
+  if (to_window) {  // drawn where it is seen: no targets of its own are made (those made before stay)
+    if (width != width_ || height != height_) fbo_ = {};
+    width_ = width;
+    height_ = height;
+    return;
+  }
+  if (fbo_ && width == width_ && height == height_ && gbuffer == gbuffer_ && stencil == stencil_) return;
   color_ = make_texture_2d(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, GL_LINEAR);
   depth_ = GlRenderbuffer::create();
   glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
@@ -116,12 +125,12 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   Program& p = it->second;
   if (p.u.generation != p.program.generation()) resolve(p.program, p.u);
   if (variant == LitVariant::RemapView) {
-    bind_color_target(fbo_.id(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
+    bind_color_target(framebuffer(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
   } else {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
     glViewport(0, 0, width_, height_);
   }
-  begin(variant, ctx.gbuffer);
+  begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
   set_uniforms(ctx, shadow, p.u);
   ctx.gpu_scene.bind();
@@ -132,13 +141,14 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   end();
 }
 
-void LitPass::begin(LitVariant variant, bool gbuffer) {
+void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {
+  const GLenum window[] = {GL_BACK};
   const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glEnable(GL_DEPTH_TEST);
   switch (variant) {
     case LitVariant::Lit:
     case LitVariant::VolumeAmbient: {  // the view from scratch: colour, depth (and the G-buffer)
-      glDrawBuffers(gbuffer ? 4 : 1, all);
+      glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : all);
       glDepthMask(GL_TRUE);
       glDepthFunc(GL_LESS);
       const float background[] = {0.16f, 0.18f, 0.22f, 1.0f};
@@ -152,7 +162,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer) {
     case LitVariant::VolumeAdditive: {
       // Colour and visibility only; positions and normals stay as the ambient pass wrote them.
       const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_NONE};
-      glDrawBuffers(gbuffer ? 4 : 1, buffers);
+      glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : buffers);
       glDepthMask(GL_FALSE);
       glDepthFunc(GL_EQUAL);  // exactly the surfaces the ambient pass kept (lit.vert's gl_Position is invariant)
       glEnable(GL_STENCIL_TEST);
@@ -242,6 +252,7 @@ GBuffer LitPass::read_gbuffer() const {
 }
 
 void LitPass::present(GLuint framebuffer, int width, int height) const {
+  if (to_window_) throw std::logic_error("the view was drawn into the window: nothing to present");
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);

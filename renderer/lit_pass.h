@@ -25,12 +25,14 @@ class LitPass {
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
 
   // The view's targets for this size; with `stencil` a DEPTH24_STENCIL8 depth buffer (shadow volumes),
-  // with `gbuffer` the G-buffer attachments too.
-  void ensure_targets(int width, int height, bool gbuffer, bool stencil);
+  // with `gbuffer` the G-buffer attachments too. With `to_window` the view is drawn straight into the
+  // window's framebuffer (0, which has depth and stencil): no target of its own, no copy; read-backs
+  // and present() then have nothing of their own to read.
+  void ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window = false, GLuint window = 0);
   // Draws the scene with a variant's program, reading what `shadow` binds.
   void draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant);
 
-  GLuint framebuffer() const { return fbo_.id(); }
+  GLuint framebuffer() const { return to_window_ ? window_ : fbo_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -47,7 +49,7 @@ class LitPass {
     LitUniforms u;
   };
   using Key = std::pair<LitVariant, bool>;  // variant, G-buffer
-  static void begin(LitVariant variant, bool gbuffer);
+  static void begin(LitVariant variant, bool gbuffer, bool default_framebuffer);
   static void end();
   void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
 
@@ -55,6 +57,8 @@ class LitPass {
   int width_ = 0, height_ = 0;
   bool gbuffer_ = false;
   bool stencil_ = false;
+  bool to_window_ = false;
+  GLuint window_ = 0;  // with to_window_: where the view is drawn (0: the window's framebuffer)
   GlTexture color_, visibility_, position_, normal_;
   GlRenderbuffer depth_;
   GlFramebuffer fbo_;

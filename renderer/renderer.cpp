@@ -128,11 +128,16 @@ std::string Renderer::shader_warnings() const {
 
 void Renderer::invalidate_shadow_map() { shadow_inputs_.reset(); }
 
+void Renderer::set_timing(TimingMode mode) { timer_->set_mode(mode); }
+TimingMode Renderer::timing() const { return timer_->mode(); }
+bool Renderer::timers_work() const { return timer_->timers_work(); }
+
 const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& request) {
   if (!gpu_scene_) throw std::logic_error("Renderer::render called before set_scene");
   const auto cpu_start = std::chrono::steady_clock::now();
   stats_.passes.clear();
   ++stats_.frames;
+  timer_->begin_frame(stats_);
 
   // 1. The light: its type, direction or position from the sliders, its view and projection from the
   // features' fit (directional), the spot's cone or the point light's six faces.
@@ -141,7 +146,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape shape = shadow.shape();
   if (shadow.ensure_targets(params)) ++targets_generation_;
-  lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil);
+  lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
+                       request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
 
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's

@@ -25,6 +25,7 @@
 #include "renderer/light.h"
 #include "renderer/oracle.h"
 #include "renderer/params.h"
+#include "renderer/pass_timer.h"
 #include "renderer/scene.h"
 #include "renderer/shader.h"
 #include "renderer/shadow_passes.h"
@@ -36,7 +37,6 @@ class ShadowPass;
 struct PassContext;
 class LitPass;
 class DebugViews;
-class PassTimer;
 struct MomentsTargetInfo;
 struct VolumeMeshReport;
 struct VolumeTriangles;
@@ -68,6 +68,11 @@ struct FrameRequest {
   int width = 1280;
   int height = 720;
   bool gbuffer = false;  // also write visibility, world positions and normals (for the oracle)
+  // Draw the view straight into the window's framebuffer (0, width x height, with depth and stencil)
+  // instead of the renderer's own target: no copy (present() is then not needed, read-backs of the
+  // view have nothing to read). Not with gbuffer.
+  bool to_window = false;
+  GLuint window_framebuffer = 0;  // with to_window: the framebuffer that stands for the window (0: its own)
 };
 
 class Renderer {
@@ -93,6 +98,11 @@ class Renderer {
   // Makes the next frame re-run the shadow (moments, blur) passes even if nothing they read changed:
   // for benchmarks that time whole frames.
   void invalidate_shadow_map();
+  // How passes are timed (renderer/pass_timer.h): Exact (the default: benchmarks, headless runs) waits
+  // for every pass; the window asks for interactive_timing(timers_work(), pass line shown).
+  void set_timing(TimingMode mode);
+  TimingMode timing() const;
+  bool timers_work() const;  // false on a software rasteriser: its timer queries measure nothing useful
   // Copies the last frame onto another framebuffer (0: the window), scaled to its size.
   void present(GLuint framebuffer, int width, int height) const;
 

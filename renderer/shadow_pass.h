@@ -74,7 +74,7 @@ struct PassContext {
   // Runs draws, adding the fragments that passed the depth test to stats.shadow_texels_written.
   template <typename F>
   void count_texels(F&& draws) {
-    stats.shadow_texels_written += timer.count_samples(draws);
+    stats.shadow_texels_written += timer.count_samples(stats, draws);
   }
 };
 

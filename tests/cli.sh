@@ -187,7 +187,7 @@ PY
   help_text)  # --help: defaults, environment, exit codes, window keys, and an example per command
     "$bin" --help >"$tmp/main" || fail "--help: exit $?"
     for want in "Exit codes" "  2  usage" "  3  runtime error" SHADOWLAB_SETTINGS SHADOWLAB_DATA_DIR MESA_GL_VERSION_OVERRIDE \
-                "Window keys" "hide this panel (H again shows it)" "Examples" "--version"; do
+                "Window keys" "hide this panel and the pass-time line (H again shows them)" "pass-time line on / off" "Examples" "--version"; do
       grep -qF -- "$want" "$tmp/main" || fail "--help lacks '$want'"
     done
     for cmd in render check bench labs; do
@@ -502,6 +502,37 @@ line_split = max(col(r["split"], x) for x in range(w // 2 - 2, w // 2 + 3))
 line_single = max(col(r["lab1"], x) for x in range(w // 2 - 2, w // 2 + 3))
 print("divider rows:", line_split, line_single)
 assert line_split > 0.9 * len(range(100, h - 100, 4)) and line_single < line_split / 2, "no divider"
+PY
+    ;;
+  window_frame_cost)  # the window takes render's options; its interactive frame waits for nothing (issue 17)
+    code 2 "$bin" --size 12x9 --frames 1
+    code 2 "$bin" --size 640 --frames 1
+    code 2 "$bin" --camera "eye=1,2 target=0,0,0" --frames 1
+    code 2 "$bin" --camera "eye=1,1,1 target=1,1,1" --frames 1
+    code 2 "$bin" --camera "fov=abc" --frames 1
+    code 2 "$bin" --set shadow.bais=1 --frames 1
+    code 2 "$bin" render --out "$tmp/o" --camera "zoom=2"
+    "$bin" render --lab 6 --out "$tmp/cam" --width 320 --height 180 --camera "eye=-2,4,-1 target=0,0,0 fov=45" \
+      || fail "render --camera failed"
+    # Lab 6 at LearnOpenGL's view, the line shown for 4 frames, then hidden (H) for 12.
+    window --lab 6 --size 640x360 --camera "eye=-2,4,-1 target=0,0,0 fov=45" --set view.debug_quad=0 \
+      --frame-report "$tmp/cost.json" --script "frames:4,key:h,frames:12,screenshot:$tmp/cost.png"
+    python3 - "$tmp" <<'PY' || fail "the interactive frame waits for the GPU, or --size/--camera were not applied"
+import json, struct, sys
+t = sys.argv[1]
+r = json.load(open(f"{t}/cost.json"))
+print(r)
+with open(f"{t}/cost.png", "rb") as f:
+    head = f.read(24)
+w, h = struct.unpack(">II", head[16:24])
+assert (w, h) == (640, 360), (w, h)
+hidden, shown = r["pass_line_hidden"], r["pass_line_shown"]
+assert hidden["frames"] >= 10 and shown["frames"] >= 3, r
+assert hidden["gl_finishes"] == 0 and hidden["blocking_query_reads"] == 0, "waits with the pass-time line hidden"
+if r["timers_work"]:
+    assert shown["gl_finishes"] == 0 and shown["blocking_query_reads"] == 0, "waits although the timers work"
+else:  # a software rasteriser: exact times only while the line is shown, and they are counted
+    assert shown["gl_finishes"] >= 2 * shown["frames"], r
 PY
     ;;
   window_hide_panel)  # H hides the panel (no ImGui window is built), a corner line says how to get it back, H shows it

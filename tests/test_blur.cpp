@@ -218,7 +218,7 @@ TEST_F(BlurTest, PassesAndCountersPerMethod) {
     std::vector<std::string> blur_passes;
     for (const auto& p : r.stats().passes)
       if (p.name.rfind("blur", 0) == 0) {
-        blur_passes.push_back(p.name);
+        blur_passes.emplace_back(p.name);
         EXPECT_GT(p.gpu_ms, 0.0) << method << " " << p.name;
       }
     EXPECT_EQ(blur_passes, expected.at(method)) << method;

@@ -1,5 +1,6 @@
 // Headless GL tests on Mesa's llvmpipe: the renderer draws the default scene with shadows where they
 // belong, follows the light, leaves no GL objects behind, and reports shader errors as file:line.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -300,6 +301,45 @@ TEST_F(RendererTest, PassTimesArePlausible) {
     EXPECT_TRUE(still.passes[0].wall_clock);
     EXPECT_GT(still.passes[0].gpu_ms, 0.2) << "a 640x360 lit pass on llvmpipe takes milliseconds";
   }
+}
+
+// The interactive frame waits for nothing: under the window's timing modes no glFinish and no
+// blocking query read, with the light moving (shadow pass and its sample count) and still; the ring's
+// times and sample counts come back a few frames later. Exact timing (the benchmark's) counts its waits,
+// so the counters are seen to count.
+TEST_F(RendererTest, InteractiveTimingWaitsForNothing) {
+  EXPECT_EQ(interactive_timing(true, true), TimingMode::Queries);
+  EXPECT_EQ(interactive_timing(true, false), TimingMode::Queries);
+  EXPECT_EQ(interactive_timing(false, true), TimingMode::Exact);
+  EXPECT_EQ(interactive_timing(false, false), TimingMode::Off);
+  for (TimingMode mode : {TimingMode::Queries, TimingMode::Off}) {
+    Renderer r;
+    r.set_scene(scene);
+    r.set_timing(mode);
+    const FrameRequest req = request(false);
+    for (int frame = 0; frame < 12; ++frame) {
+      params.set("light.azimuth", frame < 6 ? 30.0 + 10.0 * frame : 90.0);
+      const FrameStats& stats = r.render(params, req);
+      ASSERT_FALSE(stats.passes.empty());
+      for (const auto& p : stats.passes) EXPECT_FALSE(p.timed) << p.name;
+    }
+    glFinish();  // the test's own wait, after the frames: the ring's results are all available now
+    const FrameStats& last = r.render(params, req);
+    EXPECT_EQ(last.gl_finishes, 0) << static_cast<int>(mode);
+    EXPECT_EQ(last.blocking_query_reads, 0) << static_cast<int>(mode);
+    EXPECT_GT(last.shadow_passes, 1);
+    EXPECT_GT(last.shadow_texels_written, 0) << "sample counts come back through the ring";
+    if (mode == TimingMode::Queries) {
+      ASSERT_FALSE(last.timed_passes.empty());
+      EXPECT_GE(last.timed_frames_ago, 1);
+      EXPECT_TRUE(std::any_of(last.timed_passes.begin(), last.timed_passes.end(), [](const PassTiming& p) { return p.name == "lit"; }));
+    }
+  }
+  Renderer exact;  // the default: every pass bracketed by glFinish, its query read at once
+  exact.set_scene(scene);
+  const FrameStats& stats = exact.render(params, request(false));
+  EXPECT_EQ(stats.gl_finishes, 2 * static_cast<long>(stats.passes.size()));
+  EXPECT_GE(stats.blocking_query_reads, static_cast<long>(stats.passes.size()));
 }
 
 }  // namespace

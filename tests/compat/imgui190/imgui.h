@@ -29,6 +29,7 @@ enum ImGuiKey : int {
   ImGuiKey_N,
   ImGuiKey_P,
   ImGuiKey_S,
+  ImGuiKey_T,
   ImGuiKey_F11,
   ImGuiKey_F12,
 };
