@@ -40,6 +40,14 @@ Features Lab::hooks_for(const SlotFiles& files) const {
   return hooks;
 }
 
+std::vector<ParamSpec> vsm_lab_bias_params() {
+  const ParamSet base(renderer_param_specs());
+  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  bias.default_value = 0.0005;
+  slope.default_value = 0.0;
+  return {bias, slope};
+}
+
 std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light) {
   return [=](const SlotFiles& files) {
     Features hooks;

@@ -94,5 +94,8 @@ ParamSet lab_params(const Lab& lab);
 // Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
 // (unset: the light.type parameter decides).
 std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light = std::nullopt);
+// shadow.bias and shadow.slope_bias as the VSM labs set them (lab 4's): a bias of 0.0005 on z, no slope
+// term (the moments' bias is the lesson there, not the slope).
+std::vector<ParamSpec> vsm_lab_bias_params();
 
 }  // namespace shadowlab

@@ -52,14 +52,10 @@ void MsmPass::draw_map(PassContext& ctx) {
       glClearBufferfv(GL_COLOR, 0, kMsmClear);
       glClearDepth(1.0);
       glClear(GL_DEPTH_BUFFER_BIT);
-      set_shadow_culling(ctx.cull);
       glUseProgram(moments_.id());
       const glm::mat4 light_view_proj = ctx.light.view.view_projection();
       moments_u_.light_view_proj.set(light_view_proj);
-      const auto counts = ctx.gpu_scene.draw_casters(&light_view_proj, 1, ctx.params.get_bool("shadow.cull_casters"));
-      ctx.stats.draws += counts.drawn;
-      ctx.stats.casters_culled += counts.culled;
-      glDisable(GL_CULL_FACE);
+      draw_casters_from_light(ctx, light_view_proj);
     });
   });
   ++ctx.stats.moments_passes;

@@ -131,6 +131,9 @@ class ShadowPass {
 
 // Faces the shadow pass skips (0 none, 1 front, 2 back): enables or disables GL_CULL_FACE to match.
 void set_shadow_culling(int cull);
+// Draws the casters into the bound target as the light sees them, with the pass's culling (the caller has
+// bound its program and set its light matrix), counting draws and culled casters; culling is off after.
+void draw_casters_from_light(PassContext& ctx, const glm::mat4& light_view_proj);
 // A depth map as a picture: the occupied range stretched to full contrast (the cleared background,
 // depth 1, stays white), RGBA8 top row first.
 std::vector<std::uint8_t> depth_map_image(const std::vector<float>& depth, int size);

@@ -53,6 +53,14 @@ void set_shadow_culling(int cull) {
   }
 }
 
+void draw_casters_from_light(PassContext& ctx, const glm::mat4& light_view_proj) {
+  set_shadow_culling(ctx.cull);
+  const auto counts = ctx.gpu_scene.draw_casters(&light_view_proj, 1, ctx.params.get_bool("shadow.cull_casters"));
+  ctx.stats.draws += counts.drawn;
+  ctx.stats.casters_culled += counts.culled;
+  glDisable(GL_CULL_FACE);
+}
+
 std::vector<std::uint8_t> depth_map_image(const std::vector<float>& depth, int size) {
   // Stretch the occupied depth range to full contrast (the fitted ortho box already spans [0, 1], the
   // fixed tutorial box may not); the cleared background (depth 1) stays white.

@@ -190,11 +190,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Cut the light that bleeds through stacked occluders: bias z, remap [0, delta] to 0.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
-  bias.default_value = 0.0005;
-  slope.default_value = 0.0;
-  lab.params = {bias, slope};
+  lab.params = vsm_lab_bias_params();
   for (auto& spec :
        vsm_param_specs({"vsm.min_variance", "vsm.bleed_delta", "vsm.show_remap", "vsm.blur_radius", "vsm.blur_sigma"}))
     lab.params.push_back(spec);

@@ -181,12 +181,7 @@ Lab SHADOWLAB_LAB_MAKER() {
     if (spec.key == "vsm.blur_radius") spec.default_value = 4.0;
     if (spec.key == "vsm.blur_sigma") spec.default_value = 2.0;
   }
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
-  bias.default_value = 0.0005;  // lab 4's
-  slope.default_value = 0.0;
-  lab.params.push_back(bias);
-  lab.params.push_back(slope);
+  for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
       {"no blur", "Radius 0: no blur pass runs; edges show the map's texels.", {{"vsm.blur_radius", "0"}}},
       {"soft",

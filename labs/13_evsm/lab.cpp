@@ -110,12 +110,7 @@ Lab SHADOWLAB_LAB_MAKER() {
                                 "vsm.blur_radius", "vsm.blur_sigma"});
   for (auto& spec : lab.params)
     if (spec.key == "vsm.warp") spec.default_value = 1.0;  // exponential
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
-  bias.default_value = 0.0005;  // lab 4's
-  slope.default_value = 0.0;
-  lab.params.push_back(bias);
-  lab.params.push_back(slope);
+  for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
       {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, for comparison.", {{"vsm.warp", "none"}}},
       {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}}},

@@ -82,12 +82,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
   lab.params = vsm_param_specs({"vsm.msm_moment_bias"});
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
-  bias.default_value = 0.0005;  // lab 4's
-  slope.default_value = 0.0;
-  lab.params.push_back(bias);
-  lab.params.push_back(slope);
+  for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
       {"paper", "alpha = 3e-5, the paper's moment bias.", {{"vsm.msm_moment_bias", "3e-5"}}},
       {"large bias", "alpha = 3e-3: the bound softens and light bleeds again.", {{"vsm.msm_moment_bias", "0.003"}}},
