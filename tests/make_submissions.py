@@ -61,6 +61,10 @@ def function_start(lines, entry):
         for j in range(i, min(i + 6, len(lines))):
             if lines[j].rstrip().endswith("{"):
                 return j + 1, m.group(1)
+            if "{" in lines[j]:  # a one-line body: `float f(float z) { return z; }` split after its brace
+                brace = lines[j].index("{") + 1
+                lines[j:j + 1] = [lines[j][:brace], "  " + lines[j][brace:].strip()]
+                return j + 1, m.group(1)
     raise ValueError("no definition of %s" % entry)
 
 
