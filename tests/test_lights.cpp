@@ -203,7 +203,7 @@ TEST_F(LightsTest, LitProgramCompiledForThePcfSettingsDrawsTheGenericImage) {
   r.set_scene(scene);
   const OrbitCamera camera = OrbitCamera::framing(scene.bounds());
   const std::string answers = std::string(SHADOWLAB_SOURCE_DIR) + "/tests/answers/06_pcf/right/";
-  for (const std::string file : {std::string("shaders/shadow/pcf.glsl"), std::string("labs/06_pcf/exercise.glsl"),
+  for (const std::string& file : {std::string("shaders/shadow/pcf.glsl"), std::string("labs/06_pcf/exercise.glsl"),
                                  answers + "two_loops_step__exercise.glsl", answers + "per_tap_reach_bias__exercise.glsl"}) {
     Features pcf;
     pcf.includes["lab/visibility.glsl"] = file;
@@ -233,8 +233,9 @@ TEST_F(LightsTest, LitProgramCompiledForThePcfSettingsDrawsTheGenericImage) {
           partial += visibility[i] > 0.0f && visibility[i] < 1.0f;
         }
         EXPECT_EQ(differ, 0) << what;
-        if (file != "labs/06_pcf/exercise.glsl" && (kernel[0] != '1' || hardware[0] == 't'))
+        if (file != "labs/06_pcf/exercise.glsl" && (kernel[0] != '1' || hardware[0] == 't')) {
           EXPECT_GT(partial, 0) << what << ": a filtered edge, so the kernel is seen to act";
+        }
       }
   }
   EXPECT_TRUE(r.shader_error().empty()) << r.shader_error();
