@@ -61,7 +61,7 @@ def lab_folders(root):
 
 
 def is_timing(key):
-    return key == "seconds" or key == "ms" or key.endswith("_ms") or key == "stats"
+    return key in ("seconds", "stats") or "ms" in key.split("_")
 
 
 def deterministic(value):
@@ -112,6 +112,44 @@ def record_lab(binary, lab):
     return runs
 
 
+def blur_cost_fit(result):
+    """Lab 5's blur time per pass against its taps (2 radius + 1): a least-squares line over the check's
+    radii (a timing, like the times it is fitted to)."""
+    points = [(2 * r["radius"] + 1, (r["gpu_ms_blur_x"] + r["gpu_ms_blur_y"]) / 2)
+              for r in result["metrics"]["blur"]["radii"] if r["case"].startswith("radius")]
+    n = len(points)
+    mx = sum(x for x, _ in points) / n
+    my = sum(y for _, y in points) / n
+    slope = sum((x - mx) * (y - my) for x, y in points) / sum((x - mx) ** 2 for x, _ in points)
+    return {"per_tap": slope, "fixed": my - slope * mx, "taps": [x for x, _ in points]}
+
+
+# A receiver this far from the spot light, for lab 7's worked example of a constant window-depth bias.
+SPOT_EXAMPLE_DISTANCE = 8.0
+
+
+def spot_constant_shift(result, constant):
+    """Lab 7: where a constant bias in window depth moves the comparison, at the low place's near and far,
+    for a receiver SPOT_EXAMPLE_DISTANCE away: the exact depth z' with d(z') = d(z) - constant, where
+    d(z) = f/(f-n) (1 - n/z), and the small-step estimate constant z^2 (f-n)/(f n)."""
+    light = result["metrics"]["low"]["light"]
+    n, f, z = light["near"], light["far"], SPOT_EXAMPLE_DISTANCE
+    d = f / (f - n) * (1 - n / z) - constant
+    exact = n / (1 - d * (f - n) / f)
+    return {"distance": z, "near": n, "far": f, "constant": constant, "exact_depth": exact,
+            "exact_shift": z - exact, "small_step_shift": constant * z * z * (f - n) / (f * n)}
+
+
+def derive(lab, runs):
+    """Figures computed from a lab's runs (kept beside them, replayed with them)."""
+    if lab == 5:
+        return {"blur_cost_ms": blur_cost_fit(runs["solution"]["result"])}
+    if lab == 7:
+        exercise = runs["exercise"]["result"]
+        return {"constant_shift": spot_constant_shift(exercise, exercise["parameters"]["shadow.bias"])}
+    return {}
+
+
 def recorded_block(binary, root):
     version = subprocess.run([str(binary), "--version"], capture_output=True, text=True).stdout.strip()
     commit = subprocess.run(["git", "-C", str(root), "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip()
@@ -137,6 +175,9 @@ def record(binary, root, only=None):
         if only and lab not in only:
             continue
         data = {"recorded": block, "runs": record_lab(binary, lab)}
+        derived = derive(lab, data["runs"])
+        if derived:
+            data["derived"] = derived
         (folder / f"lab_{lab:02d}.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
     return 0
 
@@ -167,6 +208,7 @@ def replay(binary, root):
         lab = int(re.match(r"lab_(\d+)\.json", file).group(1))
         old = json.loads((folder / file).read_text())
         new = {"runs": record_lab(binary, lab)}
+        new["derived"] = derive(lab, new["runs"])
         for where, printed, _, pointer, scale in (m for m in markers if m[2] == file):
             parts = pointer.strip("/").split("/")
             if any(is_timing(p) for p in parts):
