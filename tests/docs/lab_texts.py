@@ -35,7 +35,7 @@ MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
 MARKER = re.compile(r"<!-- [=@] [^>]*-->")
 # A figure that looks measured: a decimal point, an exponent, a thousands separator or a per cent sign.
-LOOKS_MEASURED = re.compile(r"(?<![\w.])(?:\d{1,3}(?:,\d{3})+(?:\.\d+)?|\d*\.\d+(?:e[-+]?\d+)?|\d+e[-+]?\d+|\d+(?:\.\d+)?\s*%)(?![\w.])")
+LOOKS_MEASURED = re.compile(r"(?<![\w.])(?:\d+(?:\.\d+)?\s*%|\d{1,3}(?:,\d{3})+(?:\.\d+)?|\d*\.\d+(?:e[-+]?\d+)?|\d+e[-+]?\d+)(?![\w.])")
 
 
 def constant(path, name):

@@ -33,10 +33,11 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: labs/, renderer/, shaders/, docs/measured/ and README.md."""
+    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json and README.md."""
     for folder in ("labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
+    shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
 
 
 def main():
