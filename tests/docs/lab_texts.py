@@ -8,8 +8,8 @@ A figure a text takes from the code carries a marker right after it, invisible w
 
     at least 99.5 %<!-- = labs/09_shadow_volumes/lab.cpp:kMinAgreement*100 -->
 
-The marker names a file, a constant defined in it (`NAME = value` or `NAME{value}`, C++ or GLSL) and an
-optional scale. The figure before the marker must equal the constant times the scale, to the digits the
+The marker names a file, a constant defined in it (`NAME = value` or `NAME{value}`, C++ or GLSL; or a
+lab's preset, `preset(NAME).key`) and an optional scale. The figure before the marker must equal the constant times the scale, to the digits the
 text prints (rounded: 0.048 % stands for anything in [0.0475, 0.0485)). A measured figure names a
 recorded run instead (docs/measured/lab_NN.json, made by `tests/docs/measured.py record`; CTest
 docs.measured_replay proves the deterministic ones still hold for the current code):
@@ -18,8 +18,8 @@ docs.measured_replay proves the deterministic ones still hold for the current co
 
 Student texts (labs/NN_*/README.md) must also have a task section ("Your task" or "Your part") and a
 "How to see it" section (the window's panel shows both), a "The check" section whose limits all carry
-markers and a "Sources" section, and must not mention issues. In the instructor notes
-(labs/NN_*/INSTRUCTOR.md) every figure that looks measured (a decimal point, a per cent sign, a
+markers and a "Sources" section, and must not mention issues. In the student texts and the
+instructor notes (labs/NN_*/INSTRUCTOR.md) every figure that looks measured (a decimal point, a per cent sign, a
 thousands separator or an exponent; not inside `code`) must carry a marker of either kind. The
 project's README.md is held to its markers. Exit 0 when every text agrees, 1 otherwise (each
 disagreement printed with its file and line).
@@ -31,7 +31,7 @@ import sys
 
 ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2]
 NUMBER = r"[-+]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
-MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+)(?:\*([-+0-9.e]+))? -->")
+MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])?|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
 MARKER = re.compile(r"<!-- [=@] [^>]*-->")
 # A figure that looks measured: a decimal point, an exponent, a thousands separator or a per cent sign.
@@ -40,6 +40,20 @@ LOOKS_MEASURED = re.compile(r"(?<![\w.])(?:\d+(?:\.\d+)?\s*%|\d{1,3}(?:,\d{3})+(
 
 def constant(path, name):
     text = path.read_text(encoding="utf-8")
+    preset = re.fullmatch(r"preset\(([^)]*)\)\.([\w.]+)", name)
+    if preset:  # a lab's preset: {"name", "description", {{"key", "value"}, ...}}
+        m = re.search(r'\{"' + re.escape(preset.group(1)) + r'",\s*"(?:[^"\\]|\\.)*",\s*\{(.*?)\}\}', text, re.DOTALL)
+        value = m and re.search(r'\{"' + re.escape(preset.group(2)) + r'",\s*"([-+0-9.e]+)"', m.group(1))
+        if not value:
+            raise LookupError(f"no preset {preset.group(1)} setting {preset.group(2)} in {path.relative_to(ROOT)}")
+        return float(value.group(1))
+    element = re.fullmatch(r"(\w+)\[(\d+)\]", name)
+    if element:  # an element of a constant array: NAME[N] = {a, b, ...}
+        m = re.search(r"\b" + element.group(1) + r"(?:\[\d*\])?\s*(?:=\s*)?\{([^{}]*)\}", text)
+        items = m.group(1).split(",") if m else []
+        if int(element.group(2)) >= len(items):
+            raise LookupError(f"no constant {name} in {path.relative_to(ROOT)}")
+        return float(items[int(element.group(2))].strip().rstrip("f"))
     m = re.search(r"\b" + name + r"\b(?:\[\])?\s*(?:=\s*|\{)\s*([-+]?[0-9][0-9.eE+-]*)f?\s*[;,})]", text)
     if not m:
         raise LookupError(f"no constant {name} in {path.relative_to(ROOT)}")
@@ -128,8 +142,9 @@ def check_text(readme, kind="student"):
                 problems.append(f"{where(i)}: the text says {printed}, the recorded run {file}:{pointer} has {value:g}")
         if MARKER.search(line) and len(MARKED.findall(line)) + len(MEASURED.findall(line)) != len(MARKER.findall(line)):
             problems.append(f"{where(i)}: a marker without a figure right before it")
-        if kind == "instructor" and not fenced:
+        if kind in ("instructor", "student") and not fenced:
             bare = MARKER.sub("", MARKED.sub("", MEASURED.sub("", without_code(line))))
+            bare = re.sub(r"\b(?:GLSL|OpenGL) \d\.\d+", "", bare)  # a specification's version
             for m in LOOKS_MEASURED.finditer(bare):
                 problems.append(f"{where(i)}: a figure with no marker to the code or a recorded run: {m.group(0)}")
         if kind == "student" and section.startswith("The check") and line.startswith("|") and not line.startswith("|---"):

@@ -25,6 +25,10 @@ MUTATIONS = [
      "1.9<!-- @ lab_04.json:/runs/solution/result/metrics/stacked_blur4_unfixed/", "the text says 1.9, the recorded run lab_04.json"),
     ("docs/measured/lab_09.json", '"interior_agreement": 0.9998963505988109', '"interior_agreement": 0.9898963505988109', "the recorded run lab_09.json"),
     ("README.md", "fewer than 500<!--", "fewer than 400<!--", "the text says 400"),
+    # A preset's value changed in the code; an untied figure in a student's text.
+    ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}}', '{{"vsm.bleed_delta", "0.15"}}',
+     "preset(course).vsm.bleed_delta = 0.15"),
+    ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
 ]
 
 
