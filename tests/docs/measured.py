@@ -4,7 +4,9 @@
     measured.py record BINARY [ROOT] [LAB...]
                                         run every lab's (or the given labs') check (solution and stock exercise) and the
                                         variants below; write docs/measured/lab_NN.json
-    measured.py replay BINARY [ROOT]    run them again and compare with the committed JSON: every
+    measured.py selftest BINARY [ROOT]  prove replay fails on a quoted figure the code no longer gives
+    measured.py replay BINARY [ROOT] [LAB...]
+                                        run them again and compare with the committed JSON: every
                                         deterministic figure a text quotes (a marker
                                         `<!-- @ lab_NN.json:/json/pointer*scale -->`, see lab_texts.py)
                                         must still print the same; timings are not compared
@@ -188,13 +190,14 @@ def quoted(root):
     return list(lab_texts.measured_markers())
 
 
-def replay(binary, root):
+def replay(binary, root, only=None):
     import lab_texts
     folder = root / "docs" / "measured"
     markers = quoted(root)
     # The lab records; a marker may also quote another recorded run (../bench.json: the benchmark's,
     # all timings), which is not replayed here.
-    files = sorted({m[2] for m in markers if re.fullmatch(r"lab_\d+\.json", m[2])})
+    files = sorted({m[2] for m in markers if re.fullmatch(r"lab_\d+\.json", m[2])
+                    and (not only or int(m[2][4:6]) in only)})
     problems, compared = [], 0
     for file in files:
         lab = int(re.match(r"lab_(\d+)\.json", file).group(1))
@@ -222,15 +225,52 @@ def replay(binary, root):
     return 1 if problems else 0
 
 
+def selftest(binary, root):
+    """replay must fail when the code no longer gives a quoted figure: a copy of the texts and records
+    where one figure of lab 0 (text and record alike, so docs.lab_texts still passes) was changed."""
+    import shutil
+    sys.path.insert(0, str(pathlib.Path(__file__).parent))
+    import lab_texts_selftest
+    lab_texts_selftest.ROOT = root
+    quote = "860<!-- @ lab_00.json:/runs/exercise/result/metrics/probe/wrong_inside -->"
+    with tempfile.TemporaryDirectory() as tmp:
+        copy = pathlib.Path(tmp)
+        lab_texts_selftest.copy_texts(tmp)
+        notes = copy / "labs" / "00_basic_shadow_map" / "INSTRUCTOR.md"
+        record = copy / "docs" / "measured" / "lab_00.json"
+        text, data = notes.read_text(), json.loads(record.read_text())
+        if quote not in text:
+            print("measured selftest: the quoted figure is gone from lab 0's INSTRUCTOR.md: update the self-test")
+            return 1
+        notes.write_text(text.replace(quote, quote.replace("860", "861", 1)))
+        data["runs"]["exercise"]["result"]["metrics"]["probe"]["wrong_inside"] = 861.0
+        record.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+        texts = subprocess.run([sys.executable, str(pathlib.Path(__file__).with_name("lab_texts.py")), tmp],
+                               capture_output=True, text=True)
+        if texts.returncode != 0:
+            print("measured selftest: the changed copy should still agree with itself:\n" + texts.stdout)
+            return 1
+        out = subprocess.run([sys.executable, __file__, "replay", str(binary), tmp, "0"], capture_output=True, text=True)
+        if out.returncode != 1 or "say 861, the current code gives 860" not in out.stdout:
+            print(f"measured selftest: replay did not catch a quoted figure the code no longer gives "
+                  f"(exit {out.returncode}):\n{out.stdout}{out.stderr}")
+            return 1
+    print("replay caught a quoted figure the current code no longer gives")
+    return 0
+
+
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("record", "replay"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("record", "replay", "selftest"):
         print(__doc__, file=sys.stderr)
         return 2
     binary = pathlib.Path(sys.argv[2]).resolve()
     root = pathlib.Path(sys.argv[3]).resolve() if len(sys.argv) > 3 else pathlib.Path(__file__).resolve().parents[2]
+    labs = {int(n) for n in sys.argv[4:]}
     if sys.argv[1] == "record":
-        return record(binary, root, {int(n) for n in sys.argv[4:]})
-    return replay(binary, root)
+        return record(binary, root, labs)
+    if sys.argv[1] == "selftest":
+        return selftest(binary, root)
+    return replay(binary, root, labs)
 
 
 if __name__ == "__main__":
