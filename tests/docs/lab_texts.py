@@ -72,12 +72,17 @@ def agrees(printed, value):
     return abs(float(digits) - value) < 0.5 * step - 1e-12 * abs(value)
 
 
-def measured_value(file, pointer):
-    data = json.loads((ROOT / "docs" / "measured" / file).read_text(encoding="utf-8"))
+def resolve(data, pointer):
+    """The value a JSON pointer (/a/0/b; ~1 is /, ~0 is ~) names in data."""
     node = data
     for part in pointer.strip("/").split("/"):
         part = part.replace("~1", "/").replace("~0", "~")
         node = node[int(part)] if isinstance(node, list) else node[part]
+    return node
+
+
+def measured_value(file, pointer):
+    node = resolve(json.loads((ROOT / "docs" / "measured" / file).read_text(encoding="utf-8")), pointer)
     if isinstance(node, bool) or not isinstance(node, (int, float)):
         raise LookupError(f"{file}:{pointer} is not a number")
     return float(node)

@@ -174,14 +174,6 @@ def record(binary, root, only=None):
     return 0
 
 
-def resolve(data, pointer):
-    node = data
-    for part in pointer.strip("/").split("/"):
-        part = part.replace("~1", "/").replace("~0", "~")
-        node = node[int(part)] if isinstance(node, list) else node[part]
-    return node
-
-
 def quoted(root):
     """Every measured marker in the texts: (where, printed, file, pointer, scale)."""
     sys.path.insert(0, str(pathlib.Path(__file__).parent))
@@ -209,7 +201,7 @@ def replay(binary, root, only=None):
             if any(is_timing(p) for p in parts):
                 continue
             try:
-                value = resolve(new, pointer) * scale
+                value = lab_texts.resolve(new, pointer) * scale
             except (KeyError, IndexError, ValueError, TypeError) as e:
                 problems.append(f"{where}: {file}:{pointer} is not in the new run ({e!r})")
                 continue
