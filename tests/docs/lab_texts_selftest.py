@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""lab_texts.py must fail when a text and the code disagree: three mutations of a copy of labs/.
+"""lab_texts.py must fail when a text and the code or a recorded run disagree: mutations of a copy of
+labs/, docs/measured/ and README.md.
 
     lab_texts_selftest.py ROOT
 """
@@ -18,11 +19,29 @@ MUTATIONS = [
     ("labs/04_light_bleeding/lab.cpp", "kMaxBleedingRatio = 0.25", "kMaxBleedingRatio = 0.3", "kMaxBleedingRatio = 0.3"),
     ("labs/06_pcf/README.md", "## How to see it", "## Seeing it", "no '## How to see it' section"),
     ("labs/08_point_light/README.md", "## Sources", "## Reading", "no '## Sources' section"),
+    # The instructor notes: a figure no marker ties, a quoted figure changed, a recorded value changed.
+    ("labs/06_pcf/INSTRUCTOR.md", "## Costs", "A leak of 0.5 % was seen.\n\n## Costs", "no marker to the code or a recorded run: 0.5 %"),
+    ("labs/04_light_bleeding/INSTRUCTOR.md", "1.725<!-- @ lab_04.json:/runs/solution/result/metrics/stacked_blur4_unfixed/",
+     "1.9<!-- @ lab_04.json:/runs/solution/result/metrics/stacked_blur4_unfixed/", "the text says 1.9, the recorded run lab_04.json"),
+    ("docs/measured/lab_09.json", '"interior_agreement": 0.9998963505988109', '"interior_agreement": 0.9898963505988109', "the recorded run lab_09.json"),
+    ("README.md", "fewer than 500<!--", "fewer than 400<!--", "the text says 400"),
+    # A preset's value changed in the code; an untied figure in a student's text.
+    ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}}', '{{"vsm.bleed_delta", "0.15"}}',
+     "preset(course).vsm.bleed_delta = 0.15"),
+    ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
 ]
 
 
 def run(root):
     return subprocess.run([sys.executable, str(CHECKER), str(root)], capture_output=True, text=True)
+
+
+def copy_texts(tmp):
+    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json and README.md."""
+    for folder in ("labs", "renderer", "shaders", "docs/measured"):
+        shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
+    shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
+    shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
 
 
 def main():
@@ -31,9 +50,15 @@ def main():
         print("the unmodified texts do not pass:\n" + clean.stdout)
         return 1
     failures = 0
+    with tempfile.TemporaryDirectory() as tmp:  # the copy itself passes: a mutation is caught for itself
+        copy_texts(tmp)
+        copied = run(tmp)
+        if copied.returncode != 0:
+            print("the unmodified copy does not pass:\n" + copied.stdout)
+            return 1
     for file, old, new, expected in MUTATIONS:
         with tempfile.TemporaryDirectory() as tmp:
-            shutil.copytree(ROOT / "labs", pathlib.Path(tmp) / "labs")
+            copy_texts(tmp)
             path = pathlib.Path(tmp) / file
             text = path.read_text(encoding="utf-8")
             if old not in text:
