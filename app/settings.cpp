@@ -73,6 +73,12 @@ std::vector<std::string> drop_bad_entries(nlohmann::json& doc) {
     }
     ++lab;
   }
+  if (doc.contains("camera")) {
+    if (std::string problem = camera_problem(doc["camera"]); !problem.empty()) {
+      dropped.push_back("the camera " + problem);
+      doc.erase("camera");
+    }
+  }
   return dropped;
 }
 
@@ -136,6 +142,31 @@ fs::path keep_aside(const fs::path& path, const std::string& text, bool copy) {
 }
 
 }  // namespace
+
+std::string camera_problem(const nlohmann::json& camera) {
+  if (!camera.is_object()) return "is not an object";
+  const auto scene = camera.find("scene");
+  if (scene == camera.end() || !scene->is_string()) return "has no scene name";
+  const auto target = camera.find("target");
+  if (target == camera.end() || !target->is_array() || target->size() != 3) return "has no target x, y, z";
+  for (const auto& v : *target)
+    if (!v.is_number() || !std::isfinite(v.get<double>())) return "has a target that is not three finite numbers";
+  const auto number = [&](const char* key, double* out) {
+    const auto it = camera.find(key);
+    if (it == camera.end() || !it->is_number() || !std::isfinite(it->get<double>())) return false;
+    *out = it->get<double>();
+    return true;
+  };
+  double distance = 0, yaw = 0, pitch = 0, fov = 0, near_plane = 0, far_plane = 0;
+  if (!number("distance", &distance) || !number("yaw_deg", &yaw) || !number("pitch_deg", &pitch) ||
+      !number("fov_y_deg", &fov) || !number("near_plane", &near_plane) || !number("far_plane", &far_plane))
+    return "lacks a finite distance, yaw_deg, pitch_deg, fov_y_deg, near_plane or far_plane";
+  if (!(distance > 0.0)) return "has a distance that is not positive";
+  if (std::abs(pitch) > 90.0) return "has a pitch beyond +-90 degrees";
+  if (fov < 1.0 || fov > 170.0) return "has a field of view outside 1-170 degrees";
+  if (!(near_plane > 0.0 && far_plane > near_plane)) return "has planes that are not 0 < near < far";
+  return "";
+}
 
 fs::path default_settings_path() {
   if (fs::path p = platform::env_path("SHADOWLAB_SETTINGS"); !p.empty()) return p;
@@ -222,6 +253,32 @@ std::vector<std::string> Settings::apply_lab(int lab, ParamSet& params) const {
 }
 
 void Settings::store_lab(int lab, const ParamSet& params) { lab_entry(lab)["params"] = params.to_json(); }
+
+void Settings::store_camera(const std::string& scene, const OrbitCamera& camera) {
+  doc_["camera"] = {{"scene", scene},
+                    {"target", {camera.target.x, camera.target.y, camera.target.z}},
+                    {"distance", camera.distance},
+                    {"yaw_deg", camera.yaw_deg},
+                    {"pitch_deg", camera.pitch_deg},
+                    {"fov_y_deg", camera.fov_y_deg},
+                    {"near_plane", camera.near_plane},
+                    {"far_plane", camera.far_plane}};
+}
+
+std::optional<OrbitCamera> Settings::camera(const std::string& scene) const {
+  const auto it = doc_.find("camera");
+  if (it == doc_.end() || !camera_problem(*it).empty() || (*it)["scene"].get<std::string>() != scene) return std::nullopt;
+  const nlohmann::json& c = *it;
+  OrbitCamera camera;
+  camera.target = {c["target"][0].get<float>(), c["target"][1].get<float>(), c["target"][2].get<float>()};
+  camera.distance = c["distance"].get<float>();
+  camera.yaw_deg = c["yaw_deg"].get<float>();
+  camera.pitch_deg = c["pitch_deg"].get<float>();
+  camera.fov_y_deg = c["fov_y_deg"].get<float>();
+  camera.near_plane = c["near_plane"].get<float>();
+  camera.far_plane = c["far_plane"].get<float>();
+  return camera;
+}
 
 std::vector<std::string> Settings::preset_names(int lab) const {
   std::vector<std::string> names;

@@ -1,5 +1,6 @@
-// Settings that are never lost: each lab's parameter values and the user's named presets, in one JSON
-// file with a version field.
+// Settings that are never lost: each lab's parameter values, the user's named presets and the window's
+// camera (with the name of the scene it looked at: another scene opens framed), in one JSON file with a
+// version field.
 //
 //   file      $SHADOWLAB_SETTINGS, else settings.json in the user's config folder: on Linux
 //             $XDG_CONFIG_HOME/shadowlab/, else ~/.config/shadowlab/; on macOS
@@ -11,7 +12,8 @@
 //   bad file  one that cannot be used as a whole (not JSON, not an object, no version number, a version
 //             this build does not know, "labs" not an object, larger than 4 MiB) is moved aside once to
 //             settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
-//   bad entry a lab, its params or presets, or one preset that is not an object, or any value nested
+//   bad entry a lab, its params or presets, or one preset that is not an object, a camera that is not
+//             a camera (see camera_problem), or any value nested
 //             deeper than 32 levels, is dropped alone; the warning names each, every other lab's
 //             settings are kept, the file as it was is copied aside, and the next save writes the rest
 //   unreadable a FIFO, a folder, a file we may not read: defaults, a warning, and nothing is written
@@ -22,11 +24,13 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/light.h"
 #include "renderer/params.h"
 
 namespace shadowlab {
@@ -36,6 +40,11 @@ constexpr int kSettingsVersion = 1;
 // Where settings live (see above); empty when neither SHADOWLAB_SETTINGS nor the variables the
 // folder is made from (XDG_CONFIG_HOME, HOME; APPDATA on Windows) are set.
 std::filesystem::path default_settings_path();
+
+// Why a stored camera cannot be used (empty when it can): it must be an object with a scene name, a
+// target of three finite numbers, a distance, yaw, pitch (within +-90), field of view (1-170 degrees)
+// and near and far planes (0 < near < far), as store_camera writes it.
+std::string camera_problem(const nlohmann::json& camera);
 
 class Settings {
  public:
@@ -62,6 +71,11 @@ class Settings {
   // Resets `params` to defaults and applies the preset. Throws std::invalid_argument for an unknown name.
   std::vector<std::string> load_preset(int lab, const std::string& name, ParamSet& params) const;
   void delete_preset(int lab, const std::string& name);
+
+  // The window's camera, kept for the scene it looked at: store_camera remembers it (in memory),
+  // camera() gives it back for that scene only (nothing for another scene or none stored).
+  void store_camera(const std::string& scene, const OrbitCamera& camera);
+  std::optional<OrbitCamera> camera(const std::string& scene) const;
 
   // Writes the file atomically (creating its folder). Throws std::runtime_error with one line naming
   // the file and the reason when it cannot; the previous file is then left as it was.

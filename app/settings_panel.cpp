@@ -37,6 +37,15 @@ void SettingsSession::autosave(int lab, const ParamSet& params) {
   last_save_ = std::chrono::steady_clock::now();
 }
 
+std::optional<OrbitCamera> SettingsSession::camera(const std::string& scene) const {
+  if (!started_) return std::nullopt;
+  return settings_.camera(scene);
+}
+
+void SettingsSession::keep_camera(const std::string& scene, const OrbitCamera& camera) {
+  if (started_) settings_.store_camera(scene, camera);
+}
+
 void SettingsSession::save_now() {
   try {
     settings_.save();

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "app/settings.h"
@@ -22,6 +23,10 @@ class SettingsSession {
   void leave_lab(int lab, const ParamSet& params);
   // leave_lab, at most every few seconds: a crash loses little, a dragged slider does not hammer the disk.
   void autosave(int lab, const ParamSet& params);
+  // The window's camera: the one kept for this scene (none before start(), for another scene, or
+  // none kept), and the current one to keep (written with the lab's values, by leave_lab and autosave).
+  std::optional<OrbitCamera> camera(const std::string& scene) const;
+  void keep_camera(const std::string& scene, const OrbitCamera& camera);
   // The "Presets" row: a name field, Save, and a Load list of the lab's saved presets.
   void draw_presets(int lab, ParamSet& params);
 

@@ -475,6 +475,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
       app.renderer->poll_shader_files();
       app.split.poll_shader_files();
       app.last_poll = glfwGetTime();
+      app.settings.keep_camera(app.renderer->scene().name, app.camera);
       app.settings.autosave(app.lab->number, app.params);
     }
     if (!app.panel_hidden) draw_panel(app);
@@ -599,6 +600,9 @@ int run_window(const WindowOptions& options) {
     app.bench_plots = std::move(bench);
     app.bench.open = app.bench_plots.has_value();
     app.settings.start();  // only now: a run that failed to start never touches the settings file
+    // The camera kept for this scene, unless --camera chose one.
+    if (options.camera.empty())
+      if (const auto kept = app.settings.camera(scene.name)) app.camera = *kept;
     app.open_lab(*lab);
     for (const auto& a : options.assignments) apply_set_option(app.params, a);  // over the saved values
     glfwSetWindowUserPointer(window, &app);
@@ -612,6 +616,7 @@ int run_window(const WindowOptions& options) {
     }
     glfwSetDropCallback(window, nullptr);
     glfwSetWindowUserPointer(window, nullptr);
+    app.settings.keep_camera(app.renderer->scene().name, app.camera);
     app.settings.leave_lab(app.lab->number, app.params);  // on exit
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());

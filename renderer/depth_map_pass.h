@@ -23,6 +23,7 @@ class DepthMapPass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   void draw_map(PassContext& ctx) override;
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  void lit_constants(const ParamSet& params, LitConstants& out) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }
   std::vector<float> read_depth(int* size) const override;

@@ -62,9 +62,11 @@ bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, Light
   for (LitVariant variant : variants)
     for (bool gbuffer : {false, true}) {
       if (gbuffer && !writes_gbuffer(variant, true)) continue;
-      Program& p = programs_[{variant, gbuffer}];
-      p.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant));
-      ok = p.program.rebuild() && ok;
+      Slot& slot = programs_[{variant, gbuffer}];
+      slot.specialised.clear();  // built from the old includes; made again when drawn
+      slot.failed.clear();
+      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant));
+      ok = slot.generic.program.rebuild() && ok;
     }
   return ok;
 }
@@ -76,7 +78,38 @@ void LitPass::keep_only(const std::vector<LitVariant>& variants) {
 }
 
 void LitPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
-  for (auto& [key, p] : programs_) f(p.program);
+  for (auto& [key, slot] : programs_) {
+    f(slot.generic.program);
+    for (auto& [constants, p] : slot.specialised) f(p->program);
+  }
+}
+
+LitPass::Program& LitPass::program_for(Slot& slot) {
+  // drawn_constants_ is assigned over (not cleared first): its strings keep their storage.
+  const auto generic = [&]() -> Program& {
+    drawn_constants_.clear();
+    return slot.generic;
+  };
+  if (!specialise_ || constants_.empty()) return generic();
+  for (auto& [constants, p] : slot.specialised)
+    if (constants == constants_) {
+      drawn_constants_ = constants_;
+      return *p;
+    }
+  for (const auto& [constants, generation] : slot.failed)
+    if (constants == constants_ && generation == slot.generic.program.generation()) return generic();
+  // First drawn with these constants: the generic program's files (as it was last built) with them in.
+  ProgramDesc desc = slot.generic.program.desc();
+  desc.constants = constants_;
+  auto p = std::make_unique<Program>();
+  p->program.set_desc(std::move(desc));
+  if (!slot.generic.program.valid() || !p->program.rebuild()) {
+    slot.failed.emplace_back(constants_, slot.generic.program.generation());
+    return generic();
+  }
+  drawn_constants_ = constants_;
+  slot.specialised.emplace_back(constants_, std::move(p));
+  return *slot.specialised.back().second;
 }
 
 void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window, GLuint window) {
@@ -122,7 +155,7 @@ void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, 
 void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant) {
   const auto it = programs_.find({variant, writes_gbuffer(variant, ctx.gbuffer)});
   if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
-  Program& p = it->second;
+  Program& p = program_for(it->second);
   if (p.u.generation != p.program.generation()) resolve(p.program, p.u);
   if (variant == LitVariant::RemapView) {
     bind_color_target(framebuffer(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn

@@ -2,11 +2,16 @@
 // technique's visibility ("lab/visibility.glsl"). It owns the view's render targets (colour, depth or
 // depth-stencil, and the G-buffer a check reads: visibility, world positions, normals) and the lit
 // programs, one per variant the shadow pass asks for (see LitVariant), built with the technique's
-// includes and the light type's defines.
+// includes and the light type's defines. Each variant is built generic (every uniform a uniform: what
+// set_features builds and reports errors from) and, when first drawn with constants (the technique's
+// settings, ShadowPass::lit_constants), compiled once more with them as constants: the program a frame
+// draws with is the one for exactly those settings. A specialisation that fails to build (none should:
+// it only turns uniforms into constants) is not retried and the generic program draws instead.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -29,8 +34,13 @@ class LitPass {
   // window's framebuffer (0, which has depth and stencil): no target of its own, no copy; read-backs
   // and present() then have nothing of their own to read.
   void ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window = false, GLuint window = 0);
+  // The constants the next draws compile in (empty, or with specialise off: the generic programs).
+  void use_constants(const LitConstants& constants) { constants_ = constants; }
+  void set_specialise(bool on) { specialise_ = on; }
   // Draws the scene with a variant's program, reading what `shadow` binds.
   void draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant);
+  // The constants the last draw's program was compiled with (empty: the generic program).
+  const LitConstants& drawn_constants() const { return drawn_constants_; }
 
   GLuint framebuffer() const { return to_window_ ? window_ : fbo_.id(); }
   int width() const { return width_; }
@@ -48,12 +58,21 @@ class LitPass {
     ReloadableProgram program;
     LitUniforms u;
   };
+  struct Slot {
+    Program generic;
+    std::vector<std::pair<LitConstants, std::unique_ptr<Program>>> specialised;
+    // Specialisations that did not build from the generic program's generation: the generic one draws.
+    std::vector<std::pair<LitConstants, int>> failed;
+  };
   using Key = std::pair<LitVariant, bool>;  // variant, G-buffer
+  Program& program_for(Slot& slot);
   static void begin(LitVariant variant, bool gbuffer, bool default_framebuffer);
   static void end();
   void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
 
-  std::map<Key, Program> programs_;
+  std::map<Key, Slot> programs_;
+  LitConstants constants_, drawn_constants_;
+  bool specialise_ = true;
   int width_ = 0, height_ = 0;
   bool gbuffer_ = false;
   bool stencil_ = false;

@@ -24,21 +24,21 @@ void ParamSet::declare(ParamSpec spec) {
   }
 }
 
-const ParamSpec* ParamSet::find(const std::string& key) const {
+const ParamSpec* ParamSet::find(std::string_view key) const {
   for (const auto& s : specs_)
     if (s.key == key) return &s;
   return nullptr;
 }
 
-std::size_t ParamSet::index_of(const std::string& key) const {
+std::size_t ParamSet::index_of(std::string_view key) const {
   for (std::size_t i = 0; i < specs_.size(); ++i)
     if (specs_[i].key == key) return i;
-  throw std::out_of_range("unknown parameter '" + key + "'");
+  throw std::out_of_range("unknown parameter '" + std::string(key) + "'");
 }
 
-double ParamSet::get(const std::string& key) const { return values_[index_of(key)]; }
+double ParamSet::get(std::string_view key) const { return values_[index_of(key)]; }
 
-const std::string& ParamSet::get_choice(const std::string& key) const {
+const std::string& ParamSet::get_choice(std::string_view key) const {
   const std::size_t i = index_of(key);
   return specs_[i].choices.at(static_cast<std::size_t>(values_[i]));
 }
@@ -157,9 +157,23 @@ std::vector<std::string> ParamSet::apply_json(const nlohmann::json& values) {
 
 std::vector<std::pair<std::string, double>> ParamSet::values_invalidating(unsigned bits) const {
   std::vector<std::pair<std::string, double>> out;
-  for (std::size_t i = 0; i < specs_.size(); ++i)
-    if (specs_[i].invalidates & bits) out.emplace_back(specs_[i].key, values_[i]);
+  values_invalidating(bits, out);
   return out;
+}
+
+void ParamSet::values_invalidating(unsigned bits, std::vector<std::pair<std::string, double>>& out) const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    if (!(specs_[i].invalidates & bits)) continue;
+    if (n < out.size()) {
+      out[n].first = specs_[i].key;  // the same key as last time: its storage is reused
+      out[n].second = values_[i];
+    } else {
+      out.emplace_back(specs_[i].key, values_[i]);
+    }
+    ++n;
+  }
+  out.resize(n);
 }
 
 }  // namespace shadowlab

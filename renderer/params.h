@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,7 +19,9 @@ enum class ParamKind { Float, Int, Bool, Choice };
 // declared parameter with kInvalidatesShadowMap changed (or the light, scene, targets or programs did),
 // so a parameter the shadow pass reads must declare it; one the lit pass or a view reads must not, or
 // every change of it costs a shadow pass. The other bits say why (the passes check their targets and
-// variants themselves) and always come with kInvalidatesShadowMap: new targets hold no map yet.
+// variants themselves). kInvalidatesTargets always comes with kInvalidatesShadowMap: new targets hold
+// no map yet. kInvalidatesPrograms alone marks a parameter that a lit program is compiled for (a
+// constant, see ShadowPass::lit_constants): a change picks another program, the shadow map stays.
 enum Invalidates : unsigned {
   kInvalidatesNothing = 0,
   kInvalidatesShadowMap = 1u << 0,  // shadow, moment and blur passes
@@ -48,13 +51,15 @@ class ParamSet {
   void declare(ParamSpec spec);
 
   const std::vector<ParamSpec>& specs() const { return specs_; }
-  const ParamSpec* find(const std::string& key) const;
+  // Lookups take a string_view: reading a parameter every frame allocates nothing (a key longer than
+  // std::string's small buffer would, made into a std::string from a literal).
+  const ParamSpec* find(std::string_view key) const;
 
-  double get(const std::string& key) const;  // throws std::out_of_range for an unknown key
-  float get_float(const std::string& key) const { return static_cast<float>(get(key)); }
-  int get_int(const std::string& key) const { return static_cast<int>(get(key)); }
-  bool get_bool(const std::string& key) const { return get(key) != 0.0; }
-  const std::string& get_choice(const std::string& key) const;
+  double get(std::string_view key) const;  // throws std::out_of_range for an unknown key
+  float get_float(std::string_view key) const { return static_cast<float>(get(key)); }
+  int get_int(std::string_view key) const { return static_cast<int>(get(key)); }
+  bool get_bool(std::string_view key) const { return get(key) != 0.0; }
+  const std::string& get_choice(std::string_view key) const;
 
   // Sets a value, clamped to nothing: out of range is an error. Returns the invalidation bits of the
   // change (0 when the value did not change). Throws std::invalid_argument with a one-line message.
@@ -72,11 +77,13 @@ class ParamSet {
   // Key and value of every parameter whose invalidation bits include any of `bits`, in declaration
   // order: what the work those bits stand for depends on (the renderer compares them frame to frame).
   std::vector<std::pair<std::string, double>> values_invalidating(unsigned bits) const;
+  // The same into `out`, reusing its storage (no allocation when it held the same keys before).
+  void values_invalidating(unsigned bits, std::vector<std::pair<std::string, double>>& out) const;
 
  private:
   std::vector<ParamSpec> specs_;
   std::vector<double> values_;
-  std::size_t index_of(const std::string& key) const;
+  std::size_t index_of(std::string_view key) const;
 };
 
 // The renderer's own parameters (renderer_params.cpp); feature sets add theirs and may change these

@@ -53,7 +53,7 @@ void Renderer::set_scene(const Scene& scene) {
 bool Renderer::set_features(const Features& features) {
   const LightType light = features.light ? *features.light : programs_light_;
   const bool ok = build_programs(features, light);
-  shadow_inputs_.reset();
+  shadow_inputs_valid_ = false;
   stats_.moments_negative_variance = -1.0;
   return ok;
 }
@@ -126,7 +126,10 @@ std::string Renderer::shader_warnings() const {
   return out;
 }
 
-void Renderer::invalidate_shadow_map() { shadow_inputs_.reset(); }
+void Renderer::invalidate_shadow_map() { shadow_inputs_valid_ = false; }
+
+void Renderer::set_lit_constants(bool on) { lit_->set_specialise(on); }
+const LitConstants& Renderer::drawn_lit_constants() const { return lit_->drawn_constants(); }
 
 void Renderer::set_timing(TimingMode mode) { timer_->set_mode(mode); }
 TimingMode Renderer::timing() const { return timer_->mode(); }
@@ -149,6 +152,9 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
+  // The lit program compiled for what these parameters use (the technique's few settings as constants).
+  shadow.lit_constants(params, lit_constants_);
+  lit_->use_constants(lit_constants_);
 
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's
   // view needs before it is lit (shadow volumes: the ambient and stencil passes).
@@ -181,17 +187,20 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
 }
 
 void Renderer::update_shadow_map(PassContext& ctx) {
-  ShadowMapInputs inputs = shadow_map_inputs(ctx);
-  if (shadow_inputs_ && *shadow_inputs_ == inputs) return;
+  // Compared in place, in storage kept from frame to frame: a still frame allocates nothing.
+  if (!inputs_scratch_) inputs_scratch_ = std::make_unique<ShadowMapInputs>();
+  if (!shadow_inputs_) shadow_inputs_ = std::make_unique<ShadowMapInputs>();
+  shadow_map_inputs(ctx, *inputs_scratch_);
+  if (shadow_inputs_valid_ && *shadow_inputs_ == *inputs_scratch_) return;
   shadow_->draw_map(ctx);
   ++stats_.shadow_passes;
   // Programs a pass builds on first use (a blur method's) count from now on.
-  shadow_inputs_ = std::make_unique<ShadowMapInputs>(shadow_map_inputs(ctx));
+  shadow_map_inputs(ctx, *shadow_inputs_);
+  shadow_inputs_valid_ = true;
 }
 
-Renderer::ShadowMapInputs Renderer::shadow_map_inputs(const PassContext& ctx) const {
-  ShadowMapInputs in;
-  in.params = ctx.params.values_invalidating(kInvalidatesShadowMap);
+void Renderer::shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const {
+  ctx.params.values_invalidating(kInvalidatesShadowMap, in.params);
   in.light_view = light_.view.view;
   in.light_projection = light_.view.projection;
   in.light_position = light_.position;
@@ -199,8 +208,8 @@ Renderer::ShadowMapInputs Renderer::shadow_map_inputs(const PassContext& ctx) co
   in.cull = ctx.cull;
   in.scene = scene_generation_;
   in.targets = targets_generation_;
+  in.programs.clear();
   shadow_->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
-  return in;
 }
 
 int Renderer::shadow_map_size() const { return shadow_->size(); }

@@ -28,6 +28,7 @@
 #include "renderer/pass_timer.h"
 #include "renderer/scene.h"
 #include "renderer/shader.h"
+#include "renderer/shadow_pass.h"
 #include "renderer/shadow_passes.h"
 #include "renderer/technique_params.h"
 
@@ -103,6 +104,12 @@ class Renderer {
   void set_timing(TimingMode mode);
   TimingMode timing() const;
   bool timers_work() const;  // false on a software rasteriser: its timer queries measure nothing useful
+  // On (the default), the lit pass draws with a program compiled for the technique's settings as
+  // constants (ShadowPass::lit_constants: PCF's kernel and comparison); off, with the generic program
+  // reading them as uniforms. Both draw the same image (tests compare them).
+  void set_lit_constants(bool on);
+  // The constants the last frame's lit program was compiled with (empty: the generic program).
+  const LitConstants& drawn_lit_constants() const;
   // Copies the last frame onto another framebuffer (0: the window), scaled to its size.
   void present(GLuint framebuffer, int width, int height) const;
 
@@ -160,7 +167,7 @@ class Renderer {
   PassContext frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane);
   // Draws the shadow map unless everything it was last drawn from is unchanged.
   void update_shadow_map(PassContext& ctx);
-  ShadowMapInputs shadow_map_inputs(const PassContext& ctx) const;
+  void shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const;
   // Every program of the current features (the programs live behind pointers, so this is const).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
 
@@ -178,9 +185,12 @@ class Renderer {
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   long targets_generation_ = 0;  // bumps whenever the shadow pass reallocates its targets
-  // What the current shadow map was drawn from; empty: draw it on the next frame.
+  // What the current shadow map was drawn from (unless not valid: draw it on the next frame).
   std::unique_ptr<ShadowMapInputs> shadow_inputs_;
+  bool shadow_inputs_valid_ = false;
+  std::unique_ptr<ShadowMapInputs> inputs_scratch_;  // this frame's, compared with shadow_inputs_
 
+  LitConstants lit_constants_;  // this frame's, filled in place
   FrameLight light_;
   glm::mat4 camera_view_{1.0f}, camera_projection_{1.0f};
   int width_ = 0, height_ = 0;

@@ -121,10 +121,10 @@ std::vector<ParamSpec> pcf_param_specs() {
   return {
       {"pcf.kernel", "PCF kernel", ParamKind::Choice, 1.0, 0.0, 4.0,
        "Taps per side of the percentage-closer filter: the comparison is averaged over N x N neighbouring "
-       "texels (3 x 3 in the lecture).", {"1", "3", "5", "7", "9"}},
+       "texels (3 x 3 in the lecture).", {"1", "3", "5", "7", "9"}, kInvalidatesPrograms},
       {"pcf.hardware", "Hardware comparison", ParamKind::Bool, 0.0, 0.0, 1.0,
        "Read through a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE, linear): every tap becomes a bilinear "
-       "2 x 2 PCF for free.", {}},
+       "2 x 2 PCF for free.", {}, kInvalidatesPrograms},
   };
 }
 
@@ -151,10 +151,10 @@ std::vector<ParamSpec> all_technique_specs() {
     all.insert(all.end(), group.begin(), group.end());
   return all;
 }
-const ParamSpec& technique_spec(const std::vector<ParamSpec>& all, const std::string& key) {
+const ParamSpec& technique_spec(const std::vector<ParamSpec>& all, std::string_view key) {
   for (const auto& spec : all)
     if (spec.key == key) return spec;
-  throw std::out_of_range("no technique parameter " + key);
+  throw std::out_of_range("no technique parameter " + std::string(key));
 }
 }  // namespace
 
@@ -165,13 +165,13 @@ std::vector<ParamSpec> technique_param_specs(const std::vector<std::string>& key
   return out;
 }
 
-double technique_param(const ParamSet& params, const std::string& key) {
+double technique_param(const ParamSet& params, std::string_view key) {
   if (params.find(key)) return params.get(key);
   static const std::vector<ParamSpec> all = all_technique_specs();
   return technique_spec(all, key).default_value;
 }
 
-std::string technique_choice(const ParamSet& params, const std::string& key) {
+const std::string& technique_choice(const ParamSet& params, std::string_view key) {
   if (params.find(key)) return params.get_choice(key);
   static const std::vector<ParamSpec> all = all_technique_specs();
   const ParamSpec& spec = technique_spec(all, key);

@@ -152,6 +152,12 @@ struct Expander {
         out << line_directive(index, line_no + 1);
         continue;
       }
+      if (!desc.constants.empty()) {
+        if (std::string constant = uniform_as_constant(line, desc.constants); !constant.empty()) {
+          out << constant << '\n';
+          continue;
+        }
+      }
       out << line << '\n';
     }
     return true;
@@ -175,6 +181,16 @@ ShaderDiagnostic place(std::size_t line, int column, bool is_error, std::string 
 }
 
 }  // namespace
+
+std::string uniform_as_constant(const std::string& line, const std::vector<std::pair<std::string, std::string>>& constants) {
+  if (line.find("uniform") == std::string::npos) return {};
+  static const std::regex uniform_re(R"(^(\s*)uniform\s+(int|uint|bool|float)\s+([A-Za-z_]\w*)\s*;(.*)$)");
+  std::smatch m;
+  if (!std::regex_match(line, m, uniform_re)) return {};
+  for (const auto& [name, value] : constants)
+    if (m[3] == name) return m[1].str() + "const " + m[2].str() + ' ' + name + " = " + m[2].str() + '(' + value + ");" + m[4].str();
+  return {};
+}
 
 std::vector<ShaderDiagnostic> parse_shader_log(const std::string& log, const std::vector<fs::path>& files) {
   // Mesa: "0:12(5): error: message" (or "preprocessor error:"); NVIDIA: "0(12) : error C1008: message";

@@ -64,7 +64,16 @@ struct ProgramDesc {
   IncludeRules rules = {};
   // Outputs of the last vertex-processing stage that transform feedback may capture (interleaved).
   std::vector<std::string> feedback_varyings = {};
+  // Uniforms compiled as constants (name, value): a line declaring one of them alone, `uniform T name;`
+  // with T int, uint, bool or float, becomes `const T name = T(value);` in every file of the stage (a
+  // student's too), so the compiler unrolls the loops and drops the branches the value decides. The
+  // line keeps its number and any comment after it; a name declared any other way stays a uniform.
+  std::vector<std::pair<std::string, std::string>> constants = {};
 };
+
+// `line` with a declaration of one of `constants` made a constant (see ProgramDesc::constants); empty
+// when the line declares none of them. Exposed for tests.
+std::string uniform_as_constant(const std::string& line, const std::vector<std::pair<std::string, std::string>>& constants);
 
 struct ProgramBuild {
   GlProgram program;  // empty on failure

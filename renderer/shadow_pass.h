@@ -44,6 +44,11 @@ struct LitUniforms {
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
 };
 
+// Uniforms the lit program may be compiled with as constants (name, value; see ProgramDesc::constants):
+// what a technique's few settings decide per pixel (loop counts, branches), so that the lit pass runs
+// no dead branch and no uniform-bounded loop for what a lab uses.
+using LitConstants = std::vector<std::pair<std::string, std::string>>;
+
 // The lit pass's program variants (the same scene, shader and uniforms; defines differ).
 enum class LitVariant {
   Lit,             // ambient + Lambert scaled by the shadow test's visibility
@@ -117,6 +122,10 @@ class ShadowPass {
   // 3. Binds what the lit pass reads (texture unit 0 is u_shadow_map) and sets the technique's
   // uniforms; leaves texture unit 0 active.
   virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
+  // The uniforms among those that the lit program may take as constants, with these parameters' values
+  // (the same bind_lit_inputs sets); empty by default. Only parameters declaring kInvalidatesPrograms
+  // may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
+  virtual void lit_constants(const ParamSet&, LitConstants& out) const { out.clear(); }
   // 4. The technique's own debug views (after the lit pass), and its map in the corner.
   virtual void draw_views(PassContext&, LitPass&) {}
   virtual void draw_debug_quads(const DebugQuadArea&) {}

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "renderer/params.h"
@@ -26,8 +27,8 @@ std::vector<ParamSpec> volume_param_specs();
 // for an unknown key.
 std::vector<ParamSpec> technique_param_specs(const std::vector<std::string>& keys);
 // The value when the set declares the key, else the declared default.
-double technique_param(const ParamSet& params, const std::string& key);
-std::string technique_choice(const ParamSet& params, const std::string& key);
+double technique_param(const ParamSet& params, std::string_view key);
+const std::string& technique_choice(const ParamSet& params, std::string_view key);
 
 LightType light_type(const ParamSet& params);
 const char* light_type_name(LightType type);

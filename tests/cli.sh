@@ -429,6 +429,20 @@ PY
     [ ! -s "$tmp/err" ] || fail "unexpected warning: $(cat "$tmp/err")"
     python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['labs']['1']; assert p['params']['shadow.bias'] == 0.02 and 'mine' in p['presets'], p" \
       "$SHADOWLAB_SETTINGS" || fail "the lab's value or preset was lost"
+    # The camera is kept with the scene; a run that fails to start (a bad --camera) writes nothing.
+    xvfb-run -a "$bin" --lab 1 --frames 2 --camera "eye=0,1,3 target=0,1,2 fov=40" >/dev/null 2>"$tmp/err" ||
+      fail "camera run failed: $(cat "$tmp/err")"
+    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 40 and abs(c['distance'] - 1) < 1e-5 and c['target'] == [0, 1, 2] and c['scene'], c" \
+      "$SHADOWLAB_SETTINGS" || fail "the camera was not kept: $(cat "$SHADOWLAB_SETTINGS")"
+    cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
+    "$bin" --lab 1 --frames 2 --camera "eye=0,1,3 target=0,1,3" >/dev/null 2>"$tmp/err"; [ $? -eq 2 ] || fail "a bad --camera must exit 2"
+    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" || fail "a run that failed to start changed the settings"
+    # Started again without --camera, the window looks from the kept camera (and keeps it on exit; the
+    # framed camera it would start from otherwise has a 45-degree field of view).
+    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" ||
+      fail "third window run failed: $(cat "$tmp/err")"
+    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 40 and c['target'] == [0, 1, 2], c" \
+      "$SHADOWLAB_SETTINGS" || fail "the kept camera was replaced: $(cat "$SHADOWLAB_SETTINGS")"
     ;;
   check_bad_set)
     expect_error "valid keys:" "$bin" check --lab 1 --set shadow.nope=1

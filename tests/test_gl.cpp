@@ -8,9 +8,11 @@
 #include <fstream>
 #include <random>
 
+#include "labs/lab.h"
 #include "renderer/gl_objects.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/renderer.h"
+#include "tests/alloc_count.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {
@@ -342,6 +344,35 @@ TEST_F(RendererTest, InteractiveTimingWaitsForNothing) {
   const FrameStats& stats = exact.render(params, request(false));
   EXPECT_EQ(stats.gl_finishes, 2 * static_cast<long>(stats.passes.size()));
   EXPECT_GE(stats.blocking_query_reads, static_cast<long>(stats.passes.size()));
+}
+
+// A still frame allocates nothing on the C++ heap: every lab's frame as the window draws it (debug quad
+// hidden, light and camera still, timing off or in the query ring), once the first frames have built
+// what they need (programs, targets, the map). A frame whose light moves is seen to be counted.
+TEST_F(RendererTest, StillFramesAllocateNothing) {
+  FrameRequest req = request(false);
+  for (const Lab& lab : all_labs()) {
+    Renderer r;
+    r.set_scene(scene);
+    ASSERT_TRUE(r.set_features(lab.hooks(Impl::Solution))) << r.shader_error();
+    ParamSet p = lab_params(lab);
+    p.set("view.debug_quad", 0.0);
+    for (TimingMode mode : {TimingMode::Off, TimingMode::Queries}) {
+      r.set_timing(mode);
+      for (int f = 0; f < 6; ++f) r.render(p, req);  // warm-up; the query ring fills
+      const long before = test::allocations();
+      for (int f = 0; f < 10; ++f) r.render(p, req);
+      EXPECT_EQ(test::allocations() - before, 0) << "lab " << lab.number << ", timing " << static_cast<int>(mode);
+    }
+  }
+  // The counter counts: a frame after set_features (new programs are built) allocates.
+  Renderer r;
+  r.set_scene(scene);
+  r.render(params, req);
+  const long before = test::allocations();
+  ASSERT_TRUE(r.set_features({}));
+  r.render(params, req);
+  EXPECT_GT(test::allocations() - before, 0);
 }
 
 }  // namespace

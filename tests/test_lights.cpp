@@ -194,6 +194,53 @@ TEST_F(LightsTest, TargetsExistOnlyWhileALabUsesThem) {
   EXPECT_THROW(r.read_cube_face(0, nullptr), std::logic_error);
 }
 
+// The lit program compiled for PCF's settings (kernel and comparison as constants) draws exactly the
+// image and visibility the generic program (reading them as uniforms) draws: for the renderer's PCF, the
+// stock exercise, and two right answers of the exam corpus written differently, every kernel, both
+// comparisons. Switching back to settings drawn before reuses their program.
+TEST_F(LightsTest, LitProgramCompiledForThePcfSettingsDrawsTheGenericImage) {
+  Renderer r;
+  r.set_scene(scene);
+  const OrbitCamera camera = OrbitCamera::framing(scene.bounds());
+  const std::string answers = std::string(SHADOWLAB_SOURCE_DIR) + "/tests/answers/06_pcf/right/";
+  for (const std::string& file : {std::string("shaders/shadow/pcf.glsl"), std::string("labs/06_pcf/exercise.glsl"),
+                                 answers + "two_loops_step__exercise.glsl", answers + "per_tap_reach_bias__exercise.glsl"}) {
+    Features pcf;
+    pcf.includes["lab/visibility.glsl"] = file;
+    ASSERT_TRUE(r.set_features(pcf)) << r.shader_error();
+    for (const char* kernel : {"1", "3", "5", "9"})
+      for (const char* hardware : {"false", "true"}) {
+        const ParamSet p = lab_set({"shadow.map_size=512", "light.elevation=40",
+                                    (std::string("pcf.kernel=") + kernel).c_str(),
+                                    (std::string("pcf.hardware=") + hardware).c_str()});
+        const std::string what = file + " kernel " + kernel + " hardware " + hardware;
+        r.set_lit_constants(false);
+        r.render(p, request(camera));
+        EXPECT_TRUE(r.drawn_lit_constants().empty()) << what;
+        const auto generic_color = r.read_color();
+        const auto generic_visibility = r.read_visibility();
+        r.set_lit_constants(true);
+        r.render(p, request(camera));
+        const LitConstants expected = {{"u_pcf_radius", std::to_string((kernel[0] - '0') / 2)},
+                                       {"u_pcf_hardware", hardware[0] == 't' ? "1" : "0"}};
+        EXPECT_EQ(r.drawn_lit_constants(), expected) << what;
+        EXPECT_TRUE(r.read_color() == generic_color) << what;
+        const auto visibility = r.read_visibility();
+        ASSERT_EQ(visibility.size(), generic_visibility.size());
+        long differ = 0, partial = 0;
+        for (std::size_t i = 0; i < visibility.size(); ++i) {
+          differ += visibility[i] != generic_visibility[i];
+          partial += visibility[i] > 0.0f && visibility[i] < 1.0f;
+        }
+        EXPECT_EQ(differ, 0) << what;
+        if (file != "labs/06_pcf/exercise.glsl" && (kernel[0] != '1' || hardware[0] == 't')) {
+          EXPECT_GT(partial, 0) << what << ": a filtered edge, so the kernel is seen to act";
+        }
+      }
+  }
+  EXPECT_TRUE(r.shader_error().empty()) << r.shader_error();
+}
+
 TEST_F(LightsTest, GeometryShaderDebugViewsDrawOnlyWhenOn) {
   Renderer r;
   r.set_scene(scene);

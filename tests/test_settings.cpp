@@ -255,6 +255,69 @@ TEST_F(SettingsTest, BadEntriesAreDroppedAloneAndTheRestIsWrittenBack) {
   EXPECT_EQ(backups_of(file).size(), 1u);
 }
 
+// The window's camera is kept with the scene it looked at, round trip exact; another scene gets none.
+TEST_F(SettingsTest, CameraIsKeptForItsScene) {
+  {
+    Settings s = Settings::load(file);
+    EXPECT_FALSE(s.camera("default").has_value()) << "none stored yet";
+    OrbitCamera c = OrbitCamera::looking({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 2.0f}, 45.0f, {{-5, -1, -5}, {5, 2, 5}});
+    c.fov_y_deg = 37.5f;
+    s.store_camera("learnopengl", c);
+    s.store_lab(1, params());
+    s.save();
+  }
+  const Settings s = Settings::load(file);
+  EXPECT_EQ(s.warning(), "");
+  ASSERT_TRUE(s.camera("learnopengl").has_value());
+  const OrbitCamera c = *s.camera("learnopengl");
+  const OrbitCamera expected = OrbitCamera::looking({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 2.0f}, 45.0f, {{-5, -1, -5}, {5, 2, 5}});
+  EXPECT_EQ(c.target, expected.target);
+  EXPECT_EQ(c.eye(), expected.eye());
+  EXPECT_EQ(c.fov_y_deg, 37.5f);
+  EXPECT_EQ(c.near_plane, expected.near_plane);
+  EXPECT_EQ(c.far_plane, expected.far_plane);
+  EXPECT_FALSE(s.camera("default").has_value()) << "a camera is for the scene it looked at";
+}
+
+// A stored camera that is not one is dropped alone (the labs' values stay), named in the warning, and
+// the file as it was is kept aside.
+TEST_F(SettingsTest, BadCameraIsDroppedAlone) {
+  fs::create_directories(file.parent_path());
+  const std::string good = R"("target": [0, 0, 0], "distance": 3, "yaw_deg": 0, "pitch_deg": 10, "fov_y_deg": 45, "near_plane": 0.1, "far_plane": 50)";
+  struct Case {
+    std::string camera, why;
+  };
+  const Case cases[] = {{"[1, 2]", "is not an object"},
+                        {"{" + good + "}", "has no scene name"},
+                        {R"({"scene": "default", "target": [0, 0], "distance": 3})", "has no target"},
+                        {R"({"scene": "default", "target": [0, "x", 0], "distance": 3})", "not three finite numbers"},
+                        {R"({"scene": "default", "target": [0, 0, 0], "distance": 3})", "lacks a finite"},
+                        {R"({"scene": "default", "target": [0, 0, 0], "distance": -3, "yaw_deg": 0, "pitch_deg": 10, "fov_y_deg": 45, "near_plane": 0.1, "far_plane": 50})", "distance"},
+                        {R"({"scene": "default", "target": [0, 0, 0], "distance": 3, "yaw_deg": 0, "pitch_deg": 100, "fov_y_deg": 45, "near_plane": 0.1, "far_plane": 50})", "pitch"},
+                        {R"({"scene": "default", "target": [0, 0, 0], "distance": 3, "yaw_deg": 0, "pitch_deg": 10, "fov_y_deg": 0, "near_plane": 0.1, "far_plane": 50})", "field of view"},
+                        {R"({"scene": "default", "target": [0, 0, 0], "distance": 3, "yaw_deg": 0, "pitch_deg": 10, "fov_y_deg": 45, "near_plane": 5, "far_plane": 1})", "near < far"}};
+  for (const auto& c : cases) {
+    fs::remove_all(file.parent_path());
+    fs::create_directories(file.parent_path());
+    const std::string text = R"({"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.02}}}, "camera": )" + c.camera + "}";
+    write_all(file, text);
+    Settings s = Settings::load(file);
+    EXPECT_NE(s.warning().find("the camera " ), std::string::npos) << c.camera << ": " << s.warning();
+    EXPECT_NE(s.warning().find(c.why), std::string::npos) << c.camera << ": " << s.warning();
+    EXPECT_FALSE(s.camera("default").has_value()) << c.camera;
+    ASSERT_EQ(backups_of(file).size(), 1u) << c.camera;
+    EXPECT_EQ(read_all(backups_of(file)[0]), text);
+    ParamSet p = params();
+    EXPECT_TRUE(s.apply_lab(1, p).empty());
+    EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.02) << "the labs' values stay";
+  }
+  write_all(file, R"({"version": 1, "labs": {}, "camera": {"scene": "default", )" + good + "}}");
+  const Settings s = Settings::load(file);
+  EXPECT_EQ(s.warning(), "");
+  ASSERT_TRUE(s.camera("default").has_value());
+  EXPECT_FLOAT_EQ(s.camera("default")->distance, 3.0f);
+}
+
 // A value nested 100,000 deep (a 200 KB file) used to crash every start: it is dropped alone, the
 // rest kept. A file that is nothing but nesting is moved aside once.
 TEST_F(SettingsTest, DeepNestingIsDroppedNotCrashedOn) {

@@ -149,6 +149,21 @@ TEST_F(GlTest, EveryLabsBrokenExerciseIsReportedByTheRenderer) {
   EXPECT_GE(graded, 10);  // labs 0, 1, 3 (two files), 4-9
 }
 
+// A uniform compiled as a constant (the lit program for a lab's settings): only a line declaring that
+// uniform alone becomes a constant of the same type, keeping its indentation and trailing comment.
+TEST(ShaderConstants, OnlyALoneDeclarationOfTheNameBecomesAConstant) {
+  const std::vector<std::pair<std::string, std::string>> c = {{"u_pcf_radius", "2"}, {"u_pcf_hardware", "1"}};
+  EXPECT_EQ(uniform_as_constant("uniform int u_pcf_radius;    // (N - 1) / 2", c),
+            "const int u_pcf_radius = int(2);    // (N - 1) / 2");
+  EXPECT_EQ(uniform_as_constant("  uniform bool u_pcf_hardware ;", c), "  const bool u_pcf_hardware = bool(1);");
+  EXPECT_EQ(uniform_as_constant("uniform float u_pcf_radius;", c), "const float u_pcf_radius = float(2);");
+  EXPECT_EQ(uniform_as_constant("uniform int u_pcf_radius2;", c), "");
+  EXPECT_EQ(uniform_as_constant("uniform int u_pcf_radius, u_other;", c), "");
+  EXPECT_EQ(uniform_as_constant("// uniform int u_pcf_radius;", c), "");
+  EXPECT_EQ(uniform_as_constant("uniform sampler2D u_pcf_radius;", c), "");
+  EXPECT_EQ(uniform_as_constant("uniform int u_blur_radius;", c), "");
+}
+
 TEST(ShaderLog, EveryCommonDriverFormatIsPlaced) {
   const std::vector<fs::path> files = {"shaders/lit.frag", "labs/06_pcf/exercise.glsl"};
   const int line = kShaderLineStride + 12;
