@@ -227,15 +227,22 @@ json grade_lab(const Run& run, const Lab& lab, const std::string& student, const
     const fs::path check_json = dir / (lab_stem(lab.number) + ".check.json");
     const fs::path log = dir / (lab_stem(lab.number) + ".log");
     const fs::path images = dir / lab_stem(lab.number);
+    // The check's temporary files (lab 2's compiled exercise) go to a folder of the student's own, emptied
+    // before and after: a check killed at a limit, or a grading run killed outright, leaves nothing in /tmp,
+    // and the next run starts clean.
+    const fs::path scratch = dir / (lab_stem(lab.number) + ".tmp");
     std::error_code ec;
     fs::remove(check_json, ec);
     fs::remove_all(images, ec);
+    fs::remove_all(scratch, ec);
+    fs::create_directories(scratch, ec);
     const std::vector<std::string> argv = {run.self.string(), "check", "--lab", std::to_string(lab.number),
                                            "--impl", "exercise", "--submission", root.string(),
                                            "--json", check_json.string(), "--out", images.string()};
     const platform::ChildLimits limits{run.options.timeout, static_cast<std::uint64_t>(run.options.memory_mb) << 20,
                                        run.options.cpu_time};
-    const platform::ChildOutcome o = platform::run_child(argv, limits, log);
+    const platform::ChildOutcome o = platform::run_child(argv, limits, log, {{"TMPDIR", scratch.string()}});
+    fs::remove_all(scratch, ec);
     classify(run, o, check_json, log, record);
     record["seconds"] = o.seconds;
     record["cpu_seconds"] = o.cpu_seconds;
@@ -263,7 +270,12 @@ int grade_submission(const Run& run, const std::string& path) {
   try {
     if (is_archive_name(path) && fs::is_regular_file(path)) {
       submission["kind"] = "archive";
-      unpacked = platform::make_private_temp_dir("shadowlab-grade-" + name);
+      // Unpacked into the student's own output folder (this task's alone), not /tmp: a run killed while
+      // grading leaves it there, and the next run over the same --out removes it before unpacking again.
+      unpacked = dir / "unpacked";
+      fs::remove_all(unpacked, ec);
+      fs::create_directories(unpacked);
+      fs::permissions(unpacked, fs::perms::owner_all, ec);
       unpack_archive(path, unpacked);
       root = find_project_root(unpacked);
     } else {

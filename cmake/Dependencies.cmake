@@ -6,6 +6,7 @@
 #   shadowlab::embree    Embree 3 or 4; SHADOWLAB_EMBREE_MAJOR says which
 #   shadowlab::epoxy     libepoxy (GL entry points under GLX, WGL, CGL and EGL)
 #   shadowlab::md4c      md4c, the Markdown parser of the panel's lab texts
+#   shadowlab::archive   libarchive, which unpacks submitted zip and tar archives (`shadowlab grade`)
 #
 # Each is looked up first as the CMake package its project exports (what vcpkg, Homebrew and most Linux
 # distributions install), then through Debian's pkg-config files or headers as the fallback. glfw3,
@@ -145,6 +146,12 @@ if(NOT _found)
   find_package(md4c CONFIG REQUIRED)
   target_link_libraries(shadowlab_dep_md4c INTERFACE md4c::md4c)
 endif()
+
+# --- libarchive -------------------------------------------------------------------------------------------
+# CMake's own FindLibArchive (LibArchive::LibArchive, CMake >= 3.17) finds Debian's, vcpkg's and Homebrew's.
+shadowlab_interface(archive)
+find_package(LibArchive 3 REQUIRED)
+target_link_libraries(shadowlab_dep_archive INTERFACE LibArchive::LibArchive)
 
 # --- EGL (headless GL without a display; Linux) ----------------------------------------------------------
 # Where EGL is missing, or SHADOWLAB_EGL is OFF, headless runs use a hidden GLFW window instead.

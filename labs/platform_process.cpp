@@ -1,4 +1,5 @@
-// POSIX and Linux implementation of labs/platform_process.h (see there for the other systems).
+// Linux implementation of labs/platform_process.h (POSIX with Linux's prctl, seccomp, pipe2 and
+// /proc); on other systems the fallback at the end says that grading submissions needs Linux.
 #include "labs/platform_process.h"
 
 #include <cerrno>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#if defined(__linux__)
 #include <fcntl.h>
 #include <poll.h>
 #include <seccomp.h>
@@ -334,3 +336,63 @@ fs::path make_private_temp_dir(const std::string& prefix) {
 }
 
 }  // namespace shadowlab::platform
+
+#else  // not Linux
+
+#include <random>
+
+namespace shadowlab::platform {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string needs_linux(const std::string& what) {
+  return what + ": grading submissions runs student code in confined processes, which needs Linux "
+                "(a Linux machine, WSL on Windows, or a Linux cluster); this build is not for Linux";
+}
+}  // namespace
+
+ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&,
+                       const std::map<std::string, std::string>&) {
+  ChildOutcome outcome;
+  outcome.error = needs_linux(argv.empty() ? "run" : argv.front());
+  return outcome;
+}
+
+PipeChild::~PipeChild() = default;
+
+bool PipeChild::start(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&, std::string& error) {
+  error = needs_linux(argv.empty() ? "start" : argv.front());
+  return false;
+}
+
+PipeChild::Io PipeChild::call(const void*, std::size_t, void*, std::size_t, double) { return Io::Closed; }
+
+ChildOutcome PipeChild::finish() { return outcome_; }
+
+bool confine_to_computing(std::string& error) {
+  error = needs_linux("confining a program to computing");
+  return false;
+}
+
+std::string describe_signal(int signal) { return "signal " + std::to_string(signal); }
+
+void die_with_parent() {}
+
+fs::path self_executable() { throw std::runtime_error(needs_linux("shadowlab grade")); }
+
+fs::path make_private_temp_dir(const std::string& prefix) {
+  std::random_device random;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const fs::path dir = fs::temp_directory_path() / (prefix + "-" + std::to_string(random()));
+    if (fs::create_directory(dir)) {
+      fs::permissions(dir, fs::perms::owner_all);
+      return dir;
+    }
+  }
+  throw std::runtime_error(prefix + ": cannot create a temporary folder in " + fs::temp_directory_path().string());
+}
+
+}  // namespace shadowlab::platform
+
+#endif

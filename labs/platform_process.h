@@ -4,8 +4,9 @@
 //
 // The implementation is POSIX (fork/exec, setrlimit, process groups, wait4) with Linux extras
 // (prctl's parent-death signal, seccomp through libseccomp). Each function says what it would be
-// elsewhere; grading runs on the TA's Linux machine or a Linux cluster, students' Windows and macOS
-// machines only build the window and run `check` on their own work, which needs none of this.
+// elsewhere; grading runs on the TA's Linux machine (or WSL) or a Linux cluster, students' Windows and
+// macOS machines only build the window and run `check` on their own work, which needs none of this:
+// there the functions build (platform_process.cpp's fallback) and say that grading needs Linux.
 #pragma once
 
 #include <cstddef>

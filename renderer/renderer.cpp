@@ -63,6 +63,13 @@ bool Renderer::set_features(const Features& features) {
   return ok;
 }
 
+namespace {
+// Programs built from the same files report the same text: each text is said once.
+void append_once(std::string& out, const std::string& text) {
+  if (!text.empty() && out.find(text) == std::string::npos) out += text;
+}
+}  // namespace
+
 bool Renderer::build_programs(const Features& features, LightType light) {
   const ShadowPassEntry& entry = shadow_pass_entry(features.technique, light);
   IncludeMap includes;
@@ -81,10 +88,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   if (!ok) {
     // Kept now: a fresh pass that failed is dropped, and shader_error() walks only the kept passes.
     failed_build_error_.clear();
-    const auto collect = [&](ReloadableProgram& program) {
-      if (!program.error().empty() && failed_build_error_.find(program.error()) == std::string::npos)
-        failed_build_error_ += program.error();
-    };
+    const auto collect = [&](ReloadableProgram& program) { append_once(failed_build_error_, program.error()); };
     lit_->for_each_program(collect);
     pass.for_each_program(collect);
     return false;
@@ -117,17 +121,13 @@ bool Renderer::poll_shader_files() {
 std::string Renderer::shader_error() const {
   if (!failed_build_error_.empty()) return failed_build_error_;
   std::string out;
-  for_each_program([&](ReloadableProgram& program) {
-    if (!program.error().empty() && out.find(program.error()) == std::string::npos) out += program.error();
-  });
+  for_each_program([&](ReloadableProgram& program) { append_once(out, program.error()); });
   return out;
 }
 
 std::string Renderer::shader_warnings() const {
   std::string out;
-  for_each_program([&](ReloadableProgram& program) {
-    if (!program.warnings().empty() && out.find(program.warnings()) == std::string::npos) out += program.warnings();
-  });
+  for_each_program([&](ReloadableProgram& program) { append_once(out, program.warnings()); });
   return out;
 }
 

@@ -131,6 +131,30 @@ PY
     [ -z "$(ls -A "$tmp/t")" ] || fail "temporary folders left behind: $(ls -A "$tmp/t")"
     true
     ;;
+  grade_killed_cleanup)  # a run killed mid-lab leaves nothing in the temporary folder; the next run cleans up after it
+    lab2 endless endless_loop
+    (cd "$tmp/subs/endless" && zip -qr "$tmp/endless.zip" labs) || fail "zip"
+    mkdir "$tmp/t"
+    TMPDIR="$tmp/t" "$bin" grade "$tmp/endless.zip" --lab 2 --out "$tmp/out" >"$tmp/log" 2>&1 &
+    pid=$!
+    # Killed while lab 2's program runs (its answer never comes): the archive is unpacked, the exercise built.
+    for _ in $(seq 600); do
+      pgrep -f -- "--json $tmp/out" >/dev/null && [ -d "$tmp/out/students/endless/lab_02.tmp" ] && break
+      sleep 0.1
+    done
+    sleep 2
+    kill -9 "$pid"; wait "$pid" 2>/dev/null
+    sleep 1
+    pgrep -f -- "--json $tmp/out" >/dev/null && fail "a check process outlived the killed grade"
+    [ -z "$(ls -A "$tmp/t")" ] || fail "temporary folders left in TMPDIR by the killed run: $(ls -A "$tmp/t")"
+    [ -d "$tmp/out/students/endless/unpacked" ] || fail "the killed run's unpacked archive is not where the next run looks"
+    TMPDIR="$tmp/t" "$bin" grade "$tmp/endless.zip" --lab 2 --out "$tmp/out" >"$tmp/log" 2>&1
+    [ $? -eq 1 ] || fail "rerun: exit $? (expected 1): $(cat "$tmp/log")"
+    [ "$(status_of "$tmp/out" endless 2)" = timed_out ] || fail "rerun: $(status_of "$tmp/out" endless 2): $(message_of "$tmp/out" endless 2)"
+    left=$(cd "$tmp/out/students/endless" && ls -A | grep -E '^(unpacked|lab_02\.tmp)$')
+    [ -z "$left" ] || fail "the rerun left $left behind"
+    [ -z "$(ls -A "$tmp/t")" ] || fail "temporary folders left in TMPDIR: $(ls -A "$tmp/t")"
+    ;;
   grade_links)  # a folder submission whose exercise is a link, or lies in a linked folder: refused, nothing read
     lab2 right right
     mkdir -p "$tmp/subs/filelink/labs/02_ortho_fit" "$tmp/subs/dirlink/labs"
