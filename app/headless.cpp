@@ -266,6 +266,9 @@ int run_render(const RenderOptions& options) {
             {"context", context->platform()},
             {"fallbacks", gl_fallbacks()}}},
           {"matrix_layout", "column-major"},
+          // The camera and light matrices take positions relative to this world point (scene.local_origin;
+          // the world's origin when it is off); position.npy is in the scene's own frame.
+          {"local_origin", {renderer.placement().origin().x, renderer.placement().origin().y, renderer.placement().origin().z}},
       };
       write_text_atomic(out / "render.json", j.dump(2) + "\n");
       std::printf("wrote %s/final.png, shadow_map.png, render.json%s (%zu triangles, %.1f ms CPU)\n",

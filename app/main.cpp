@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/bench_cmd.h"
+#include "app/bench_placement.h"
 #include "app/check_cmd.h"
 #include "app/exit_codes.h"
 #include "app/grade_cmd.h"
@@ -138,6 +139,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
   bench_cmd->add_flag("--frame-cost", bench.frame_cost_only,
                       "Only the frame-cost figures: each lab's frame against its lit pass, lab 6 against the bare two-pass baseline");
+  bench_cmd->add_flag("--placement", bench.placement_only,
+                      "Only the placement figures: every technique's error at offsets 1e3..1e7 and scales 1e-4..1e5 "
+                      "against the origin's, and the frame cost with the local origin against without it");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
   bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out); 3 runtime error.\n"
@@ -183,7 +187,7 @@ int main(int argc, char** argv) {
 
   if (*render_cmd) return shadowlab::run_render(render);
   if (*check_cmd) return shadowlab::run_check(check);
-  if (*bench_cmd) return shadowlab::run_bench(bench);
+  if (*bench_cmd) return bench.placement_only ? shadowlab::run_placement_bench(bench) : shadowlab::run_bench(bench);
   if (*grade_cmd) return shadowlab::run_grade(grade);
   if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json);
   return shadowlab::run_window(window_options);

@@ -247,7 +247,9 @@ OracleLight oracle_light(const Renderer& renderer) {
   light.to_light = renderer.to_light();
   light.image_x = renderer.light_view().image_x;
   light.image_y = renderer.light_view().image_y;
-  light.texel_world_size = renderer.light_view().world_size.x / static_cast<float>(renderer.shadow_map_size());
+  // The light's box is fitted in the local frame, scaled with the scene: the oracle works in the scene's own.
+  light.texel_world_size = static_cast<float>(renderer.light_view().world_size.x / renderer.placement().scale /
+                                              static_cast<double>(renderer.shadow_map_size()));
   return light;
 }
 

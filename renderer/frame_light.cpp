@@ -4,15 +4,17 @@
 
 namespace shadowlab {
 
-void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit) {
+void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit,
+                        const Placement& placement) {
   type = pinned ? *pinned : light_type(params);
   to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
   if (type == LightType::Directional) {
     view = fit ? fit(bounds, to_light) : fit_light_ortho(bounds, to_light);
     return;
   }
-  position = {technique_param(params, "light.position_x"), technique_param(params, "light.position_y"),
-              technique_param(params, "light.position_z")};
+  scene_position = {technique_param(params, "light.position_x"), technique_param(params, "light.position_y"),
+                    technique_param(params, "light.position_z")};
+  position = placement.to_local(scene_position);
   const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
   const glm::vec3 aim = centre - position;
   spot_direction = glm::length(aim) > 1e-6f ? glm::normalize(aim) : glm::vec3(0, -1, 0);

@@ -10,6 +10,7 @@
 
 #include "renderer/light.h"
 #include "renderer/params.h"
+#include "renderer/placement.h"
 #include "renderer/technique_params.h"
 
 namespace shadowlab {
@@ -22,7 +23,8 @@ struct FrameLight {
   // Toward a directional light; for spot and point lights, from the scene's centre toward the light
   // (for display: their lit pass uses the position).
   glm::vec3 to_light{0, 1, 0};
-  glm::vec3 position{0.0f};  // spot and point lights, at light.position_*
+  glm::vec3 position{0.0f};  // spot and point lights: light.position_* in the local frame (what the GPU uses)
+  glm::vec3 scene_position{0.0f};  // the same in the scene's frame (light.position_* as given)
   glm::vec3 spot_direction{0, -1, 0};
   float spot_cone_deg = 45.0f;
   LightView view;        // the shadow map's view and projection (a point light: face 0's, for display)
@@ -30,8 +32,11 @@ struct FrameLight {
 
   // From the parameters: `pinned` is a feature's fixed light type (else light.type decides), `fit` a
   // directional light's fit (empty: fit_light_ortho). A spot aims at the scene's centre with the
-  // half-angle light.cone_deg. Fields the new type does not use keep their last values.
-  void update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit);
+  // half-angle light.cone_deg. Fields the new type does not use keep their last values. `bounds` is the
+  // scene's box in the local frame; the position parameters are converted with `placement`, so every
+  // matrix here (and a lab's fit) is computed on the small numbers of the local frame.
+  void update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit,
+              const Placement& placement = {});
 
   // xyz the position (w = 1) or the direction toward the light (w = 0).
   glm::vec4 vector4() const;

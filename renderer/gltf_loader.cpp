@@ -259,6 +259,9 @@ class Loader {
     scene.meshes.reserve(draws.size());
     for (const Draw& d : draws) scene.meshes.push_back(build_mesh(d));
     if (scene.meshes.empty()) fail("no triangle meshes to draw");
+    // World positions in double; the float vertices relative to the scene's origin (renderer/placement.h).
+    scene.origin = far_origin(scene.meshes, draws);
+    for (std::size_t i = 0; i < draws.size(); ++i) place_mesh(scene.meshes[i], draws[i], scene.origin);
     return scene;
   }
 
@@ -901,7 +904,6 @@ class Loader {
     const auto& gmesh = model_.meshes[static_cast<std::size_t>(d.mesh)];
     const auto& prim = gmesh.primitives[static_cast<std::size_t>(d.primitive)];
     const auto& node = model_.nodes[static_cast<std::size_t>(d.node)];
-    const std::string where = "mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(d.primitive);
 
     Mesh mesh;
     // Names come from the file: kept printable and short, since the panel and render.json show them.
@@ -949,8 +951,35 @@ class Loader {
     }
     if (mesh.normals.empty()) compute_normals(mesh);
 
+    return mesh;
+  }
+
+  // A model far from the world's origin for its size (a georeferenced site: a few hundred units at a
+  // million) would lose its shape in float world coordinates: its vertices are kept relative to the
+  // centre of its box instead, found in double. Others keep the world's origin (their file's coordinates).
+  static glm::dvec3 far_origin(const std::vector<Mesh>& meshes, const std::vector<Draw>& draws) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+      for (const glm::vec3& p : meshes[i].positions) {
+        const glm::dvec3 w(draws[i].world * glm::dvec4(glm::dvec3(p), 1.0));
+        if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z)) continue;  // refused in place_mesh
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
+      }
+    if (!(lo.x <= hi.x)) return glm::dvec3(0.0);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const double distance = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    // float keeps 2^-24 of the distance: at 16 extents that is 1e-6 of the model's size.
+    return distance > kFarOriginExtents * extent ? centre : glm::dvec3(0.0);
+  }
+  static constexpr double kFarOriginExtents = 16.0;
+
+  // The node's world transform, less the scene's origin (in double), applied to the mesh.
+  void place_mesh(Mesh& mesh, const Draw& d, const glm::dvec3& origin) const {
+    const std::string where = "mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(d.primitive);
     // Skins and morph targets are ignored: the lab draws the rest pose under the node's transform.
-    transform_mesh(mesh, glm::mat4(d.world));
+    transform_mesh(mesh, glm::mat4(glm::translate(glm::dmat4(1.0), -origin) * d.world));
     // The camera and light fits square the scene's extent (in float): a scene wider than ~1.8e19 gives
     // NaN matrices and a blank frame. Far below that, max_coordinate keeps the maths and the depth
     // precision meaningful.
@@ -959,7 +988,8 @@ class Loader {
       const glm::vec3& p = mesh.positions[k];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         fail(node_name(d.node) + "'s transform takes " + where + " to non-finite positions");
-      const double largest = std::max({std::abs(double{p.x}), std::abs(double{p.y}), std::abs(double{p.z})});
+      const glm::dvec3 world = origin + glm::dvec3(p);
+      const double largest = std::max({std::abs(world.x), std::abs(world.y), std::abs(world.z)});
       if (largest > limit) {
         char figures[64];
         std::snprintf(figures, sizeof figures, "%.3g, beyond the limit of %.3g", largest, limit);
@@ -967,7 +997,6 @@ class Loader {
              " (LoadLimits::max_coordinate)");
       }
     }
-    return mesh;
   }
 
   fs::path path_;

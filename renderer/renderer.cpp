@@ -44,9 +44,14 @@ Renderer::~Renderer() = default;
 
 void Renderer::set_scene(const Scene& scene) {
   scene_ = scene;
-  gpu_scene_ = std::make_unique<GpuScene>(scene_);
+  upload_scene();
+}
+
+void Renderer::upload_scene() {
+  local_scene_ = shadowlab::local_scene(scene_, placement_);
+  gpu_scene_ = std::make_unique<GpuScene>(local_scene_);
   ++scene_generation_;
-  shadow_->set_scene(scene_);
+  shadow_->set_scene(local_scene_);
   views_->set_scene();
 }
 
@@ -74,7 +79,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   std::unique_ptr<ShadowPass> fresh;
   if (shadow_entry_ != &entry) {
     fresh = entry.make();
-    if (gpu_scene_) fresh->set_scene(scene_);
+    if (gpu_scene_) fresh->set_scene(local_scene_);
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
@@ -144,7 +149,14 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
 
   // 1. The light: its type, direction or position from the sliders, its view and projection from the
   // features' fit (directional), the spot's cone or the point light's six faces.
-  light_.update(params, scene_.bounds(), features_.light, features_.light_fit);
+  // In the local frame: the scene converted once per placement, the light's position each frame.
+  Placement placement = placement_from(params);
+  placement.offset += placement.scale * scene_.origin;  // the scene's own origin, moved and scaled with it
+  if (!(placement == placement_)) {
+    placement_ = placement;
+    upload_scene();
+  }
+  light_.update(params, local_scene_.bounds(), features_.light, features_.light_fit, placement_);
   if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape shape = shadow.shape();
@@ -175,14 +187,14 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
 PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane) {
   width_ = request.width;
   height_ = request.height;
-  camera_view_ = request.camera.view();
+  const OrbitCamera camera = to_local(request.camera, placement_);
+  camera_view_ = camera.view();
   const float aspect = static_cast<float>(request.width) / static_cast<float>(request.height);
   // Shadow volumes reach to infinity: the camera's far plane goes there too (third row 0, 0, -1, -2n).
-  camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(request.camera.fov_y_deg), aspect,
-                                                                     request.camera.near_plane)
-                                          : request.camera.projection(aspect);
+  camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(camera.fov_y_deg), aspect, camera.near_plane)
+                                          : camera.projection(aspect);
   const int cull = features_.shadow_cull_override ? features_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
-  return {scene_,        *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
+  return {local_scene_,  *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
           camera_view_, camera_projection_, infinite_far_plane, request.gbuffer};
 }
 
@@ -217,7 +229,12 @@ int Renderer::shadow_map_size() const { return shadow_->size(); }
 void Renderer::present(GLuint framebuffer, int width, int height) const { lit_->present(framebuffer, width, height); }
 std::vector<std::uint8_t> Renderer::read_color() const { return lit_->read_color(); }
 std::vector<float> Renderer::read_visibility() const { return lit_->read_visibility(); }
-GBuffer Renderer::read_gbuffer() const { return lit_->read_gbuffer(); }
+GBuffer Renderer::read_gbuffer() const {
+  GBuffer g = lit_->read_gbuffer();
+  if (!placement_.is_identity())
+    for (glm::vec3& p : g.position) p = placement_.to_scene(p);
+  return g;
+}
 std::vector<float> Renderer::read_shadow_depth(int* size) const { return shadow_->read_depth(size); }
 std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const { return shadow_->image(size); }
 

@@ -26,6 +26,7 @@
 #include "renderer/oracle.h"
 #include "renderer/params.h"
 #include "renderer/pass_timer.h"
+#include "renderer/placement.h"
 #include "renderer/scene.h"
 #include "renderer/shader.h"
 #include "renderer/shadow_pass.h"
@@ -83,8 +84,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
+  // The scene in its own frame. The scene.* parameters place it in the world (renderer/placement.h);
+  // the GPU gets it in the local frame, converted in double whenever the placement changes.
   void set_scene(const Scene& scene);
   const Scene& scene() const { return scene_; }
+  // The last frame's placement, and the scene as the GPU has it (positions relative to the local origin).
+  const Placement& placement() const { return placement_; }
+  const Scene& local_scene() const { return local_scene_; }
   // Switches to these features: rebuilds the programs with their includes (and the shadow pass, when
   // the technique or light type changes); returns false and keeps the old features on error.
   bool set_features(const Features& features);
@@ -114,7 +120,8 @@ class Renderer {
   void present(GLuint framebuffer, int width, int height) const;
 
   // Read-backs of the last frame. Colour is RGBA8 top row first (PNG order); the others are bottom row
-  // first (GL order), the layout GBuffer and Truth use.
+  // first (GL order), the layout GBuffer and Truth use. The G-buffer's positions are in the scene's own
+  // frame (the oracle's): the GPU's local positions converted back in double.
   std::vector<std::uint8_t> read_color() const;
   std::vector<float> read_visibility() const;
   GBuffer read_gbuffer() const;
@@ -132,6 +139,7 @@ class Renderer {
   // distance faces in a 3 x 3 grid; with shadow volumes (no map) a 16 x 16 grey placeholder.
   std::vector<std::uint8_t> shadow_map_image(int* size) const;
 
+  // The matrices below are the ones the GPU uses: in the local frame (world - placement().origin()).
   const LightView& light_view() const { return light_.view; }
   int shadow_map_size() const;  // texels per side of the current shadow (or moments) map
   glm::vec3 to_light() const { return light_.to_light; }
@@ -144,7 +152,7 @@ class Renderer {
   // The light of the last frame. For spot and point lights to_light() points from the scene's centre
   // toward the light (for display); the lit pass uses the position.
   LightType light_type() const { return light_.type; }
-  glm::vec3 light_position() const { return light_.position; }
+  glm::vec3 light_position() const { return light_.scene_position; }  // the scene's frame
   glm::vec3 spot_direction() const { return light_.spot_direction; }
   float spot_cone_deg() const { return light_.spot_cone_deg; }
   const CubeLightViews& cube_views() const { return light_.cube; }
@@ -171,7 +179,12 @@ class Renderer {
   // Every program of the current features (the programs live behind pointers, so this is const).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
 
+  // Converts scene_ to the local frame of placement_ and uploads it.
+  void upload_scene();
+
   Scene scene_;
+  Placement placement_;
+  Scene local_scene_;  // scene_ in the local frame of placement_ (what gpu_scene_ and the passes hold)
   std::unique_ptr<GpuScene> gpu_scene_;
   long scene_generation_ = 0;  // bumps with every set_scene
   Features features_;

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "renderer/placement.h"
 #include "renderer/technique_params.h"
 #include "renderer/vsm_params.h"
 
@@ -10,7 +11,7 @@ namespace shadowlab {
 
 std::vector<ParamSpec> renderer_param_specs() {
   const unsigned shadow = kInvalidatesShadowMap;
-  return {
+  std::vector<ParamSpec> specs = {
       {"light.azimuth", "Light azimuth (deg)", ParamKind::Float, 35.0, 0.0, 360.0,
        "Direction of the light around the vertical axis.", {}, shadow},
       {"light.elevation", "Light elevation (deg)", ParamKind::Float, 50.0, 1.0, 90.0,
@@ -53,6 +54,8 @@ std::vector<ParamSpec> renderer_param_specs() {
        "The shadow volumes' silhouette quads and caps, extruded by the geometry shader from adjacency, as "
        "wireframe. Builds the adjacency on first use.", {}},
   };
+  for (ParamSpec& spec : placement_param_specs()) specs.push_back(std::move(spec));
+  return specs;
 }
 
 std::vector<ParamSpec> vsm_param_specs() {

@@ -52,6 +52,11 @@ struct Mesh {
 struct Scene {
   std::string name;  // "default" for the built-in scene, else the file it came from
   std::vector<Mesh> meshes;
+  // Where the vertices' origin stands in the world, in double: a model far from the world's origin keeps
+  // float offsets from the centre of its box here (the glTF loader decides), so its shape survives. The
+  // vertices, the bounds and everything graded are in the scene's own frame (relative to this point);
+  // the renderer places the scene at origin + p (renderer/placement.h).
+  glm::dvec3 origin{0.0};
 
   Bounds bounds() const;
   std::size_t triangle_count() const;

@@ -267,6 +267,24 @@ assert all(r["status"] != "grader_error" for r in ex), [(r["lab"], r["status"]) 
 print("solutions passed:", len(sol), "exercises failed:", sum(r["status"] != "passed" for r in ex))
 PY
     ;;
+  solutions_far_1e6)  # issue 16: every lab's solution passes its check on the scene moved 1e6 along every axis;
+    # without the local origin the same move fails lab 0 (the toggle's "before"; lab 2's check compares its
+    # fit with the fixed box, which breaks as much there, and passes)
+    far=(--set scene.offset_x=-1e6 --set scene.offset_y=1e6 --set scene.offset_z=-1e6)
+    "$bin" check --lab all --impl solution "${far[@]}" --json "$tmp/far.json" >"$tmp/out" 2>"$tmp/err" \
+      || fail "a solution fails at 1e6: $(grep -v '^    ok' "$tmp/out" | head -40) $(cat "$tmp/err")"
+    python3 - "$tmp/far.json" "$src" <<'PY' || fail "verdicts at 1e6"
+import json, pathlib, sys
+labs = json.load(open(sys.argv[1]))["labs"]
+folders = len([d for d in pathlib.Path(sys.argv[2], "labs").glob("[0-9][0-9]_*") if d.is_dir()])
+assert len(labs) == folders, (len(labs), folders)
+assert all(r["status"] == "passed" for r in labs), [(r["lab"], r["status"]) for r in labs]
+assert all(r["parameters"]["scene.offset_y"] == 1e6 for r in labs), "graded where it was asked"
+print("solutions passed at 1e6:", len(labs))
+PY
+    "$bin" check --lab 0 --impl solution "${far[@]}" --set scene.local_origin=false >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "lab 0 without the local origin at 1e6: exit $rc, expected 1: $(cat "$tmp/out" "$tmp/err" | head -40)"
+    ;;
   window_xvfb)
     command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
     xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --frames 5 --screenshot "$tmp/window.png" || fail "window run failed"

@@ -589,6 +589,27 @@ TEST_F(GltfHandMade, GlbChunkLongerThanTheFileIsRefusedBeforeParsing) {
             (dir_ / "bin_overrun.glb").string() + ": GLB container: chunk 1 (BIN) declares 20 bytes, but only 16 remain in the file");
 }
 
+// A georeferenced model: a unit box a million units from the origin. Baked in float world coordinates
+// its corners would round to 1/16 of a unit; the loader keeps the box's centre as the scene's origin (in
+// double) and the vertices relative to it, exact. Near the origin nothing changes.
+TEST_F(GltfHandMade, AModelFarFromTheOriginKeepsItsShape) {
+  const Mesh box = make_box(glm::vec3(0.0f), glm::vec3(0.5f), glm::vec3(1.0f));
+  for (const double far : {0.0, 1.0e6}) {
+    SCOPED_TRACE(far);
+    Doc d;
+    const int indices = d.indices(box.indices, kUnsignedInt);
+    const int mesh = d.mesh({{{"attributes", {{"POSITION", d.vec3s(box.positions)}}}, {"indices", indices}}});
+    d.scene({d.node({{"mesh", mesh}, {"translation", {far + 0.3, 2.0 * far, -far}}})});
+    const Scene scene = load_gltf(d.write(dir_ / "far.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const glm::dvec3 expected_origin = far == 0.0 ? glm::dvec3(0.0) : glm::dvec3(far + 0.3, 2.0 * far, -far);
+    EXPECT_EQ(scene.origin, expected_origin);
+    const glm::vec3 shift = far == 0.0 ? glm::vec3(0.3f, 0.0f, 0.0f) : glm::vec3(0.0f);
+    for (std::size_t k = 0; k < box.positions.size(); ++k)
+      EXPECT_LT(glm::distance(scene.meshes[0].positions[k], box.positions[k] + shift), 1e-6f) << k;
+  }
+}
+
 TEST_F(GltfHandMade, MissingFile) {
   EXPECT_NE(load_error(dir_ / "nowhere.gltf").find("nowhere.gltf: file not found"), std::string::npos);
 }

@@ -130,7 +130,7 @@ RaceCounts race(const fs::path& dir, const std::string& swapped, const std::stri
   for (int i = 0; i < tries; ++i) {
     try {
       const Scene scene = load_gltf(model);
-      const float x = scene.meshes.at(0).positions.at(0).x;
+      const double x = scene.origin.x + scene.meshes.at(0).positions.at(0).x;  // the world's (a far model keeps its origin)
       (x < 50 ? counts.inside : counts.outside) += 1;
     } catch (const LoadError& e) {
       const std::string m = e.what();

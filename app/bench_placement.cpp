@@ -1,0 +1,168 @@
+#include "app/bench_placement.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench_figures.h"
+#include "app/exit_codes.h"
+#include "app/headless.h"
+#include "labs/placement_sweep.h"
+#include "renderer/context.h"
+#include "renderer/gl.h"
+#include "renderer/gltf_loader.h"
+#include "renderer/image_io.h"
+#include "renderer/platform.h"
+#include "renderer/shader.h"
+
+namespace shadowlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 270;  // as the CI test (tests/test_gl_stress.cpp)
+
+// The grid for one technique: the error at each point, the worst difference from the origin's over the
+// offsets and over the scales, and the error without the local origin at 1e6 on the diagonal.
+nlohmann::json sweep_technique(const PlacementTechnique& t, const std::vector<PlacementPoint>& grid) {
+  const Scene scene = make_default_scene();  // the context keeps a reference
+  Renderer renderer;
+  CheckContext ctx(renderer, *find_lab(t.lab), Impl::Solution, scene, {});
+  const PlacementOutcome origin = measure_placement(ctx, t, Placement{}, kWidth, kHeight);
+  double worst_offset = 0.0, worst_scale = 0.0;
+  long non_finite = origin.non_finite;
+  nlohmann::json points = nlohmann::json::array();
+  for (const PlacementPoint& p : grid) {
+    const PlacementOutcome o = measure_placement(ctx, t, p.placement, kWidth, kHeight);
+    const double d = std::abs(o.error - origin.error);
+    (p.placement.scale == 1.0 ? worst_offset : worst_scale) = std::max(p.placement.scale == 1.0 ? worst_offset : worst_scale, d);
+    non_finite += o.non_finite;
+    points.push_back({{"placement", p.label}, {"error", o.error}, {"difference", d}});
+  }
+  Placement naive;
+  naive.offset = glm::dvec3(-1e6, 1e6, -1e6);
+  naive.local_origin = false;
+  const PlacementOutcome off = measure_placement(ctx, t, naive, kWidth, kHeight);
+  return {{"technique", t.name},           {"lab", t.lab},
+          {"error_at_origin", origin.error}, {"worst_difference_offsets", worst_offset},
+          {"worst_difference_scales", worst_scale}, {"error_1e6_without_local_origin", off.error},
+          {"non_finite", non_finite},      {"points", points}};
+}
+
+// Frames of lab 1's solution on the default scene moved 1e6 along the diagonal, with the local origin and
+// without it, in alternating blocks (the first frame after a switch converts and uploads the scene: timed
+// on its own). Each frame redraws the shadow map (the camera turns a little), glFinish included.
+nlohmann::json frame_cost(int frames, int rounds) {
+  Renderer renderer;
+  const Lab& lab = *find_lab(1);
+  const Scene scene = make_default_scene();
+  renderer.set_scene(scene);
+  if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
+  ParamSet params = lab_params(lab);
+  params.set("view.debug_quad", 0.0);
+  params.set("scene.offset_x", -1e6);
+  params.set("scene.offset_y", 1e6);
+  params.set("scene.offset_z", -1e6);
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(scene.bounds());
+  request.width = 1280;
+  request.height = 720;
+  std::vector<double> frame_ms[2], cpu_ms[2], switch_ms[2];
+  auto timed = [&] {
+    const auto start = std::chrono::steady_clock::now();
+    const FrameStats& stats = renderer.render(params, request);
+    glFinish();
+    return std::pair{std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), stats.cpu_ms};
+  };
+  for (int r = 0; r < rounds + 1; ++r)  // round 0 warms up
+    for (int on = 1; on >= 0; --on) {
+      params.set("scene.local_origin", on);
+      const double first = timed().first;
+      if (r > 0) switch_ms[on].push_back(first);
+      for (int f = 0; f < frames; ++f) {
+        request.camera.yaw_deg += 1.0f;
+        renderer.invalidate_shadow_map();
+        const auto [wall, cpu] = timed();
+        if (r > 0) {
+          frame_ms[on].push_back(wall);
+          cpu_ms[on].push_back(cpu);
+        }
+      }
+    }
+  // The conversion alone, on the CPU: the default scene and the PalmTree (10k triangles).
+  auto conversion_ms = [](const Scene& s) {
+    Placement p;
+    p.offset = glm::dvec3(-1e6, 1e6, -1e6);
+    std::vector<double> ms;
+    for (int i = 0; i < 9; ++i) {
+      const auto start = std::chrono::steady_clock::now();
+      const Scene local = local_scene(s, p);
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      if (local.meshes.size() != s.meshes.size()) throw std::logic_error("local_scene lost meshes");
+    }
+    return median(ms);
+  };
+  const Scene palm = load_gltf(data_dir() / "assets" / "models" / "PalmTree" / "PalmTree.gltf");
+  return {{"frames_per_block", frames},
+          {"rounds", rounds},
+          {"size", "1280x720"},
+          {"with_local_origin", {{"frame_ms", median(frame_ms[1])}, {"cpu_ms", median(cpu_ms[1])}, {"first_frame_after_switch_ms", median(switch_ms[1])}}},
+          {"without_local_origin", {{"frame_ms", median(frame_ms[0])}, {"cpu_ms", median(cpu_ms[0])}, {"first_frame_after_switch_ms", median(switch_ms[0])}}},
+          {"ratio_with_to_without", median(frame_ms[1]) / median(frame_ms[0])},
+          {"conversion_ms", {{"default_scene", conversion_ms(scene)}, {"palm_tree", conversion_ms(palm)}}},
+          {"palm_tree_triangles", palm.triangle_count()}};
+}
+
+}  // namespace
+
+int run_placement_bench(const BenchOptions& options) {
+  bool usage_checked = false;
+  try {
+    make_output_dir(options.out_dir);
+    usage_checked = true;
+    std::string error;
+    auto context = HeadlessContext::create(&error);
+    if (!context) throw std::runtime_error(error);
+    const std::vector<PlacementPoint> grid = placement_grid(options.quick);
+    nlohmann::json rows = nlohmann::json::array();
+    std::printf("Every technique at offsets 1e3..1e7 (+x, +y, +z, -x+y-z) and scales 1e-4..1e5 (%zu placements, %dx%d), "
+                "error = acne + leak against the oracle:\n\n",
+                grid.size(), kWidth, kHeight);
+    std::printf("| technique | error at the origin | worst difference, offsets | worst difference, scales | error at 1e6 without the local origin |\n");
+    std::printf("|---|---|---|---|---|\n");
+    for (const PlacementTechnique& t : placement_techniques()) {
+      const nlohmann::json row = sweep_technique(t, grid);
+      std::printf("| %s | %.4f | %.1e | %.1e | %.3f |\n", t.name.c_str(), row["error_at_origin"].get<double>(),
+                  row["worst_difference_offsets"].get<double>(), row["worst_difference_scales"].get<double>(),
+                  row["error_1e6_without_local_origin"].get<double>());
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+    const nlohmann::json cost = frame_cost(options.quick ? 5 : 15, options.quick ? 2 : 4);
+    std::printf("\nFrame cost, lab 1 at 1280x720, the scene at 1e6 on the diagonal, shadow map redrawn every frame "
+                "(median of %d frames each, alternating blocks in one run):\n",
+                cost["frames_per_block"].get<int>() * cost["rounds"].get<int>());
+    std::printf("  with the local origin    %.2f ms (CPU %.3f ms), first frame after switching it on %.2f ms\n",
+                cost["with_local_origin"]["frame_ms"].get<double>(), cost["with_local_origin"]["cpu_ms"].get<double>(),
+                cost["with_local_origin"]["first_frame_after_switch_ms"].get<double>());
+    std::printf("  without it               %.2f ms (CPU %.3f ms), first frame after switching it off %.2f ms\n",
+                cost["without_local_origin"]["frame_ms"].get<double>(), cost["without_local_origin"]["cpu_ms"].get<double>(),
+                cost["without_local_origin"]["first_frame_after_switch_ms"].get<double>());
+    std::printf("  ratio with / without     %.3f\n", cost["ratio_with_to_without"].get<double>());
+    std::printf("  converting the scene to the local frame (CPU, once per placement): default scene %.3f ms, PalmTree (%zu triangles) %.3f ms\n",
+                cost["conversion_ms"]["default_scene"].get<double>(), cost["palm_tree_triangles"].get<std::size_t>(),
+                cost["conversion_ms"]["palm_tree"].get<double>());
+    const nlohmann::json out = {{"grid", options.quick ? "sampled" : "full"}, {"placements", grid.size()}, {"techniques", rows}, {"frame_cost", cost}};
+    write_text_atomic(fs::path(options.out_dir) / "placement.json", out.dump(2) + "\n");
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowlab bench --placement: %s\n", e.what());
+    return usage_checked ? kExitRuntime : kExitUsage;
+  }
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,92 @@
+#include "labs/placement_sweep.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/technique_params.h"
+#include "renderer/vsm_params.h"
+
+namespace shadowlab {
+
+std::vector<PlacementTechnique> placement_techniques() {
+  return {
+      {"depth map, directional (lab 1)", 1, {}},
+      {"fitted ortho box (lab 2, C++)", 2, {}},
+      {"PCF 3x3 (lab 6)", 6, {}},
+      {"VSM, blurred r2 (lab 5)", 5, {"vsm.blur_radius=2"}},
+      {"EVSM (lab 13)", 13, {}},
+      {"MSM (lab 14)", 14, {}},
+      {"spot light (lab 7)", 7, {}},
+      {"point light, cube (lab 8)", 8, {}},
+      {"shadow volumes, directional (lab 9)", 9, {"light.type=directional"}},
+      {"shadow volumes, point (lab 9)", 9, {"light.type=point"}},
+  };
+}
+
+namespace {
+std::string label(const char* what, double value) {
+  char s[64];
+  std::snprintf(s, sizeof s, "%s %.0e", what, value);
+  return s;
+}
+}  // namespace
+
+std::vector<PlacementPoint> placement_grid(bool sampled) {
+  std::vector<PlacementPoint> grid;
+  const std::pair<const char*, glm::dvec3> axes[] = {{"x", {1, 0, 0}}, {"y", {0, 1, 0}}, {"z", {0, 0, 1}}, {"-x+y-z", {-1, 1, -1}}};
+  const double offsets[] = {1e3, 1e4, 1e5, 1e6, 1e7};
+  for (std::size_t a = 0; a < 4; ++a)
+    for (std::size_t k = 0; k < 5; ++k) {
+      // Sampled: each axis once, the decades spread over the axes, 1e7 on two of them.
+      if (sampled && !(k == a + 1 || (k == 4 && a == 0))) continue;
+      PlacementPoint p{label(axes[a].first, offsets[k]), {}};
+      p.placement.offset = axes[a].second * offsets[k];
+      grid.push_back(p);
+    }
+  for (int e = -4; e <= 5; ++e) {
+    if (sampled && e != -4 && e != 5) continue;
+    PlacementPoint p{label("scale", std::pow(10.0, e)), {}};
+    p.placement.scale = std::pow(10.0, e);
+    grid.push_back(p);
+  }
+  for (double scale : {1e-4, 1e5}) {
+    if (sampled && scale > 1.0) continue;
+    PlacementPoint p{label("-x+y-z 1e7, scale", scale), {}};
+    p.placement.offset = glm::dvec3(-1e7, 1e7, -1e7);
+    p.placement.scale = scale;
+    grid.push_back(p);
+  }
+  return grid;
+}
+
+std::vector<std::string> placement_assignments(const Placement& placement) {
+  auto number = [](double v) {
+    char s[64];
+    std::snprintf(s, sizeof s, "%.17g", v);
+    return std::string(s);
+  };
+  return {"scene.offset_x=" + number(placement.offset.x), "scene.offset_y=" + number(placement.offset.y),
+          "scene.offset_z=" + number(placement.offset.z), "scene.scale=" + number(placement.scale),
+          std::string("scene.local_origin=") + (placement.local_origin ? "true" : "false")};
+}
+
+PlacementOutcome measure_placement(CheckContext& ctx, const PlacementTechnique& technique, const Placement& placement,
+                                   int width, int height) {
+  ParamSet p = ctx.params();
+  p.set("view.debug_quad", 0.0);
+  for (const auto& a : technique.assignments) {
+    const std::string key = a.substr(0, a.find('='));
+    if (!p.find(key) && key.rfind("vsm.", 0) == 0) p.declare(vsm_param_specs({key}).at(0));
+    p.apply_assignment(a);
+  }
+  for (const auto& a : placement_assignments(placement)) p.apply_assignment(a);
+  const auto m = ctx.measure(p, ctx.lab.hooks(Impl::Solution), "placement", nullptr, grading_band(), width, height);
+  PlacementOutcome o;
+  o.error = m.metrics.acne_rate_all + m.metrics.leak_rate_all;
+  o.graded = static_cast<double>(m.metrics.valid_pixels);
+  for (float v : m.visibility)
+    if (!std::isfinite(v)) ++o.non_finite;
+  return o;
+}
+
+}  // namespace shadowlab
