@@ -83,7 +83,10 @@ class MomentsPass final : public ShadowPass {
   static std::map<std::string, std::string> default_includes(LightType light);
 
   // The shadow technique: the vsm.* parameters apply (renderer/vsm_params.h).
-  Shape shape() const override { return {true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}}; }
+  const Shape& shape() const override {
+    static const Shape moments{true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}};
+    return moments;
+  }
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds
   // them; false (old programs kept) on a compile error.
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;

@@ -159,7 +159,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   light_.update(params, local_scene_.bounds(), features_.light, features_.light_fit, placement_);
   if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
   ShadowPass& shadow = *shadow_;
-  const ShadowPass::Shape shape = shadow.shape();
+  const ShadowPass::Shape& shape = shadow.shape();
   if (shadow.ensure_targets(params)) ++targets_generation_;
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);

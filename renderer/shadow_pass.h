@@ -105,7 +105,11 @@ class ShadowPass {
     // Every variant the pass uses (lit included), built with its includes.
     std::vector<LitVariant> lit_variants{LitVariant::Lit};
   };
-  virtual Shape shape() const { return {}; }
+  // A constant of the technique, returned by reference: the frame asks for it twice and allocates nothing.
+  virtual const Shape& shape() const {
+    static const Shape plain{};
+    return plain;
+  }
 
   // Points the pass's programs at these includes (the technique's defaults, a feature's on top) under
   // these rules (which files are confined, see IncludeRules) and builds them; false keeps the old

@@ -48,8 +48,9 @@ class ShadowVolumePass final : public ShadowPass {
   ShadowVolumePass();
   static std::map<std::string, std::string> default_includes(LightType light);
 
-  Shape shape() const override {
-    return {false, true, LitVariant::VolumeAdditive, {LitVariant::VolumeAdditive, LitVariant::VolumeAmbient}};
+  const Shape& shape() const override {
+    static const Shape volumes{false, true, LitVariant::VolumeAdditive, {LitVariant::VolumeAdditive, LitVariant::VolumeAmbient}};
+    return volumes;
   }
   // Points "lab/volume.glsl" at a file (default shaders/volume/volume.glsl) and rebuilds; false (old
   // program kept) on a compile error.

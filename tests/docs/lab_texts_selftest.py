@@ -37,9 +37,13 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json and README.md."""
+    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md and the
+    test sources whose constants a text quotes."""
     for folder in ("labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
+    (pathlib.Path(tmp) / "tests").mkdir()
+    for source in ROOT.glob("tests/*.cpp"):
+        shutil.copy(source, pathlib.Path(tmp) / "tests" / source.name)
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
     shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
 
