@@ -25,6 +25,7 @@ struct Renderer::ShadowMapInputs {
   int cull = 0;
   long scene = 0, targets = 0;
   std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
+  std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
   bool operator==(const ShadowMapInputs&) const = default;
 };
 
@@ -176,17 +177,23 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
                                                                      request.camera.near_plane)
                                           : request.camera.projection(aspect);
   const int cull = features_.shadow_cull_override ? features_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
-  return {scene_,        *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
-          camera_view_, camera_projection_, infinite_far_plane, request.gbuffer};
+  PassContext ctx{scene_,        *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
+                  camera_view_, camera_projection_, infinite_far_plane, request.gbuffer,
+                  request.cascade_camera ? request.cascade_camera->view() : camera_view_,
+                  request.cascade_camera ? request.cascade_camera->projection(aspect) : camera_projection_,
+                  features_.cascade_splits, features_.cascade_fit};
+  return ctx;
 }
 
 void Renderer::update_shadow_map(PassContext& ctx) {
   ShadowMapInputs inputs = shadow_map_inputs(ctx);
+  inputs.pass_inputs = shadow_->frame_inputs(ctx);
   if (shadow_inputs_ && *shadow_inputs_ == inputs) return;
   shadow_->draw_map(ctx);
   ++stats_.shadow_passes;
   // Programs a pass builds on first use (a blur method's) count from now on.
   shadow_inputs_ = std::make_unique<ShadowMapInputs>(shadow_map_inputs(ctx));
+  shadow_inputs_->pass_inputs = std::move(inputs.pass_inputs);
 }
 
 Renderer::ShadowMapInputs Renderer::shadow_map_inputs(const PassContext& ctx) const {
