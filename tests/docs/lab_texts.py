@@ -29,13 +29,25 @@ import pathlib
 import re
 import sys
 
-ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2]
+ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else pathlib.Path(__file__).resolve().parents[2]
 NUMBER = r"[-+]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
 MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])?|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
 MARKER = re.compile(r"<!-- [=@] [^>]*-->")
 # A figure that looks measured: a decimal point, an exponent, a thousands separator or a per cent sign.
 LOOKS_MEASURED = re.compile(r"(?<![\w.])(?:\d+(?:\.\d+)?\s*%|\d{1,3}(?:,\d{3})+(?:\.\d+)?|\d*\.\d+(?:e[-+]?\d+)?|\d+e[-+]?\d+)(?![\w.])")
+# A whole number (map sizes, degrees, radii, positions, counts): a figure too, unless it is one of these.
+INTEGER = re.compile(r"(?<![\w.^])\d+(?![\w.]|,\d)")
+NOT_FIGURES = [  # (what it is, the pattern taken out before whole numbers are looked for)
+    ("a lab's number or a reference to a lab", re.compile(r"\b[Ll]abs? \d+(?:(?:, | and | or |-)\d+)*")),
+    ("list numbering", re.compile(r"^\s*\d+\.\s")),
+    ("the name of a part of the task, a course task or a render pass",
+     re.compile(r"\b(?:[Pp]arts?|[Tt]asks?|[Pp]ass(?:es)?|[Ss]teps?) \d+(?:(?:, | and | or )\d+)*")),
+    ("a specification's version", re.compile(r"\b(?:GLSL|OpenGL) \d\.\d+")),
+    ("a power's exponent (1024^2 is a square map; the 2 is notation)", re.compile(r"\^\d+")),
+    ("0 and 1, the unit values (none/all, shadowed/lit, the ends of [0, 1], n . l = 1, +-1, a vector's component)",
+     re.compile(r"(?<![\w.^])[-+]?[01](?![\w.]|,\d)")),
+]
 
 
 def constant(path, name):
@@ -81,11 +93,18 @@ def resolve(data, pointer):
     return node
 
 
+def number(node, name):
+    """A recorded value as a number; a choice parameter's value is a string of digits (shadow.map_size "1024")."""
+    if isinstance(node, str) and re.fullmatch(r"[-+]?\d+(?:\.\d+)?", node):
+        return float(node)
+    if isinstance(node, bool) or not isinstance(node, (int, float)):
+        raise LookupError(f"{name} is not a number")
+    return float(node)
+
+
 def measured_value(file, pointer):
     node = resolve(json.loads((ROOT / "docs" / "measured" / file).read_text(encoding="utf-8")), pointer)
-    if isinstance(node, bool) or not isinstance(node, (int, float)):
-        raise LookupError(f"{file}:{pointer} is not a number")
-    return float(node)
+    return number(node, f"{file}:{pointer}")
 
 
 def texts():
@@ -111,8 +130,25 @@ def without_code(line):
     return re.sub(r"`[^`]*`", "", line)
 
 
-def check_text(readme, kind="student"):
+def whole_numbers(bare):
+    """The whole numbers in a line (code, markers and their figures already taken out) that are figures."""
+    bare = re.sub(r"(\d)x(\d)", r"\1 x \2", LOOKS_MEASURED.sub(" ", bare))  # 960x540: two figures
+    for _, pattern in NOT_FIGURES:
+        bare = pattern.sub(" ", bare)
+    return [m.group(0) for m in INTEGER.finditer(bare)]
+
+
+def untied_baseline():
+    """Whole numbers not yet tied, counted per text and number (tests/docs/untied_integers.json)."""
+    path = ROOT / "tests" / "docs" / "untied_integers.json"
+    return json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
+
+
+def check_text(readme, kind="student", allowed=None, untied=None):
+    """The problems of one text. Untied whole numbers are collected in `untied` ({number: [line, ...]})
+    and only reported when they outnumber `allowed` ({number: count}, the baseline of the ones not tied yet)."""
     problems = []
+    untied = {} if untied is None else untied
     lines = readme.read_text(encoding="utf-8").splitlines()
     where = lambda i: f"{readme.relative_to(ROOT)}:{i + 1}"
     section = ""
@@ -152,11 +188,21 @@ def check_text(readme, kind="student"):
             bare = re.sub(r"\b(?:GLSL|OpenGL) \d\.\d+", "", bare)  # a specification's version
             for m in LOOKS_MEASURED.finditer(bare):
                 problems.append(f"{where(i)}: a figure with no marker to the code or a recorded run: {m.group(0)}")
+            if not section.startswith("Sources"):  # citations: years, chapters and pages are not figures
+                for number in whole_numbers(bare):
+                    untied.setdefault(number, []).append(i)
         if kind == "student" and section.startswith("The check") and line.startswith("|") and not line.startswith("|---"):
             limit = line.strip("|").split("|")[-1]
             bare = MARKER.sub("", limit)
             if re.search(r"\d", bare) and not MARKER.search(limit):
                 problems.append(f"{where(i)}: a limit in the check's table without a marker to the code: {limit.strip()}")
+    for number, at in sorted(untied.items()):
+        if len(at) > (allowed or {}).get(number, 0):
+            problems += [f"{where(i)}: a whole number with no marker to the code or a recorded run: {number}" for i in at]
+    for number, count in sorted((allowed or {}).items()):
+        if len(untied.get(number, [])) < count:
+            problems.append(f"{readme.relative_to(ROOT)}: tests/docs/untied_integers.json allows {count} untied {number}, "
+                            f"the text has {len(untied.get(number, []))}: lower the count")
     if kind == "student":
         for needed in ("Your task" if "Your task" in sections else "Your part", "How to see it", "The check", "Sources"):
             if needed not in sections:
@@ -169,15 +215,28 @@ def main():
     if not any(kind == "student" for _, kind in found):
         print("lab_texts: no lab texts found", file=sys.stderr)
         return 2
-    problems = [p for path, kind in found for p in check_text(path, kind)]
+    baseline = untied_baseline()
+    untied = {}
+    problems = []
+    for path, kind in found:
+        name = str(path.relative_to(ROOT))
+        untied[name] = {}
+        problems += check_text(path, kind, baseline.get(name, {}), untied[name])
+    if "--write-untied" in sys.argv:  # only ever to shrink the baseline, after tying numbers
+        left = {name: {n: len(at) for n, at in sorted(numbers.items(), key=lambda kv: int(kv[0]))}
+                for name, numbers in untied.items() if numbers}
+        (ROOT / "tests" / "docs" / "untied_integers.json").write_text(json.dumps(left, indent=1) + "\n", encoding="utf-8")
+        return 0
     for p in problems:
         print(p)
+    left = sum(len(at) for numbers in untied.values() for at in numbers.values())
     tied = measured = 0
     for path, _ in found:
         text = path.read_text(encoding="utf-8")
         tied += len(MARKED.findall(text))
         measured += len(MEASURED.findall(text))
-    print(f"{len(found)} texts, {tied} figures tied to the code, {measured} to recorded runs, {len(problems)} disagreements")
+    print(f"{len(found)} texts, {tied} figures tied to the code, {measured} to recorded runs, {len(problems)} disagreements; "
+          f"{left} whole numbers not tied yet (tests/docs/untied_integers.json)")
     return 1 if problems else 0
 
 

@@ -201,8 +201,8 @@ def replay(binary, root, only=None):
             if any(is_timing(p) for p in parts):
                 continue
             try:
-                value = lab_texts.resolve(new, pointer) * scale
-            except (KeyError, IndexError, ValueError, TypeError) as e:
+                value = lab_texts.number(lab_texts.resolve(new, pointer), pointer) * scale
+            except (KeyError, IndexError, ValueError, TypeError, LookupError) as e:
                 problems.append(f"{where}: {file}:{pointer} is not in the new run ({e!r})")
                 continue
             compared += 1
