@@ -90,6 +90,8 @@ constexpr double kMaxBadDirections = 0;
 // Where the fixed box is wrong, the fit's error must be strictly below it (the stock exercise is the
 // fixed box, so it cannot pass).
 constexpr double kMaxErrorRatioToFixed = 0.999;
+// The default scene moved off the origin (a box that ignores the scene's centre misses it).
+constexpr float kMovedBy[] = {30.0f, 0.0f, 20.0f};
 
 constexpr const char* kSolution = "renderer/light.cpp";  // fit_light_ortho, which every other lab uses
 
@@ -223,7 +225,8 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
   compare_with_fixed(ctx, result, "default_scene_straight_down", params, nullptr, true);
   params.set("light.elevation", ctx.params().get("light.elevation"));
   Scene moved = ctx.scene();
-  for (auto& mesh : moved.meshes) transform_mesh(mesh, glm::translate(glm::mat4(1.0f), glm::vec3(30.0f, 0.0f, 20.0f)));
+  for (auto& mesh : moved.meshes)
+    transform_mesh(mesh, glm::translate(glm::mat4(1.0f), glm::vec3(kMovedBy[0], kMovedBy[1], kMovedBy[2])));
   ctx.use_scene(moved);
   compare_with_fixed(ctx, result, "default_scene_moved_30_20", params, nullptr, true);
   // PalmTree: palms 3.8 units tall at the origin, on a 392-unit sea. Straight down, the fixed box has no

@@ -30,8 +30,8 @@ import re
 import sys
 
 ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else pathlib.Path(__file__).resolve().parents[2]
-NUMBER = r"[-+]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
-MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])?|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
+NUMBER = r"(?:(?<![\w>)])[-+])?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
+MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])*|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
 MARKER = re.compile(r"<!-- [=@] [^>]*-->")
 # A figure that looks measured: a decimal point, an exponent, a thousands separator or a per cent sign.
@@ -44,10 +44,32 @@ NOT_FIGURES = [  # (what it is, the pattern taken out before whole numbers are l
     ("the name of a part of the task, a course task or a render pass",
      re.compile(r"\b(?:[Pp]arts?|[Tt]asks?|[Pp]ass(?:es)?|[Ss]teps?) \d+(?:(?:, | and | or )\d+)*")),
     ("a specification's version", re.compile(r"\b(?:GLSL|OpenGL) \d\.\d+")),
+    ("the texel offsets GLSL guarantees, a fact of the specification", re.compile(r"\[-8, 7\]")),
     ("a power's exponent (1024^2 is a square map; the 2 is notation)", re.compile(r"\^\d+")),
     ("0 and 1, the unit values (none/all, shadowed/lit, the ends of [0, 1], n . l = 1, +-1, a vector's component)",
      re.compile(r"(?<![\w.^])[-+]?[01](?![\w.]|,\d)")),
 ]
+
+
+def initializer(text, start):
+    """The brace initializer that starts after the "{" before text[start]: (nested lists of item strings,
+    the index of its closing brace)."""
+    items, item, i = [], "", start
+    while text[i] != "}":
+        if text[i] == "{":
+            inner, i = initializer(text, i + 1)
+            items.append(inner)
+            item = None  # the braces were the item
+        elif text[i] == ",":
+            if item:
+                items.append(item.strip())
+            item = ""
+        elif item is not None:
+            item += text[i]
+        i += 1
+    if item and item.strip():
+        items.append(item.strip())
+    return items, i
 
 
 def constant(path, name):
@@ -59,13 +81,18 @@ def constant(path, name):
         if not value:
             raise LookupError(f"no preset {preset.group(1)} setting {preset.group(2)} in {path.relative_to(ROOT)}")
         return float(value.group(1))
-    element = re.fullmatch(r"(\w+)\[(\d+)\]", name)
-    if element:  # an element of a constant array: NAME[N] = {a, b, ...}
-        m = re.search(r"\b" + element.group(1) + r"(?:\[\d*\])?\s*(?:=\s*)?\{([^{}]*)\}", text)
-        items = m.group(1).split(",") if m else []
-        if int(element.group(2)) >= len(items):
-            raise LookupError(f"no constant {name} in {path.relative_to(ROOT)}")
-        return float(items[int(element.group(2))].strip().rstrip("f"))
+    element = re.fullmatch(r"(\w+)((?:\[\d+\])+)", name)
+    if element:  # an element of a constant array or aggregate, nested as deep as the braces: NAME[i][j]
+        m = re.search(r"\b" + element.group(1) + r"(?:\[\d*\])?\s*(?:=\s*)?\{", text)
+        node = initializer(text, m.end())[0] if m else []
+        for index in map(int, re.findall(r"\d+", element.group(2))):
+            if not isinstance(node, list) or index >= len(node):
+                raise LookupError(f"no constant {name} in {path.relative_to(ROOT)}")
+            node = node[index]
+        try:  # a number (1.5f, 40.0f) or a quoted choice ("1024")
+            return float(node.strip('"').rstrip("f")) if isinstance(node, str) else float("nan")
+        except ValueError:
+            raise LookupError(f"{name} in {path.relative_to(ROOT)} is not a number: {node}") from None
     m = re.search(r"\b" + name + r"\b(?:\[\])?\s*(?:=\s*|\{)\s*([-+]?[0-9][0-9.eE+-]*)f?\s*[;,})]", text)
     if not m:
         raise LookupError(f"no constant {name} in {path.relative_to(ROOT)}")
@@ -153,11 +180,13 @@ def check_text(readme, kind="student", allowed=None, untied=None):
     where = lambda i: f"{readme.relative_to(ROOT)}:{i + 1}"
     section = ""
     sections = set()
-    fenced = False
+    fenced = indented = False
     for i, line in enumerate(lines):
         if line.startswith("```"):
             fenced = not fenced
             continue
+        # An indented code block (four spaces after a blank line): code, like a fenced one.
+        indented = line.startswith("    ") and (indented or i == 0 or not lines[i - 1].strip())
         if line.startswith("## "):
             section = line[3:].strip()
             sections.add(section.split(" (")[0])
@@ -183,7 +212,7 @@ def check_text(readme, kind="student", allowed=None, untied=None):
                 problems.append(f"{where(i)}: the text says {printed}, the recorded run {file}:{pointer} has {value:g}")
         if MARKER.search(line) and len(MARKED.findall(line)) + len(MEASURED.findall(line)) != len(MARKER.findall(line)):
             problems.append(f"{where(i)}: a marker without a figure right before it")
-        if kind in ("instructor", "student") and not fenced:
+        if kind in ("instructor", "student") and not fenced and not indented:
             bare = MARKER.sub("", MARKED.sub("", MEASURED.sub("", without_code(line))))
             bare = re.sub(r"\b(?:GLSL|OpenGL) \d\.\d+", "", bare)  # a specification's version
             for m in LOOKS_MEASURED.finditer(bare):
