@@ -8,6 +8,9 @@
 
 namespace shadowlab {
 
+// Inside the scene's box the nearest geometry may be anywhere: near is never less than far / this.
+constexpr float kMaxFarOverNear = 1000.0f;
+
 glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg) {
   // cos(radians(90)) is -4.4e-8 in float, not 0: make "straight down" exactly straight down.
   if (elevation_deg >= 90.0f) return {0.0f, 1.0f, 0.0f};
@@ -90,7 +93,7 @@ LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const 
   far_distance = std::max(far_distance, 1e-6f);
   // Small margins so the box's nearest and farthest points are not clipped by rounding.
   const float far_plane = far_distance * 1.001f;
-  const float near_plane = std::max(near_distance * 0.999f, far_plane / 1000.0f);
+  const float near_plane = std::max(near_distance * 0.999f, far_plane / kMaxFarOverNear);
   const glm::mat3 basis = orthonormal_basis(-glm::normalize(direction));  // the light looks down -Z
   LightView lv;
   lv.view = glm::mat4(glm::transpose(basis));
@@ -108,7 +111,7 @@ CubeLightViews point_light_views(const Bounds& bounds, const glm::vec3& position
   cube.far_plane = std::max(far_distance, 1e-6f) * 1.001f;
   // Six faces see every direction, so the nearest geometry may be anywhere: near cannot exceed the
   // distance to the box, and inside the box only a small fraction of far is safe.
-  cube.near_plane = std::max(near_distance * 0.999f, cube.far_plane / 1000.0f);
+  cube.near_plane = std::max(near_distance * 0.999f, cube.far_plane / kMaxFarOverNear);
   cube.projection = glm::perspective(glm::radians(90.0f), 1.0f, cube.near_plane, cube.far_plane);
   // GL's cube-map faces: direction and up for +X, -X, +Y, -Y, +Z, -Z (the up vectors point down on the
   // side faces because cube maps are addressed with t growing downward).

@@ -28,6 +28,7 @@ constexpr const char* kSolution = "shaders/shadow/pcf.glsl";  // the renderer's 
 constexpr int kMapSize = 64;
 constexpr float kOccluder = 0.3f, kEmpty = 1.0f, kReceiver = 0.6f, kProbeBias = 0.001f;
 constexpr int kProbePoints = 600;
+constexpr float kProbeReach = 6.0f;  // texels from the edge (the map's centre line) the points lie within
 constexpr float kBorderMargin = 0.03f;  // of a texel: where rounding or bilinear weights may decide
 constexpr double kKernelTolerance = 1e-4;
 constexpr double kHardwareTolerance = 0.01;  // bilinear weights have 8 fractional bits on many GPUs
@@ -95,8 +96,9 @@ void probe_kernel(CheckContext& ctx, CheckResult& result) {
   request.fragment = "shaders/probe/visibility.frag";
   std::vector<glm::vec2> points;
   for (int i = 0; i < kProbePoints; ++i) {
-    // Within 6 texels of the map's centre line (the edge passes through the centre).
-    const glm::vec2 t(kMapSize / 2.0f + 12.0f * (unit(rng) - 0.5f), kMapSize / 2.0f + 12.0f * (unit(rng) - 0.5f));
+    // Within kProbeReach texels of the map's centre line (the edge passes through the centre).
+    const glm::vec2 t(kMapSize / 2.0f + 2.0f * kProbeReach * (unit(rng) - 0.5f),
+                      kMapSize / 2.0f + 2.0f * kProbeReach * (unit(rng) - 0.5f));
     const glm::vec2 uv(away_from_borders(t.x, rng), away_from_borders(t.y, rng));
     points.push_back(uv);
     request.in0.push_back({uv.x, uv.y, kReceiver, 1.0f});  // world = texture space; n.l = 1

@@ -34,6 +34,9 @@ constexpr SpotPlace kPlaces[] = {{"high", 5.0f, 7.0f, 4.0f, 40.0f}, {"low", -4.0
 constexpr double kProbeNear = 1.0, kProbeFar = 21.0, kProbeCone = 30.0, kProbeSlope = 2.0;
 constexpr double kProbeDistances[] = {2.0, 5.0, 10.0, 18.0};
 constexpr int kProbeMapSizes[] = {512, 1024};
+// The held-out places (from, to): distance from the scene's centre, elevation and cone in degrees; map sizes.
+constexpr float kHeldOutDistance[] = {6.0f, 9.0f}, kHeldOutElevation[] = {25.0f, 60.0f}, kHeldOutCone[] = {40.0f, 60.0f};
+constexpr const char* kHeldOutSizes[] = {"512", "1024", "2048"};
 
 void probe_bias(CheckContext& ctx, CheckResult& result) {
   const glm::mat4 projection = glm::perspective(glm::radians(2.0f * static_cast<float>(kProbeCone)), 1.0f,
@@ -75,8 +78,8 @@ const HardLimits kLimits{
 void check_spot(CheckContext& ctx, CheckResult& result) {
   probe_bias(ctx, result);
   const Features hooks = ctx.hooks();
-  // The lab's two places, then two held-out ones drawn from the seed: around the scene's centre at 6 to
-  // 9 units, 25 to 60 degrees up, with another cone and map size.
+  // The lab's two places, then two held-out ones drawn from the seed around the scene's centre, with
+  // another cone and map size.
   std::vector<SpotPlace> places(std::begin(kPlaces), std::end(kPlaces));
   std::vector<std::string> sizes(places.size(), "");
   std::mt19937 rng = ctx.held_out_rng();
@@ -84,13 +87,13 @@ void check_spot(CheckContext& ctx, CheckResult& result) {
   const glm::vec3 centre = ctx.scene().bounds().center();
   const char* held_out_tags[] = {"held_out_1", "held_out_2"};
   for (const char* tag : held_out_tags) {
-    const float azimuth = glm::radians(360.0f * unit(rng)), elevation = glm::radians(25.0f + 35.0f * unit(rng));
-    const float distance = 6.0f + 3.0f * unit(rng);
+    const float azimuth = glm::radians(360.0f * unit(rng));
+    const float elevation = glm::radians(kHeldOutElevation[0] + (kHeldOutElevation[1] - kHeldOutElevation[0]) * unit(rng));
+    const float distance = kHeldOutDistance[0] + (kHeldOutDistance[1] - kHeldOutDistance[0]) * unit(rng);
     const glm::vec3 p = centre + distance * glm::vec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
                                                        std::cos(elevation) * std::sin(azimuth));
-    places.push_back({tag, p.x, p.y, p.z, 40.0f + 20.0f * unit(rng)});
-    const char* choices[] = {"512", "1024", "2048"};
-    sizes.push_back(choices[std::uniform_int_distribution<int>(0, 2)(rng)]);
+    places.push_back({tag, p.x, p.y, p.z, kHeldOutCone[0] + (kHeldOutCone[1] - kHeldOutCone[0]) * unit(rng)});
+    sizes.push_back(kHeldOutSizes[std::uniform_int_distribution<int>(0, static_cast<int>(std::size(kHeldOutSizes)) - 1)(rng)]);
     result.conditions.push_back({{"tag", tag}, {"light_position", {p.x, p.y, p.z}}, {"cone_deg", places.back().cone_deg},
                                  {"map_size", sizes.back()}});
   }
