@@ -424,10 +424,13 @@ Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {
   return b;
 }
 
+// The grazing light of grade_default_and_grazing (labs 13 and 14).
+constexpr double kGrazingElevationDeg = 10.0;
+
 void grade_default_and_grazing(CheckContext& ctx, CheckResult& result, const ParamSet& params, const Features& hooks,
                                const std::string& prefix) {
   ParamSet grazing = params;
-  grazing.set("light.elevation", 10.0);
+  grazing.set("light.elevation", kGrazingElevationDeg);
   const std::pair<std::string, const ParamSet*> cases[] = {{"default", &params}, {"grazing", &grazing}};
   for (const auto& [tag, p] : cases)
     grade_hard_shadow(result, tag, ctx.measure(*p, hooks, prefix + "_" + tag + "_" + impl_name(ctx.impl)).metrics);

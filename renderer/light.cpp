@@ -10,6 +10,8 @@ namespace shadowlab {
 
 // Inside the scene's box the nearest geometry may be anywhere: near is never less than far / this.
 constexpr float kMaxFarOverNear = 1000.0f;
+// A point light's six cube faces: square views of this field of view cover every direction once.
+constexpr float kCubeFaceFovDeg = 90.0f;
 
 glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg) {
   // cos(radians(90)) is -4.4e-8 in float, not 0: make "straight down" exactly straight down.
@@ -112,7 +114,7 @@ CubeLightViews point_light_views(const Bounds& bounds, const glm::vec3& position
   // Six faces see every direction, so the nearest geometry may be anywhere: near cannot exceed the
   // distance to the box, and inside the box only a small fraction of far is safe.
   cube.near_plane = std::max(near_distance * 0.999f, cube.far_plane / kMaxFarOverNear);
-  cube.projection = glm::perspective(glm::radians(90.0f), 1.0f, cube.near_plane, cube.far_plane);
+  cube.projection = glm::perspective(glm::radians(kCubeFaceFovDeg), 1.0f, cube.near_plane, cube.far_plane);
   // GL's cube-map faces: direction and up for +X, -X, +Y, -Y, +Z, -Z (the up vectors point down on the
   // side faces because cube maps are addressed with t growing downward).
   const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
