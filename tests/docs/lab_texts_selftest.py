@@ -29,6 +29,17 @@ MUTATIONS = [
     ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}}', '{{"vsm.bleed_delta", "0.15"}}',
      "preset(course).vsm.bleed_delta = 0.15"),
     ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
+    # Whole numbers: an untied one in a student's text; an integer constant and an element of a nested
+    # initializer changed in a lab.cpp; one more untied number than the baseline allows in an instructor
+    # note; a number tied since, still counted in the baseline.
+    ("labs/05_moment_blur/README.md", "## How to see it", "A 512 map shows it best.\n\n## How to see it",
+     "a whole number with no marker to the code or a recorded run: 512"),
+    ("labs/06_pcf/lab.cpp", "constexpr int kMapSize = 64;", "constexpr int kMapSize = 128;", "kMapSize = 128"),
+    ("labs/07_spot_light/lab.cpp", "kHeldOutDistance[] = {6.0f, 9.0f}", "kHeldOutDistance[] = {6.0f, 10.0f}",
+     "kHeldOutDistance[1] = 10"),
+    ("labs/06_pcf/INSTRUCTOR.md", "## Costs", "Also timed at 1280 wide.\n\n## Costs",
+     "a whole number with no marker to the code or a recorded run: 1280"),
+    ("tests/docs/untied_integers.json", '"1280": 1', '"1280": 2', "allows 2 untied 1280, the text has 1"),
 ]
 
 
@@ -37,13 +48,15 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md and the
-    test sources whose constants a text quotes."""
+    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md, the
+    test sources whose constants a text quotes and the baseline of untied whole numbers."""
     for folder in ("labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
     for source in ROOT.glob("tests/*.cpp"):
         shutil.copy(source, pathlib.Path(tmp) / "tests" / source.name)
+    (pathlib.Path(tmp) / "tests" / "docs").mkdir()
+    shutil.copy(ROOT / "tests" / "docs" / "untied_integers.json", pathlib.Path(tmp) / "tests" / "docs")
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
     shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
 
