@@ -26,10 +26,10 @@ constexpr const char* kVisibility = SHADOWLAB_LAB_FOLDER "/visibility.glsl";
 // stored in 32-bit floats, so anything above float rounding means the moments pass stores something else.
 constexpr double kMaxFirstMomentError = 1e-5;
 // E[z^2] against z^2 + (1/4)(dz/dx^2 + dz/dy^2) with the derivatives taken as finite differences of
-// the depth map. Measured worst case 4.0e-8 (INSTRUCTOR.md); the limit is 1e-6: z^2 rounds to within 6e-8
-// (half an ulp of 1 in float32), each derivative is a difference of two depths rounded to 6e-8, and
-// the GPU's own interpolation adds a few ulps more. A missing slope term is off by 1e-7..1e-3 on
-// tilted receivers, a missing square by up to 0.25.
+// the depth map. z^2 rounds to within 6e-8 (half an ulp of 1 in float32), each derivative is a
+// difference of two depths rounded to 6e-8, and the GPU's own interpolation adds a few ulps more; a
+// shader that forgets the slope term or the square is off by far more. The measured worst case and
+// the margin: INSTRUCTOR.md ("The second-moment tolerance"), recorded in docs/measured/lab_03.json.
 constexpr double kMaxSecondMomentError = 1e-6;
 // Two finite differences on either side of a texel count as one plane (the derivative is defined)
 // when they agree this well; texels at depth edges and creases are left out of the comparison.
