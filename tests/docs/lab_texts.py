@@ -20,8 +20,20 @@ Student texts (labs/NN_*/README.md) must also have a task section ("Your task" o
 "How to see it" section (the window's panel shows both), a "The check" section whose limits all carry
 markers and a "Sources" section, and must not mention issues. In the student texts and the
 instructor notes (labs/NN_*/INSTRUCTOR.md) every figure that looks measured (a decimal point, a per cent sign, a
-thousands separator or an exponent; not inside `code`) must carry a marker of either kind. The
-project's README.md is held to its markers. Exit 0 when every text agrees, 1 otherwise (each
+thousands separator or an exponent; not inside `code`) must carry a marker of either kind. So must
+every whole number there (map sizes, degrees, radii, positions, counts), except what NOT_FIGURES lists:
+lab numbers and references to labs, list numbering, the names of parts, tasks and passes, spec versions,
+GLSL's guaranteed offsets [-8, 7], a power's exponent (the 2 of 1024^2), and 0 and 1; nor inside code
+(code spans, fenced or indented blocks) or in the Sources section (years, chapters and pages of
+citations). Whole numbers not tied yet are counted per text and number in
+tests/docs/untied_integers.json: one more than it allows fails, and so does one fewer (lower the count,
+or run `lab_texts.py ROOT --write-untied`, which only ever writes what is left untied).
+
+A count of the exam corpus's answers names its folders (a glob), counted as check_corpus.py does:
+
+    143<!-- # tests/answers/*/wrong --> wrong answers
+
+The project's README.md is held to its markers. Exit 0 when every text agrees, 1 otherwise (each
 disagreement printed with its file and line).
 """
 import json
@@ -33,7 +45,10 @@ ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].starts
 NUMBER = r"(?:(?<![\w>)])[-+])?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
 MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])*|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
-MARKER = re.compile(r"<!-- [=@] [^>]*-->")
+# A count of the exam corpus's answers: the folders (a glob under the project) hold that many answers, each
+# counted once as check_corpus.py does (files NAME__SLOT; one answer may fill several slots).
+COUNTED = re.compile(r"(" + NUMBER + r")\s*<!-- # (tests/answers/[^\s>]+) -->")
+MARKER = re.compile(r"<!-- [=@#] [^>]*-->")
 # A figure that looks measured: a decimal point, an exponent, a thousands separator or a per cent sign.
 LOOKS_MEASURED = re.compile(r"(?<![\w.])(?:\d+(?:\.\d+)?\s*%|\d{1,3}(?:,\d{3})+(?:\.\d+)?|\d*\.\d+(?:e[-+]?\d+)?|\d+e[-+]?\d+)(?![\w.])")
 # A whole number (map sizes, degrees, radii, positions, counts): a figure too, unless it is one of these.
@@ -134,6 +149,14 @@ def measured_value(file, pointer):
     return number(node, f"{file}:{pointer}")
 
 
+def answers_in(pattern):
+    """How many answers the corpus folders matching pattern hold (NAME__SLOT files, one per NAME)."""
+    folders = [f for f in sorted(ROOT.glob(pattern)) if f.is_dir()]
+    if not folders:
+        raise LookupError(f"no corpus folder {pattern}")
+    return sum(len({p.name.partition("__")[0] for p in f.glob("*__*")}) for f in folders)
+
+
 def texts():
     """(path, kind): the student texts, the instructor notes and the project's README."""
     for readme in sorted(ROOT.glob("labs/[0-9][0-9]_*/README.md")):
@@ -210,10 +233,19 @@ def check_text(readme, kind="student", allowed=None, untied=None):
                 continue
             if not agrees(printed, value):
                 problems.append(f"{where(i)}: the text says {printed}, the recorded run {file}:{pointer} has {value:g}")
-        if MARKER.search(line) and len(MARKED.findall(line)) + len(MEASURED.findall(line)) != len(MARKER.findall(line)):
+        for m in COUNTED.finditer(line):
+            printed, pattern = m.groups()
+            try:
+                value = answers_in(pattern)
+            except LookupError as e:
+                problems.append(f"{where(i)}: {e}")
+                continue
+            if not agrees(printed, value):
+                problems.append(f"{where(i)}: the text says {printed}, {pattern} holds {value} answers")
+        if MARKER.search(line) and len(MARKED.findall(line)) + len(MEASURED.findall(line)) + len(COUNTED.findall(line)) != len(MARKER.findall(line)):
             problems.append(f"{where(i)}: a marker without a figure right before it")
         if kind in ("instructor", "student") and not fenced and not indented:
-            bare = MARKER.sub("", MARKED.sub("", MEASURED.sub("", without_code(line))))
+            bare = MARKER.sub("", COUNTED.sub("", MARKED.sub("", MEASURED.sub("", without_code(line)))))
             bare = re.sub(r"\b(?:GLSL|OpenGL) \d\.\d+", "", bare)  # a specification's version
             for m in LOOKS_MEASURED.finditer(bare):
                 problems.append(f"{where(i)}: a figure with no marker to the code or a recorded run: {m.group(0)}")
@@ -259,12 +291,14 @@ def main():
     for p in problems:
         print(p)
     left = sum(len(at) for numbers in untied.values() for at in numbers.values())
-    tied = measured = 0
+    tied = measured = counted = 0
     for path, _ in found:
         text = path.read_text(encoding="utf-8")
         tied += len(MARKED.findall(text))
         measured += len(MEASURED.findall(text))
-    print(f"{len(found)} texts, {tied} figures tied to the code, {measured} to recorded runs, {len(problems)} disagreements; "
+        counted += len(COUNTED.findall(text))
+    print(f"{len(found)} texts, {tied} figures tied to the code, {measured} to recorded runs, {counted} to the exam corpus, "
+          f"{len(problems)} disagreements; "
           f"{left} whole numbers not tied yet (tests/docs/untied_integers.json)")
     return 1 if problems else 0
 

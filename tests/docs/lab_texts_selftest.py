@@ -40,6 +40,8 @@ MUTATIONS = [
     ("labs/06_pcf/INSTRUCTOR.md", "## Costs", "Also timed at 1280 wide.\n\n## Costs",
      "a whole number with no marker to the code or a recorded run: 1280"),
     ("tests/docs/untied_integers.json", '"1280": 1', '"1280": 2', "allows 2 untied 1280, the text has 1"),
+    # The README's corpus table: a count changed.
+    ("README.md", "| 6 pcf | 2<!--", "| 6 pcf | 3<!--", "the text says 3, tests/answers/06_pcf/right holds 2 answers"),
 ]
 
 
@@ -49,12 +51,14 @@ def run(root):
 
 def copy_texts(tmp):
     """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md, the
-    test sources whose constants a text quotes and the baseline of untied whole numbers."""
+    test sources whose constants a text quotes, the baseline of untied whole numbers and the exam corpus
+    whose answers the README counts."""
     for folder in ("labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
     for source in ROOT.glob("tests/*.cpp"):
         shutil.copy(source, pathlib.Path(tmp) / "tests" / source.name)
+    shutil.copytree(ROOT / "tests" / "answers", pathlib.Path(tmp) / "tests" / "answers")
     (pathlib.Path(tmp) / "tests" / "docs").mkdir()
     shutil.copy(ROOT / "tests" / "docs" / "untied_integers.json", pathlib.Path(tmp) / "tests" / "docs")
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
