@@ -204,6 +204,7 @@ def check_text(readme, kind="student", allowed=None, untied=None):
     section = ""
     sections = set()
     fenced = indented = False
+    columns = 0
     for i, line in enumerate(lines):
         if line.startswith("```"):
             fenced = not fenced
@@ -252,6 +253,11 @@ def check_text(readme, kind="student", allowed=None, untied=None):
             if not section.startswith("Sources"):  # citations: years, chapters and pages are not figures
                 for number in whole_numbers(bare):
                     untied.setdefault(number, []).append(i)
+        if line.startswith("|"):  # every row of a table has its header's columns (an edit may split a cell)
+            cells = MARKER.sub("", without_code(line)).strip().strip("|").count("|") + 1
+            columns = columns if i > 0 and lines[i - 1].startswith("|") else cells
+            if cells != columns:
+                problems.append(f"{where(i)}: a table row with {cells} columns under a header with {columns}")
         if kind == "student" and section.startswith("The check") and line.startswith("|") and not line.startswith("|---"):
             limit = line.strip("|").split("|")[-1]
             bare = MARKER.sub("", limit)

@@ -40,6 +40,9 @@ MUTATIONS = [
     ("labs/06_pcf/INSTRUCTOR.md", "## Costs", "Also timed at 1280 wide.\n\n## Costs",
      "a whole number with no marker to the code or a recorded run: 1280"),
     ("tests/docs/untied_integers.json", '"1280": 1', '"1280": 2', "allows 2 untied 1280, the text has 1"),
+    # A table cell split in two by an edit.
+    ("labs/01_bias_tuning/README.md", "| doubling the slope slider: growth", "| doubling the slope slider: | growth",
+     "a table row with 3 columns under a header with 2"),
     # The README's corpus table: a count changed.
     ("README.md", "| 6 pcf | 2<!--", "| 6 pcf | 3<!--", "the text says 3, tests/answers/06_pcf/right holds 2 answers"),
 ]
