@@ -25,9 +25,7 @@ every whole number there (map sizes, degrees, radii, positions, counts), except 
 lab numbers and references to labs, list numbering, the names of parts, tasks and passes, spec versions,
 GLSL's guaranteed offsets [-8, 7], a power's exponent (the 2 of 1024^2), and 0 and 1; nor inside code
 (code spans, fenced or indented blocks) or in the Sources section (years, chapters and pages of
-citations). Whole numbers not tied yet are counted per text and number in
-tests/docs/untied_integers.json: one more than it allows fails, and so does one fewer (lower the count,
-or run `lab_texts.py ROOT --write-untied`, which only ever writes what is left untied).
+citations).
 
 A count of the exam corpus's answers names its folders (a glob), counted as check_corpus.py does:
 
@@ -41,7 +39,7 @@ import pathlib
 import re
 import sys
 
-ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else pathlib.Path(__file__).resolve().parents[2]
+ROOT = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2]
 NUMBER = r"(?:(?<![\w>)])[-+])?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?"
 MARKED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x)?\s*<!-- = ([^:\s]+):(\w+(?:\[\d+\])*|preset\([^)]*\)\.[\w.]+)(?:\*([-+0-9.e]+))? -->")
 MEASURED = re.compile(r"(" + NUMBER + r")\s*(?:%|deg|texels?|px|x|ms|s|MB)?\s*<!-- @ ([^:\s]+):(/\S*?)(?:\*([-+0-9.e]+))? -->")
@@ -188,17 +186,8 @@ def whole_numbers(bare):
     return [m.group(0) for m in INTEGER.finditer(bare)]
 
 
-def untied_baseline():
-    """Whole numbers not yet tied, counted per text and number (tests/docs/untied_integers.json)."""
-    path = ROOT / "tests" / "docs" / "untied_integers.json"
-    return json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
-
-
-def check_text(readme, kind="student", allowed=None, untied=None):
-    """The problems of one text. Untied whole numbers are collected in `untied` ({number: [line, ...]})
-    and only reported when they outnumber `allowed` ({number: count}, the baseline of the ones not tied yet)."""
+def check_text(readme, kind="student"):
     problems = []
-    untied = {} if untied is None else untied
     lines = readme.read_text(encoding="utf-8").splitlines()
     where = lambda i: f"{readme.relative_to(ROOT)}:{i + 1}"
     section = ""
@@ -252,7 +241,7 @@ def check_text(readme, kind="student", allowed=None, untied=None):
                 problems.append(f"{where(i)}: a figure with no marker to the code or a recorded run: {m.group(0)}")
             if not section.startswith("Sources"):  # citations: years, chapters and pages are not figures
                 for number in whole_numbers(bare):
-                    untied.setdefault(number, []).append(i)
+                    problems.append(f"{where(i)}: a whole number with no marker to the code or a recorded run: {number}")
         if line.startswith("|"):  # every row of a table has its header's columns (an edit may split a cell)
             cells = MARKER.sub("", without_code(line)).strip().strip("|").count("|") + 1
             columns = columns if i > 0 and lines[i - 1].startswith("|") else cells
@@ -263,13 +252,6 @@ def check_text(readme, kind="student", allowed=None, untied=None):
             bare = MARKER.sub("", limit)
             if re.search(r"\d", bare) and not MARKER.search(limit):
                 problems.append(f"{where(i)}: a limit in the check's table without a marker to the code: {limit.strip()}")
-    for number, at in sorted(untied.items()):
-        if len(at) > (allowed or {}).get(number, 0):
-            problems += [f"{where(i)}: a whole number with no marker to the code or a recorded run: {number}" for i in at]
-    for number, count in sorted((allowed or {}).items()):
-        if len(untied.get(number, [])) < count:
-            problems.append(f"{readme.relative_to(ROOT)}: tests/docs/untied_integers.json allows {count} untied {number}, "
-                            f"the text has {len(untied.get(number, []))}: lower the count")
     if kind == "student":
         for needed in ("Your task" if "Your task" in sections else "Your part", "How to see it", "The check", "Sources"):
             if needed not in sections:
@@ -282,21 +264,9 @@ def main():
     if not any(kind == "student" for _, kind in found):
         print("lab_texts: no lab texts found", file=sys.stderr)
         return 2
-    baseline = untied_baseline()
-    untied = {}
-    problems = []
-    for path, kind in found:
-        name = str(path.relative_to(ROOT))
-        untied[name] = {}
-        problems += check_text(path, kind, baseline.get(name, {}), untied[name])
-    if "--write-untied" in sys.argv:  # only ever to shrink the baseline, after tying numbers
-        left = {name: {n: len(at) for n, at in sorted(numbers.items(), key=lambda kv: int(kv[0]))}
-                for name, numbers in untied.items() if numbers}
-        (ROOT / "tests" / "docs" / "untied_integers.json").write_text(json.dumps(left, indent=1) + "\n", encoding="utf-8")
-        return 0
+    problems = [p for path, kind in found for p in check_text(path, kind)]
     for p in problems:
         print(p)
-    left = sum(len(at) for numbers in untied.values() for at in numbers.values())
     tied = measured = counted = 0
     for path, _ in found:
         text = path.read_text(encoding="utf-8")
@@ -304,8 +274,7 @@ def main():
         measured += len(MEASURED.findall(text))
         counted += len(COUNTED.findall(text))
     print(f"{len(found)} texts, {tied} figures tied to the code, {measured} to recorded runs, {counted} to the exam corpus, "
-          f"{len(problems)} disagreements; "
-          f"{left} whole numbers not tied yet (tests/docs/untied_integers.json)")
+          f"{len(problems)} disagreements")
     return 1 if problems else 0
 
 

@@ -29,9 +29,8 @@ MUTATIONS = [
     ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}}', '{{"vsm.bleed_delta", "0.15"}}',
      "preset(course).vsm.bleed_delta = 0.15"),
     ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
-    # Whole numbers: an untied one in a student's text; an integer constant and an element of a nested
-    # initializer changed in a lab.cpp; one more untied number than the baseline allows in an instructor
-    # note; a number tied since, still counted in the baseline.
+    # Whole numbers: an untied one in a student's text and in an instructor note; an integer constant and
+    # an element of a nested initializer changed in a lab.cpp.
     ("labs/05_moment_blur/README.md", "## How to see it", "A 512 map shows it best.\n\n## How to see it",
      "a whole number with no marker to the code or a recorded run: 512"),
     ("labs/06_pcf/lab.cpp", "constexpr int kMapSize = 64;", "constexpr int kMapSize = 128;", "kMapSize = 128"),
@@ -39,7 +38,6 @@ MUTATIONS = [
      "kHeldOutDistance[1] = 10"),
     ("labs/06_pcf/INSTRUCTOR.md", "## Costs", "Also timed at 1280 wide.\n\n## Costs",
      "a whole number with no marker to the code or a recorded run: 1280"),
-    ("tests/docs/untied_integers.json", '"1280": 1', '"1280": 2', "allows 2 untied 1280, the text has 1"),
     # A table cell split in two by an edit.
     ("labs/01_bias_tuning/README.md", "| doubling the slope slider: growth", "| doubling the slope slider: | growth",
      "a table row with 3 columns under a header with 2"),
@@ -53,17 +51,14 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md, the
-    test sources whose constants a text quotes, the baseline of untied whole numbers and the exam corpus
-    whose answers the README counts."""
-    for folder in ("labs", "renderer", "shaders", "docs/measured"):
+    """What the texts name: app/, labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md, the
+    test sources whose constants a text quotes and the exam corpus whose answers the README counts."""
+    for folder in ("app", "labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
     for source in ROOT.glob("tests/*.cpp"):
         shutil.copy(source, pathlib.Path(tmp) / "tests" / source.name)
     shutil.copytree(ROOT / "tests" / "answers", pathlib.Path(tmp) / "tests" / "answers")
-    (pathlib.Path(tmp) / "tests" / "docs").mkdir()
-    shutil.copy(ROOT / "tests" / "docs" / "untied_integers.json", pathlib.Path(tmp) / "tests" / "docs")
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
     shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
 
