@@ -37,9 +37,8 @@ using CascadeFitFn =
 // The solution: C_i = lambda * n (f / n)^(i / N) + (1 - lambda) * (n + (f - n) i / N).
 std::vector<float> practical_splits(float near_plane, float far_plane, int count, float lambda);
 // The solution: the slice's bounding sphere (centre the corners' mean, radius the largest distance to
-// it), its centre snapped down to whole texels along the light's image axes, a square box one texel
-// wider than the sphere on each side (the snap moves it by up to a texel): texel = 2 r / (map_size - 2);
-// depth over the scene's box.
+// it), a square box of side 2 r, its centre snapped down to whole texels (2 r / map_size) along the
+// light's image axes; depth over the scene's box.
 LightView fit_cascade_sphere(const FrustumCorners& slice, const glm::vec3& to_light, int map_size, const Bounds& scene);
 
 // The corners of the camera frustum between view depths `near_depth` and `far_depth` (> 0): near
