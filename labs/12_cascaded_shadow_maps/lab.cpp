@@ -10,7 +10,6 @@
 // changes no pixel's result within its cascade; (4) the error against the oracle below lab 2's single
 // fitted map at the same total texels, on the default scene and the PalmTree.
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -57,11 +56,6 @@ constexpr double kMaxErrorRatio = 0.9;
 constexpr float kEyeX = 3.3f, kEyeY = 0.9f, kEyeZ = 3.8f;
 
 OrbitCamera ground_camera(const Bounds& scene) {
-  if (const char* e = std::getenv("CSM_EYE")) {
-    float v[6];
-    std::sscanf(e, "%f,%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]);
-    return OrbitCamera::looking({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, 45.0f, scene);
-  }
   return OrbitCamera::looking({kEyeX, kEyeY, kEyeZ}, {1.2f, 0.3f, 1.4f}, 45.0f, scene);
 }
 
@@ -270,12 +264,6 @@ void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
             const glm::dvec4 p = m * glm::dvec4(glm::dvec3(scene.corner(i)), 1.0);
             deep = deep || std::abs(p.z) > 1.0 + kNdcTolerance;
           }
-          if (out && std::getenv("SHADOWLAB_DEBUG_CSM")) {
-            for (const glm::vec3& corner : slice) {
-              const glm::dvec4 p = m * glm::dvec4(glm::dvec3(corner), 1.0);
-              std::printf("debug: pose %d motion %d cascade %d corner ndc %.7f %.7f r %.6f\n", pose, motion, c, p.x, p.y, v.world_size.x * 0.5);
-            }
-          }
           outside += out;
           depth_outside += deep;
           const double size = 2.0 / std::abs(static_cast<double>(v.projection[0][0]));
@@ -445,15 +433,6 @@ void check_cascades(CheckContext& ctx, CheckResult& result) {
   const auto palm_path = data_dir() / kPalmTree;
   if (!std::filesystem::exists(palm_path)) throw std::runtime_error(palm_path.string() + ": model not found");
   ctx.use_scene(load_gltf(palm_path));
-  if (const char* e = std::getenv("CSM_PALM")) {
-    float v[6];
-    std::sscanf(e, "%f,%f,%f,%f,%f,%f", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]);
-    static OrbitCamera pc;
-    pc = OrbitCamera::looking({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, 45.0f, ctx.scene().bounds());
-    ParamSet palm = params;
-    palm.set("light.elevation", 30.0);
-    compare_with_single_map(ctx, result, "palm_tree_env", palm, hooks, nullptr, &pc, 0.0f, false);
-  }
   Bounds island;
   island.extend(glm::vec3(-40.0f, -1.0f, -57.0f));
   island.extend(glm::vec3(38.0f, 4.0f, 22.0f));
