@@ -36,6 +36,7 @@ constexpr const char* kPalmTree = "assets/models/PalmTree/PalmTree.gltf";
 // right answer stays below 1e-6 of it).
 constexpr double kSplitTolerance = 1e-4;
 constexpr int kSplitCases = 40;
+constexpr float kProbeNearMin = 0.01f;  // the probe's near planes: kProbeNearMin..5, far / near 5..5000
 constexpr double kMaxSplitMismatch = 0;  // share of the cases with a wrong distance: none
 // (2) The box: a corner of the slice more than this far outside [-1, 1] (NDC) is outside; a size change
 // of more than 0.01 texel across the map is a change; a grid phase that moves by more than 0.01 texel
@@ -171,7 +172,7 @@ void grade_splits(CheckContext& ctx, CheckResult& result, const CascadeFns& fns,
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::vector<CascadeCall> calls;
   for (int i = 0; i < kSplitCases; ++i) {
-    const float n = std::exp(std::log(0.01f) + unit(rng) * std::log(500.0f));
+    const float n = std::exp(std::log(kProbeNearMin) + unit(rng) * std::log(5.0f / kProbeNearMin));
     const float f = n * std::exp(std::log(5.0f) + unit(rng) * std::log(1000.0f));
     const int count = 1 + static_cast<int>(unit(rng) * kMaxCascades) % kMaxCascades;
     const float lambda = i == 0 ? 0.0f : i == 1 ? 1.0f : unit(rng);
@@ -374,9 +375,11 @@ void grade_shimmer(CheckContext& ctx, CheckResult& result, const ParamSet& param
 // whole view is reported.
 struct ErrorPair {
   Metrics cascades, single;
-  double ratio() const {
-    const double e_one = single.acne_rate_all + single.leak_rate_all;
-    return e_one > 0 ? (cascades.acne_rate_all + cascades.leak_rate_all) / e_one : 1.0;
+  static double error(const Metrics& m) { return m.acne_rate_all + m.leak_rate_all; }
+  double ratio() const { return error(single) > 0 ? error(cascades) / error(single) : 1.0; }
+  nlohmann::json to_json() const {
+    return {{"cascades", shadowlab::to_json(cascades)}, {"single_map", shadowlab::to_json(single)},
+            {"error_cascades", error(cascades)}, {"error_single_map", error(single)}, {"error_ratio", ratio()}};
   }
 };
 
@@ -398,19 +401,16 @@ void compare_with_single_map(CheckContext& ctx, CheckResult& result, const std::
       if (-(camera_view * glm::vec4(g.position[i], 1.0f)).z >= near_depth) near_truth.valid[i] = 0;
     graded = {compare(near_truth, csm.visibility), compare(near_truth, one.visibility)};
   }
-  result.metrics[tag] = {{"cascades", to_json(whole.cascades)}, {"single_map", to_json(whole.single)},
-                         {"error_ratio", whole.ratio()}};
+  result.metrics[tag] = whole.to_json();
   std::printf("    %s: error (acne + leak, all pixels) cascades %.5f, single map %.5f (ratio %.3f)\n", tag.c_str(),
-              whole.cascades.acne_rate_all + whole.cascades.leak_rate_all, whole.single.acne_rate_all + whole.single.leak_rate_all,
-              whole.ratio());
+              ErrorPair::error(whole.cascades), ErrorPair::error(whole.single), whole.ratio());
   std::string graded_tag = tag;
   if (near_depth > 0.0f) {
     graded_tag = tag + "_near";
-    result.metrics[graded_tag] = {{"near_depth", near_depth}, {"cascades", to_json(graded.cascades)},
-                                  {"single_map", to_json(graded.single)}, {"error_ratio", graded.ratio()}};
+    result.metrics[graded_tag] = graded.to_json();
+    result.metrics[graded_tag]["near_depth"] = near_depth;
     std::printf("    %s (view depth below %.2f): cascades %.5f, single map %.5f (ratio %.3f)\n", graded_tag.c_str(), near_depth,
-                graded.cascades.acne_rate_all + graded.cascades.leak_rate_all,
-                graded.single.acne_rate_all + graded.single.leak_rate_all, graded.ratio());
+                ErrorPair::error(graded.cascades), ErrorPair::error(graded.single), graded.ratio());
   }
   result.criteria.push_back({graded_tag + ".error_ratio_to_single_map", graded.ratio(), Criterion::kAtMost, kMaxErrorRatio,
                              "acne + leak at most 0.9 x lab 2's single map at the same texels",
