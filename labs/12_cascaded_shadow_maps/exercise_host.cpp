@@ -1,10 +1,10 @@
 // main() of a submitted lab 12 exercise when grading compiles it on its own (labs/cpp_exercise.h): each
 // CascadeCall is answered with the student's splits or cascade box. Not part of the shadowlab binary.
 #include <algorithm>
-#include <cstring>
 
 #include "labs/12_cascaded_shadow_maps/cascades_lab.h"
 #include "labs/cpp_exercise_host.h"
+#include "labs/light_view_answer.h"
 
 int main() {
   using namespace shadowlab;
@@ -22,11 +22,7 @@ int main() {
     box.min = {call.box_min[0], call.box_min[1], call.box_min[2]};
     box.max = {call.box_max[0], call.box_max[1], call.box_max[2]};
     const LightView v = cascade_fit_exercise(slice, {call.to_light[0], call.to_light[1], call.to_light[2]}, call.map_size, box);
-    std::memcpy(a.view, &v.view[0][0], sizeof a.view);
-    std::memcpy(a.projection, &v.projection[0][0], sizeof a.projection);
-    for (int i = 0; i < 3; ++i) a.image_x[i] = v.image_x[i], a.image_y[i] = v.image_y[i];
-    a.world_size[0] = v.world_size.x;
-    a.world_size[1] = v.world_size.y;
+    put_light_view(v, a);
     return a;
   });
 }

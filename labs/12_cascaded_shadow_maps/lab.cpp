@@ -21,6 +21,7 @@
 #include "labs/check.h"
 #include "labs/cpp_exercise.h"
 #include "labs/lab.h"
+#include "labs/light_view_answer.h"
 #include "renderer/cascade_pass.h"
 #include "renderer/gltf_loader.h"
 
@@ -118,16 +119,6 @@ std::vector<float> splits_of(const CascadeAnswer& a) {
   return std::vector<float>(a.splits, a.splits + std::clamp(a.split_count, 0, kMaxCascades + 1));
 }
 
-LightView view_of(const CascadeAnswer& a) {
-  LightView v;
-  std::memcpy(&v.view[0][0], a.view, sizeof a.view);
-  std::memcpy(&v.projection[0][0], a.projection, sizeof a.projection);
-  v.image_x = {a.image_x[0], a.image_x[1], a.image_x[2]};
-  v.image_y = {a.image_y[0], a.image_y[1], a.image_y[2]};
-  v.world_size = {a.world_size[0], a.world_size[1]};
-  return v;
-}
-
 std::shared_ptr<SubmittedCascades> submitted(const std::filesystem::path& file) {
   static std::map<std::filesystem::path, std::shared_ptr<SubmittedCascades>> built;
   auto& s = built[file];
@@ -148,7 +139,7 @@ CascadeFns fns_for_file(const std::filesystem::path& file) {
   auto s = submitted(file);
   return {[s](float n, float f, int count, float lambda) { return splits_of(s->call(splits_call(n, f, count, lambda))); },
           [s](const FrustumCorners& slice, const glm::vec3& to_light, int size, const Bounds& scene) {
-            return view_of(s->call(fit_call(slice, to_light, size, scene)));
+            return light_view_of(s->call(fit_call(slice, to_light, size, scene)));
           }};
 }
 
