@@ -299,14 +299,15 @@ void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
   };
   add("non_finite_boxes", non_finite, "no NaN or Inf in any cascade's matrix", "");
   add("slice_outside", outside, "every corner of the slice inside the box (within 1e-4)",
-      "the box must hold the whole slice: its half-size is the sphere's radius.");
+      "the box must hold the whole slice: the sphere's radius, plus one texel on each side for the snap "
+      "(texel = 2 r / (map_size - 2), half-size texel * map_size / 2).");
   add("casters_outside_depth", depth_outside, "every corner of the scene's box within the depth range",
       "fit the depth to the scene's box along the light (lab 2), not to the slice: casters outside the slice "
       "still cast into it.");
   add("size_changes", size_changes, "the box keeps its size (within 0.01 texel) when the camera turns",
       "fit the slice's bounding sphere, not a tight box: the sphere's radius does not depend on where the camera looks.");
   add("texel_crawl", crawls, "the box moves by whole texels (within 0.01) when the camera moves",
-      "snap the centre's light-space coordinates (dot with X and Y) to multiples of the texel, 2 r / map_size.");
+      "snap the centre's light-space coordinates (dot with X and Y) to multiples of the texel, 2 r / (map_size - 2).");
   add("world_size_mismatch", world_size_wrong, "world_size = the box's footprint (the bias reads it)",
       "set world_size = (2 r, 2 r).");
 }
