@@ -154,35 +154,49 @@ std::vector<ParamSpec> all_technique_specs() {
     all.insert(all.end(), group.begin(), group.end());
   return all;
 }
-const ParamSpec& technique_spec(const std::vector<ParamSpec>& all, std::string_view key) {
+// The spec of `key` in a family's table; `family` names it in the error ("technique", "vsm").
+const ParamSpec& spec_in(const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
   for (const auto& spec : all)
     if (spec.key == key) return spec;
-  throw std::out_of_range("no technique parameter " + std::string(key));
+  throw std::out_of_range(std::string("no ") + family + " parameter " + std::string(key));
+}
+// The tables the per-frame lookups of a default read: built once, so a frame allocates nothing.
+const std::vector<ParamSpec>& technique_table() {
+  static const std::vector<ParamSpec> all = all_technique_specs();
+  return all;
+}
+const std::vector<ParamSpec>& vsm_table() {
+  static const std::vector<ParamSpec> all = vsm_param_specs();
+  return all;
+}
+double param_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
+  if (params.find(key)) return params.get(key);
+  return spec_in(all, key, family).default_value;
+}
+const std::string& choice_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key,
+                                     const char* family) {
+  if (params.find(key)) return params.get_choice(key);
+  const ParamSpec& spec = spec_in(all, key, family);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
 }
 }  // namespace
 
 std::vector<ParamSpec> technique_param_specs(const std::vector<std::string>& keys) {
-  const std::vector<ParamSpec> all = all_technique_specs();
   std::vector<ParamSpec> out;
-  for (const auto& key : keys) out.push_back(technique_spec(all, key));
+  for (const auto& key : keys) out.push_back(spec_in(technique_table(), key, "technique"));
   return out;
 }
 
 double technique_param(const ParamSet& params, std::string_view key) {
-  if (params.find(key)) return params.get(key);
-  static const std::vector<ParamSpec> all = all_technique_specs();
-  return technique_spec(all, key).default_value;
+  return param_or_default(params, technique_table(), key, "technique");
 }
 
 const std::string& technique_choice(const ParamSet& params, std::string_view key) {
-  if (params.find(key)) return params.get_choice(key);
-  static const std::vector<ParamSpec> all = all_technique_specs();
-  const ParamSpec& spec = technique_spec(all, key);
-  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+  return choice_or_default(params, technique_table(), key, "technique");
 }
 
 LightType light_type(const ParamSet& params) {
-  const std::string type = technique_choice(params, "light.type");
+  const std::string& type = technique_choice(params, "light.type");
   return type == "spot" ? LightType::Spot : type == "point" ? LightType::Point : LightType::Directional;
 }
 
@@ -191,28 +205,15 @@ const char* light_type_name(LightType type) {
 }
 
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys) {
-  const std::vector<ParamSpec> all = vsm_param_specs();
   std::vector<ParamSpec> out;
-  for (const auto& key : keys) {
-    bool found = false;
-    for (const auto& spec : all)
-      if (spec.key == key) out.push_back(spec), found = true;
-    if (!found) throw std::out_of_range("no vsm parameter " + key);
-  }
+  for (const auto& key : keys) out.push_back(spec_in(vsm_table(), key, "vsm"));
   return out;
 }
 
-double vsm_param(const ParamSet& params, const std::string& key) {
-  if (params.find(key)) return params.get(key);
-  for (const auto& spec : vsm_param_specs())
-    if (spec.key == key) return spec.default_value;
-  throw std::out_of_range("no vsm parameter " + key);
-}
+double vsm_param(const ParamSet& params, std::string_view key) { return param_or_default(params, vsm_table(), key, "vsm"); }
 
-std::string vsm_choice(const ParamSet& params, const std::string& key) {
-  if (params.find(key)) return params.get_choice(key);
-  const ParamSpec spec = vsm_param_specs({key}).at(0);
-  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+const std::string& vsm_choice(const ParamSet& params, std::string_view key) {
+  return choice_or_default(params, vsm_table(), key, "vsm");
 }
 
 }  // namespace shadowlab

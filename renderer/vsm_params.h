@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "renderer/params.h"
@@ -15,8 +16,8 @@ std::vector<ParamSpec> vsm_param_specs();
 // The subset with these keys, in declaration order; throws std::out_of_range for an unknown key.
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys);
 // The value of a vsm.* key when the set declares it, else the declared default.
-double vsm_param(const ParamSet& params, const std::string& key);
+double vsm_param(const ParamSet& params, std::string_view key);
 // The same for a choice, by name.
-std::string vsm_choice(const ParamSet& params, const std::string& key);
+const std::string& vsm_choice(const ParamSet& params, std::string_view key);
 
 }  // namespace shadowlab

@@ -378,10 +378,7 @@ TEST_F(RendererTest, InteractiveTimingWaitsForNothing) {
 // A still frame allocates nothing on the C++ heap: every lab's frame as the window draws it (debug quad
 // hidden, light and camera still, timing off or in the query ring), once the first frames have built
 // what they need (programs, targets, the map). A frame whose light moves is seen to be counted.
-// DISABLED (issue 17 open): still fails for labs 1, 3, 4, 5, 13 and 14 (2 to 240 allocations per frame;
-// lab 1's cull directive reads data_dir() every frame, the moments labs allocate per frame). The shadow
-// pass's shape was one source and is fixed. Run with --gtest_also_run_disabled_tests to see the figures.
-TEST_F(RendererTest, DISABLED_StillFramesAllocateNothing) {
+TEST_F(RendererTest, StillFramesAllocateNothing) {
   FrameRequest req = request(false);
   for (const Lab& lab : all_labs()) {
     Renderer r;

@@ -15,17 +15,21 @@ namespace shadowlab {
 namespace {
 
 // The culling the student chose with `#define SHADOW_PASS_CULL ...` in the exercise file: 0 none,
-// 1 front, 2 back (the order of the shadow.cull parameter's choices). Re-read when the file changes.
+// 1 front, 2 back (the order of the shadow.cull parameter's choices). Re-read when the file changes;
+// called every frame, so an unchanged file costs one stat and no allocation (the path is resolved once).
 class CullDirective {
  public:
   explicit CullDirective(std::filesystem::path file) : file_(std::move(file)) {}
   int operator()() {
+    if (!resolved_) {
+      file_ = data_dir() / file_;
+      resolved_ = true;
+    }
     std::error_code ec;
-    const auto path = data_dir() / file_;
-    const auto time = std::filesystem::last_write_time(path, ec);
+    const auto time = std::filesystem::last_write_time(file_, ec);
     if (ec || time == seen_) return cull_;
     seen_ = time;
-    std::ifstream in(path);
+    std::ifstream in(file_);
     static const std::regex re(R"(^\s*#\s*define\s+SHADOW_PASS_CULL\s+(NONE|FRONT|BACK)\b)");
     cull_ = 0;
     for (std::string line; std::getline(in, line);) {
@@ -37,6 +41,7 @@ class CullDirective {
 
  private:
   std::filesystem::path file_;
+  bool resolved_ = false;
   std::filesystem::file_time_type seen_{};
   int cull_ = 0;
 };
