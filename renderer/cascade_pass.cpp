@@ -1,7 +1,9 @@
 #include "renderer/cascade_pass.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 #include "renderer/image_io.h"
 #include "renderer/lit_pass.h"
@@ -14,16 +16,24 @@ int csm_count(const ParamSet& params) {
   return params.find("csm.count") ? params.get_int("csm.count") : static_cast<int>(csm_param_specs()[0].default_value);
 }
 
-double csm_param(const ParamSet& params, const std::string& key) {
+double csm_param(const ParamSet& params, std::string_view key) {
   if (params.find(key)) return params.get(key);
   for (const auto& spec : csm_param_specs())
     if (spec.key == key) return spec.default_value;
-  throw std::out_of_range("no csm parameter " + key);
+  throw std::out_of_range("no csm parameter " + std::string(key));
 }
 
-void set_by_name(GLuint program, const std::string& name, const auto& set) {
-  const GLint at = glGetUniformLocation(program, name.c_str());
+void set_by_name(GLuint program, const char* name, const auto& set) {
+  const GLint at = glGetUniformLocation(program, name);
   if (at >= 0) set(at);
+}
+
+// "u_csm_tex[i]" and the other per-cascade uniform names, made once: a frame builds no string.
+using CascadeNames = std::array<std::string, kMaxCascades>;
+CascadeNames indexed_names(const char* base) {
+  CascadeNames names;
+  for (int i = 0; i < kMaxCascades; ++i) names[static_cast<std::size_t>(i)] = std::string(base) + "[" + std::to_string(i) + "]";
+  return names;
 }
 
 }  // namespace
@@ -42,6 +52,7 @@ const ShadowPass::Shape& CascadePass::shape() const {
 }
 
 bool CascadePass::set_includes(const IncludeMap&, const IncludeRules&) {
+  frame_valid_ = false;  // a new feature set may bring other split and fit functions
   const bool depth_ok = depth_.rebuild();
   return quad_.rebuild() && depth_ok;
 }
@@ -81,10 +92,17 @@ void CascadePass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
   static const CascadeSplitFn solution_splits;  // empty: compute_cascades uses the solution's
   static const CascadeFitFn solution_fit;
   const int budget = std::stoi(ctx.params.get_choice("shadow.map_size"));
-  frame_ = compute_cascades(ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds(), count_,
-                            static_cast<float>(csm_param(ctx.params, "csm.lambda")), budget,
-                            ctx.cascade_splits ? *ctx.cascade_splits : solution_splits,
-                            ctx.cascade_fit ? *ctx.cascade_fit : solution_fit);
+  const float lambda = static_cast<float>(csm_param(ctx.params, "csm.lambda"));
+  // The cascades depend on these alone: a still frame keeps them (and allocates nothing).
+  const FrameKey key{ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds().min,
+                     ctx.scene.bounds().max, count_, budget, lambda};
+  if (!frame_valid_ || !(key == frame_key_)) {
+    frame_ = compute_cascades(ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds(), count_, lambda,
+                              budget, ctx.cascade_splits ? *ctx.cascade_splits : solution_splits,
+                              ctx.cascade_fit ? *ctx.cascade_fit : solution_fit);
+    frame_key_ = key;
+    frame_valid_ = true;
+  }
   out.clear();
   for (const auto& view : frame_.views) {
     const glm::mat4 m = view.view_projection();
@@ -117,15 +135,17 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms&) co
   GLint current = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &current);
   const auto program = static_cast<GLuint>(current);
+  static const CascadeNames tex_names = indexed_names("u_csm_tex"), far_names = indexed_names("u_csm_far"),
+                            texel_names = indexed_names("u_csm_texel_depth");
   for (int i = 0; i < frame_.count; ++i) {
-    const LightView& v = frame_.views[static_cast<std::size_t>(i)];
+    const auto c = static_cast<std::size_t>(i);
+    const LightView& v = frame_.views[c];
     const glm::mat4 tex = clip_to_texture() * v.view_projection();
-    const std::string index = "[" + std::to_string(i) + "]";
-    set_by_name(program, "u_csm_tex" + index, [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &tex[0][0]); });
-    set_by_name(program, "u_csm_far" + index, [&](GLint at) { glUniform1f(at, frame_.splits[static_cast<std::size_t>(i) + 1]); });
+    set_by_name(program, tex_names[c].c_str(), [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &tex[0][0]); });
+    set_by_name(program, far_names[c].c_str(), [&](GLint at) { glUniform1f(at, frame_.splits[c + 1]); });
     // One texel's world size in the depth units of the comparison ([0, 1] over the box's depth).
     const float depth_range = 2.0f / std::abs(v.projection[2][2]);
-    set_by_name(program, "u_csm_texel_depth" + index,
+    set_by_name(program, texel_names[c].c_str(),
                 [&](GLint at) { glUniform1f(at, v.world_size.x / static_cast<float>(frame_.map_size) / depth_range); });
   }
   set_by_name(program, "u_csm_near", [&](GLint at) { glUniform1f(at, frame_.splits.empty() ? 0.0f : frame_.splits.front()); });

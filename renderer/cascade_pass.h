@@ -49,6 +49,16 @@ class CascadePass final : public ShadowPass {
   GlTexture maps_;
   std::vector<GlFramebuffer> fbos_;  // one per layer
   CascadeFrame frame_;
+  // What frame_ was computed from (frame_inputs recomputes it only when one of these changes).
+  struct FrameKey {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    glm::vec3 to_light{0.0f}, scene_min{0.0f}, scene_max{0.0f};
+    int count = 0, budget = 0;
+    float lambda = 0.0f;
+    bool operator==(const FrameKey&) const = default;
+  };
+  FrameKey frame_key_;
+  bool frame_valid_ = false;  // false: recompute on the next frame (new programs may mean new functions)
 };
 
 }  // namespace shadowlab
