@@ -29,28 +29,20 @@ constexpr int kWidth = 480, kHeight = 270;  // as the CI test (tests/test_gl_str
 // The grid for one technique: the error at each point, the worst difference from the origin's over the
 // offsets and over the scales, and the error without the local origin at 1e6 on the diagonal.
 nlohmann::json sweep_technique(const PlacementTechnique& t, const std::vector<PlacementPoint>& grid) {
-  const Scene scene = make_default_scene();  // the context keeps a reference
-  Renderer renderer;
-  CheckContext ctx(renderer, *find_lab(t.lab), Impl::Solution, scene, {});
-  const PlacementOutcome origin = measure_placement(ctx, t, Placement{}, kWidth, kHeight);
-  double worst_offset = 0.0, worst_scale = 0.0;
-  long non_finite = origin.non_finite;
+  const PlacementSweep sweep = sweep_placements(t, grid, kWidth, kHeight);
   nlohmann::json points = nlohmann::json::array();
-  for (const PlacementPoint& p : grid) {
-    const PlacementOutcome o = measure_placement(ctx, t, p.placement, kWidth, kHeight);
-    const double d = std::abs(o.error - origin.error);
-    (p.placement.scale == 1.0 ? worst_offset : worst_scale) = std::max(p.placement.scale == 1.0 ? worst_offset : worst_scale, d);
-    non_finite += o.non_finite;
-    points.push_back({{"placement", p.label}, {"error", o.error}, {"difference", d}});
-  }
-  Placement naive;
-  naive.offset = glm::dvec3(-1e6, 1e6, -1e6);
-  naive.local_origin = false;
-  const PlacementOutcome off = measure_placement(ctx, t, naive, kWidth, kHeight);
-  return {{"technique", t.name},           {"lab", t.lab},
-          {"error_at_origin", origin.error}, {"worst_difference_offsets", worst_offset},
-          {"worst_difference_scales", worst_scale}, {"error_1e6_without_local_origin", off.error},
-          {"non_finite", non_finite},      {"points", points}};
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    points.push_back({{"placement", grid[i].label},
+                      {"error", sweep.points[i].error},
+                      {"difference", std::abs(sweep.points[i].error - sweep.origin.error)}});
+  return {{"technique", t.name},
+          {"lab", t.lab},
+          {"error_at_origin", sweep.origin.error},
+          {"worst_difference_offsets", sweep.worst_offset},
+          {"worst_difference_scales", sweep.worst_scale},
+          {"error_1e6_without_local_origin", sweep.error_1e6_without_local_origin},
+          {"non_finite", sweep.non_finite},
+          {"points", points}};
 }
 
 // Frames of lab 1's solution on the default scene moved 1e6 along the diagonal, with the local origin and

@@ -1,5 +1,6 @@
 #include "labs/placement_sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -88,6 +89,28 @@ PlacementOutcome measure_placement(CheckContext& ctx, const PlacementTechnique& 
   for (float v : m.visibility)
     if (!std::isfinite(v)) ++o.non_finite;
   return o;
+}
+
+PlacementSweep sweep_placements(const PlacementTechnique& technique, const std::vector<PlacementPoint>& grid, int width,
+                                int height) {
+  const Scene scene = make_default_scene();  // the context keeps a reference
+  Renderer renderer;
+  CheckContext ctx(renderer, *find_lab(technique.lab), Impl::Solution, scene, {});
+  PlacementSweep sweep;
+  sweep.origin = measure_placement(ctx, technique, Placement{}, width, height);
+  sweep.non_finite = sweep.origin.non_finite;
+  for (const PlacementPoint& point : grid) {
+    const PlacementOutcome o = measure_placement(ctx, technique, point.placement, width, height);
+    double& worst = point.placement.scale == 1.0 ? sweep.worst_offset : sweep.worst_scale;
+    worst = std::max(worst, std::abs(o.error - sweep.origin.error));
+    sweep.non_finite += o.non_finite;
+    sweep.points.push_back(o);
+  }
+  Placement naive;
+  naive.offset = glm::dvec3(-1e6, 1e6, -1e6);
+  naive.local_origin = false;
+  sweep.error_1e6_without_local_origin = measure_placement(ctx, technique, naive, width, height).error;
+  return sweep;
 }
 
 }  // namespace shadowlab

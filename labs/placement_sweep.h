@@ -46,4 +46,18 @@ struct PlacementOutcome {
 PlacementOutcome measure_placement(CheckContext& ctx, const PlacementTechnique& technique, const Placement& placement,
                                    int width, int height);
 
+// One technique over a grid, against the same scene at the origin at scale 1 (the CI test and the bench).
+struct PlacementSweep {
+  PlacementOutcome origin;
+  std::vector<PlacementOutcome> points;  // one per grid point, in the grid's order
+  double worst_offset = 0.0;             // largest |error - origin's| over the points at scale 1
+  double worst_scale = 0.0;              // the same over the scaled points
+  long non_finite = 0;                   // over the origin and every point
+  // The default scene at 1e6 on the diagonal with the local origin off (float world coordinates).
+  double error_1e6_without_local_origin = 0.0;
+};
+// Renders with the technique's lab's solution on the default scene, through a renderer of its own.
+PlacementSweep sweep_placements(const PlacementTechnique& technique, const std::vector<PlacementPoint>& grid, int width,
+                                int height);
+
 }  // namespace shadowlab

@@ -38,6 +38,11 @@ std::size_t ParamSet::index_of(std::string_view key) const {
 
 double ParamSet::get(std::string_view key) const { return values_[index_of(key)]; }
 
+double ParamSet::get_or(std::string_view key, double fallback) const {
+  const ParamSpec* spec = find(key);
+  return spec ? values_[static_cast<std::size_t>(spec - specs_.data())] : fallback;
+}
+
 const std::string& ParamSet::get_choice(std::string_view key) const {
   const std::size_t i = index_of(key);
   return specs_[i].choices.at(static_cast<std::size_t>(values_[i]));

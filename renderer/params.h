@@ -56,6 +56,8 @@ class ParamSet {
   const ParamSpec* find(std::string_view key) const;
 
   double get(std::string_view key) const;  // throws std::out_of_range for an unknown key
+  // The value when the set declares the key, else `fallback` (one lookup).
+  double get_or(std::string_view key, double fallback) const;
   float get_float(std::string_view key) const { return static_cast<float>(get(key)); }
   int get_int(std::string_view key) const { return static_cast<int>(get(key)); }
   bool get_bool(std::string_view key) const { return get(key) != 0.0; }

@@ -26,10 +26,9 @@ std::vector<ParamSpec> placement_param_specs() {
 
 Placement placement_from(const ParamSet& params) {
   Placement p;
-  auto get = [&](const char* key, double fallback) { return params.find(key) ? params.get(key) : fallback; };
-  p.offset = {get("scene.offset_x", 0.0), get("scene.offset_y", 0.0), get("scene.offset_z", 0.0)};
-  p.scale = get("scene.scale", 1.0);
-  p.local_origin = get("scene.local_origin", 1.0) != 0.0;
+  p.offset = {params.get_or("scene.offset_x", 0.0), params.get_or("scene.offset_y", 0.0), params.get_or("scene.offset_z", 0.0)};
+  p.scale = params.get_or("scene.scale", 1.0);
+  p.local_origin = params.get_or("scene.local_origin", 1.0) != 0.0;
   return p;
 }
 

@@ -270,22 +270,15 @@ constexpr double kBrokenWithoutLocalOrigin = 0.1;
 // moved 1e3 ... 1e7 units along each axis, or scaled 1e-4 ... 1e5, with the error it has at the origin at
 // scale 1 (within 1e-4). A sample of the grid; `shadowlab bench --placement` runs all of it.
 TEST_F(StressGlTest, EveryTechniqueMatchesTheOriginAtAnyOffsetAndScale) {
-  const Scene scene = make_default_scene();
   const std::vector<PlacementPoint> grid = placement_grid(true);
   for (const PlacementTechnique& t : placement_techniques()) {
-    Renderer renderer;
-    CheckContext ctx(renderer, *find_lab(t.lab), Impl::Solution, scene, {});
-    const PlacementOutcome origin = measure_placement(ctx, t, Placement{}, 480, 270);
-    EXPECT_GT(origin.graded, 1000.0) << t.name;
-    double worst = 0.0;
-    for (const PlacementPoint& point : grid) {
-      const PlacementOutcome o = measure_placement(ctx, t, point.placement, 480, 270);
-      EXPECT_EQ(o.non_finite, 0) << t.name << ", " << point.label;
-      EXPECT_NEAR(o.error, origin.error, kPlacementTolerance) << t.name << ", " << point.label;
-      worst = std::max(worst, std::abs(o.error - origin.error));
-    }
-    std::printf("  %-38s error at the origin %.5f, worst difference over %zu placements %.2e\n", t.name.c_str(),
-                origin.error, grid.size(), worst);
+    const PlacementSweep sweep = sweep_placements(t, grid, 480, 270);
+    EXPECT_GT(sweep.origin.graded, 1000.0) << t.name;
+    EXPECT_EQ(sweep.non_finite, 0) << t.name;
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      EXPECT_NEAR(sweep.points[i].error, sweep.origin.error, kPlacementTolerance) << t.name << ", " << grid[i].label;
+    std::printf("  %-38s error at the origin %.5f, worst difference over %zu placements %.2e (offsets) %.2e (scales)\n",
+                t.name.c_str(), sweep.origin.error, grid.size(), sweep.worst_offset, sweep.worst_scale);
   }
 }
 
