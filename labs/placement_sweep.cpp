@@ -17,6 +17,7 @@ std::vector<PlacementTechnique> placement_techniques() {
       {"VSM, blurred r2 (lab 5)", 5, {"vsm.blur_radius=2"}},
       {"EVSM (lab 13)", 13, {}},
       {"MSM (lab 14)", 14, {}},
+      {"cascaded shadow maps (lab 12, C++)", 12, {}},
       {"spot light (lab 7)", 7, {}},
       {"point light, cube (lab 8)", 8, {}},
       {"shadow volumes, directional (lab 9)", 9, {"light.type=directional"}},

@@ -12,12 +12,20 @@ namespace {
 
 // The variance debug view draws the same scene through the same vertex shader with its own fragment
 // shader; it is never written into the G-buffer.
-bool writes_gbuffer(LitVariant variant, bool gbuffer) { return gbuffer && variant != LitVariant::RemapView; }
+bool writes_gbuffer(LitVariant variant, bool gbuffer) {
+  return gbuffer && variant != LitVariant::RemapView && variant != LitVariant::CascadeView;
+}
+
+// The debug views over the lit image: their own fragment shader, blended, no G-buffer.
+bool is_overlay(LitVariant variant) { return variant == LitVariant::RemapView || variant == LitVariant::CascadeView; }
 
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
                      LitVariant variant) {
-  const bool remap = variant == LitVariant::RemapView;
-  ProgramDesc d{"shaders/lit.vert", {}, remap ? "shaders/vsm/remap_view.frag" : "shaders/lit.frag", {}, includes, rules};
+  const bool remap = is_overlay(variant);
+  const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
+                         : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
+                                                              : "shaders/lit.frag";
+  ProgramDesc d{"shaders/lit.vert", {}, fragment, {}, includes, rules};
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
@@ -157,7 +165,7 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
   Program& p = program_for(it->second);
   if (p.u.generation != p.program.generation()) resolve(p.program, p.u);
-  if (variant == LitVariant::RemapView) {
+  if (is_overlay(variant)) {
     bind_color_target(framebuffer(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
   } else {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
@@ -206,6 +214,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) 
       break;
     }
     case LitVariant::RemapView:
+    case LitVariant::CascadeView:
       // The same vertices through the same vertex shader give the same depths: LEQUAL keeps exactly the
       // visible surfaces.
       glDepthFunc(GL_LEQUAL);

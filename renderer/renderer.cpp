@@ -25,6 +25,7 @@ struct Renderer::ShadowMapInputs {
   int cull = 0;
   long scene = 0, targets = 0;
   std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
+  std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
   bool operator==(const ShadowMapInputs&) const = default;
 };
 
@@ -194,8 +195,24 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
   camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(camera.fov_y_deg), aspect, camera.near_plane)
                                           : camera.projection(aspect);
   const int cull = features_.shadow_cull_override ? features_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
-  return {local_scene_,  *gpu_scene_,        params,           light_, stats_, *timer_, empty_vao_.id(), cull,
-          camera_view_, camera_projection_, infinite_far_plane, request.gbuffer};
+  std::optional<OrbitCamera> cascade_camera;
+  if (request.cascade_camera) cascade_camera = to_local(*request.cascade_camera, placement_);
+  return {local_scene_,
+          *gpu_scene_,
+          params,
+          light_,
+          stats_,
+          *timer_,
+          empty_vao_.id(),
+          cull,
+          camera_view_,
+          camera_projection_,
+          infinite_far_plane,
+          request.gbuffer,
+          cascade_camera ? cascade_camera->view() : camera_view_,
+          cascade_camera ? cascade_camera->projection(aspect) : camera_projection_,
+          &features_.cascade_splits,
+          &features_.cascade_fit};
 }
 
 void Renderer::update_shadow_map(PassContext& ctx) {
@@ -203,11 +220,13 @@ void Renderer::update_shadow_map(PassContext& ctx) {
   if (!inputs_scratch_) inputs_scratch_ = std::make_unique<ShadowMapInputs>();
   if (!shadow_inputs_) shadow_inputs_ = std::make_unique<ShadowMapInputs>();
   shadow_map_inputs(ctx, *inputs_scratch_);
+  shadow_->frame_inputs(ctx, inputs_scratch_->pass_inputs);
   if (shadow_inputs_valid_ && *shadow_inputs_ == *inputs_scratch_) return;
   shadow_->draw_map(ctx);
   ++stats_.shadow_passes;
   // Programs a pass builds on first use (a blur method's) count from now on.
   shadow_map_inputs(ctx, *shadow_inputs_);
+  shadow_inputs_->pass_inputs = inputs_scratch_->pass_inputs;  // into the capacity it already has
   shadow_inputs_valid_ = true;
 }
 

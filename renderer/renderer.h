@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/cascades.h"
 #include "renderer/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gl_objects.h"
@@ -63,6 +64,10 @@ struct Features {
   // Spot and point lights stand at light.position_*; a spot aims at the scene's centre with the
   // half-angle light.cone_deg.
   std::optional<LightType> light;
+  // Cascaded shadow maps: the split distances and each cascade's light box (empty: the solution's,
+  // renderer/cascades.h).
+  CascadeSplitFn cascade_splits;
+  CascadeFitFn cascade_fit;
 };
 
 struct FrameRequest {
@@ -75,6 +80,9 @@ struct FrameRequest {
   // view have nothing to read). Not with gbuffer.
   bool to_window = false;
   GLuint window_framebuffer = 0;  // with to_window: the framebuffer that stands for the window (0: its own)
+  // Cascaded shadow maps: fit the cascades to this camera instead of the view's (a debug view freezing the
+  // cascades while the view moves; lab 12's check moves this camera under a still view).
+  std::optional<OrbitCamera> cascade_camera;
 };
 
 class Renderer {

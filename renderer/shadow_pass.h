@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/cascades.h"
 #include "renderer/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_mesh.h"
@@ -55,6 +56,7 @@ enum class LitVariant {
   VolumeAmbient,   // shadow volumes: ambient only, writing depth (and the G-buffer)
   VolumeAdditive,  // shadow volumes: the light's share, added where the stencil counted no volume
   RemapView,       // variance shadow maps' debug view: tints where the light-bleeding remap acted
+  CascadeView,     // cascaded shadow maps' debug view: tints each pixel by its cascade
 };
 
 // What a pass reads and records during one frame.
@@ -70,6 +72,12 @@ struct PassContext {
   glm::mat4 camera_view{1.0f}, camera_projection{1.0f};
   bool infinite_far_plane = false;  // camera_projection's far plane is at infinity (shadow volumes)
   bool gbuffer = false;             // the lit pass also writes visibility, positions and normals
+  // Cascaded shadow maps: the camera the cascades are fitted to (the view's, unless a frame asks for
+  // another: FrameRequest::cascade_camera), and a feature's split and fit functions (null or empty: the
+  // solution's; pointers into the renderer's features, so that a frame copies no function).
+  glm::mat4 cascade_view{1.0f}, cascade_projection{1.0f};
+  const CascadeSplitFn* cascade_splits = nullptr;
+  const CascadeFitFn* cascade_fit = nullptr;
 
   glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
   template <typename F>
@@ -120,6 +128,10 @@ class ShadowPass {
 
   // 1. Targets for these parameters; true when they were (re)allocated and the map must be drawn again.
   virtual bool ensure_targets(const ParamSet& params) = 0;
+  // What the map depends on besides the parameters, the light, the scene, the targets and the programs,
+  // computed every frame before the map is (perhaps) drawn: a change redraws it. Cascades: their
+  // matrices, which follow the camera. Filled in place (`out` keeps its capacity from frame to frame).
+  virtual void frame_inputs(PassContext&, std::vector<float>& out) { out.clear(); }
   // 2. The shadow map, from the light.
   virtual void draw_map(PassContext&) {}
   virtual void draw_view_passes(PassContext&, LitPass&) {}

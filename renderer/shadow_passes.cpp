@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "renderer/cascade_pass.h"
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/depth_map_pass.h"
 #include "renderer/image_io.h"
@@ -29,6 +30,8 @@ const ShadowPassEntry kEntries[] = {
     {ShadowTechnique::Moments, &any_light, &MomentsPass::default_includes, &make<MomentsPass>},
     {ShadowTechnique::ShadowVolumes, &any_light, &ShadowVolumePass::default_includes, &make<ShadowVolumePass>},
     {ShadowTechnique::MomentShadowMaps, &any_light, &MsmPass::default_includes, &make<MsmPass>},
+    {ShadowTechnique::CascadedShadowMaps, [](LightType l) { return l == LightType::Directional; },
+     &CascadePass::default_includes, &make<CascadePass>},
 };
 
 }  // namespace

@@ -15,7 +15,9 @@ namespace shadowlab {
 // of distances for a point light) or the first two moments of depth (colour texture, filtered, read
 // through Chebyshev's bound). ShadowVolumes has no shadow map: stencil shadow volumes from adjacency.
 // MomentShadowMaps: four power moments (RGBA32F) read through the Hamburger bound (renderer/msm_pass.h).
-enum class ShadowTechnique { Depth, Moments, ShadowVolumes, MomentShadowMaps };
+// CascadedShadowMaps: a directional light's depth maps, one per slice of the camera's view range
+// (renderer/cascade_pass.h).
+enum class ShadowTechnique { Depth, Moments, ShadowVolumes, MomentShadowMaps, CascadedShadowMaps };
 
 class ShadowPass;
 

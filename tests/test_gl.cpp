@@ -121,6 +121,35 @@ TEST_F(RendererTest, ShadowPassSkippedWhileTheLightStaysPut) {
   EXPECT_EQ(r.stats().shadow_passes, 2);
 }
 
+// Cascades follow the camera: their matrices are an input of the map (ShadowPass::frame_inputs), so a
+// camera move redraws it, a still camera does not, and a frozen cascade camera (FrameRequest::cascade_camera)
+// keeps it while the view moves.
+TEST_F(RendererTest, CascadeMapsRedrawWhenTheCameraMovesOnly) {
+  Renderer r;
+  r.set_scene(scene);
+  Features csm;
+  csm.technique = ShadowTechnique::CascadedShadowMaps;
+  ASSERT_TRUE(r.set_features(csm)) << r.shader_error();
+  FrameRequest req = request(false);
+  req.width = 160;
+  req.height = 90;
+  for (int i = 0; i < 5; ++i) r.render(params, req);
+  EXPECT_EQ(r.stats().shadow_passes, 1);  // a still camera: drawn once
+  for (int i = 0; i < 5; ++i) {
+    req.camera.yaw_deg += 3.6f;
+    r.render(params, req);
+  }
+  EXPECT_EQ(r.stats().shadow_passes, 6);  // every move of the camera the cascades follow redraws
+  req.cascade_camera = req.camera;
+  r.render(params, req);
+  const long frozen = r.stats().shadow_passes;
+  for (int i = 0; i < 5; ++i) {
+    req.camera.yaw_deg += 3.6f;  // the view moves, the cascades' camera does not
+    r.render(params, req);
+  }
+  EXPECT_EQ(r.stats().shadow_passes, frozen);
+}
+
 TEST_F(RendererTest, GBufferMatchesTheScene) {
   Renderer r;
   r.set_scene(scene);

@@ -335,7 +335,7 @@ TEST_F(StressGlTest, EmptySceneAndSinglePointRenderWithoutNaN) {
   point.meshes.push_back(m);
   const Scene empty;
   for (const Scene* s : {static_cast<const Scene*>(&point), &empty}) {
-    for (int lab : {1, 4}) {
+    for (int lab : {1, 4, 12}) {  // 12: cascades fitted to an empty box and a zero-area one
       Renderer r;
       r.set_scene(*s);
       ASSERT_TRUE(r.set_features(find_lab(lab)->hooks(Impl::Solution)));

@@ -16,6 +16,7 @@
 #include "labs/check.h"
 #include "labs/cpp_exercise.h"
 #include "labs/lab.h"
+#include "labs/light_view_answer.h"
 #include "renderer/gltf_loader.h"
 
 namespace shadowlab {
@@ -105,7 +106,7 @@ class SubmittedFit {
   LightView operator()(const Bounds& box, const glm::vec3& to_light) {
     const FitCall call = call_for(box, to_light);
     const auto found = answered_.find(key(call));
-    return view_of(found != answered_.end() ? found->second : program_.call<FitAnswer>(call));
+    return light_view_of(found != answered_.end() ? found->second : program_.call<FitAnswer>(call));
   }
   void prefetch(const Bounds& box, const std::vector<glm::vec3>& directions) {
     std::vector<FitCall> calls;
@@ -133,15 +134,6 @@ class SubmittedFit {
     Key k;
     std::memcpy(k.data(), &c, sizeof k);
     return k;
-  }
-  static LightView view_of(const FitAnswer& a) {
-    LightView v;
-    std::memcpy(&v.view[0][0], a.view, sizeof a.view);
-    std::memcpy(&v.projection[0][0], a.projection, sizeof a.projection);
-    v.image_x = {a.image_x[0], a.image_x[1], a.image_x[2]};
-    v.image_y = {a.image_y[0], a.image_y[1], a.image_y[2]};
-    v.world_size = {a.world_size[0], a.world_size[1]};
-    return v;
   }
   CppExercise program_;
   std::map<Key, FitAnswer> answered_;

@@ -45,6 +45,9 @@ VARIANTS = [
     # Lab 13: the exponent swept (the solution).
     *[(13, f"solution_exponent_{c}", "check", ["--impl", "solution", "--set", f"vsm.evsm_exponent={c}"])
       for c in ("5", "10", "20")],
+    # Lab 12: the cascade count and the split blend varied (the solution): where cascades win.
+    *[(12, f"solution_count_{n}", "check", ["--impl", "solution", "--set", f"csm.count={n}"]) for n in ("1", "2", "8")],
+    *[(12, f"solution_lambda_{l}", "check", ["--impl", "solution", "--set", f"csm.lambda={l}"]) for l in ("0", "0.5", "1")],
 ]
 
 

@@ -1,0 +1,205 @@
+#include "renderer/cascade_pass.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+#include "renderer/image_io.h"
+#include "renderer/lit_pass.h"
+
+namespace shadowlab {
+
+namespace {
+
+int csm_count(const ParamSet& params) {
+  return params.find("csm.count") ? params.get_int("csm.count") : static_cast<int>(csm_param_specs()[0].default_value);
+}
+
+double csm_param(const ParamSet& params, std::string_view key) {
+  if (params.find(key)) return params.get(key);
+  for (const auto& spec : csm_param_specs())
+    if (spec.key == key) return spec.default_value;
+  throw std::out_of_range("no csm parameter " + std::string(key));
+}
+
+void set_by_name(GLuint program, const char* name, const auto& set) {
+  const GLint at = glGetUniformLocation(program, name);
+  if (at >= 0) set(at);
+}
+
+// "u_csm_tex[i]" and the other per-cascade uniform names, made once: a frame builds no string.
+using CascadeNames = std::array<std::string, kMaxCascades>;
+CascadeNames indexed_names(const char* base) {
+  CascadeNames names;
+  for (int i = 0; i < kMaxCascades; ++i) names[static_cast<std::size_t>(i)] = std::string(base) + "[" + std::to_string(i) + "]";
+  return names;
+}
+
+}  // namespace
+
+CascadePass::CascadePass()
+    : depth_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}}),
+      quad_({"shaders/fullscreen.vert", {}, "shaders/csm/debug_layer.frag", {}, {}}) {}
+
+std::map<std::string, std::string> CascadePass::default_includes(LightType) {
+  return {{"lab/visibility.glsl", "shaders/csm/visibility.glsl"}};
+}
+
+const ShadowPass::Shape& CascadePass::shape() const {
+  static const Shape cascades{true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::CascadeView}};
+  return cascades;
+}
+
+bool CascadePass::set_includes(const IncludeMap&, const IncludeRules&) {
+  frame_valid_ = false;  // a new feature set may bring other split and fit functions
+  const bool depth_ok = depth_.rebuild();
+  return quad_.rebuild() && depth_ok;
+}
+
+void CascadePass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(depth_);
+  f(quad_);
+}
+
+bool CascadePass::ensure_targets(const ParamSet& params) {
+  const int count = csm_count(params);
+  const int size = cascade_map_size(std::stoi(params.get_choice("shadow.map_size")), count);
+  if (size == size_ && count == count_) return false;
+  maps_ = GlTexture::create();
+  glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, count, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  fbos_.clear();
+  for (int layer = 0; layer < count; ++layer) {
+    fbos_.push_back(GlFramebuffer::create());
+    glBindFramebuffer(GL_FRAMEBUFFER, fbos_.back().id());
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, maps_.id(), 0, layer);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    check_framebuffer("cascade shadow map");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  size_ = size;
+  count_ = count;
+  return true;
+}
+
+void CascadePass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
+  static const CascadeSplitFn solution_splits;  // empty: compute_cascades uses the solution's
+  static const CascadeFitFn solution_fit;
+  const int budget = std::stoi(ctx.params.get_choice("shadow.map_size"));
+  const float lambda = static_cast<float>(csm_param(ctx.params, "csm.lambda"));
+  // The cascades depend on these alone: a still frame keeps them (and allocates nothing).
+  const FrameKey key{ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds().min,
+                     ctx.scene.bounds().max, count_, budget, lambda};
+  if (!frame_valid_ || !(key == frame_key_)) {
+    frame_ = compute_cascades(ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds(), count_, lambda,
+                              budget, ctx.cascade_splits ? *ctx.cascade_splits : solution_splits,
+                              ctx.cascade_fit ? *ctx.cascade_fit : solution_fit);
+    frame_key_ = key;
+    frame_valid_ = true;
+  }
+  out.clear();
+  for (const auto& view : frame_.views) {
+    const glm::mat4 m = view.view_projection();
+    out.insert(out.end(), &m[0][0], &m[0][0] + 16);
+  }
+}
+
+void CascadePass::draw_map(PassContext& ctx) {
+  ctx.timed("shadow", [&] {
+    ctx.count_texels([&] {
+      const GLint at = glGetUniformLocation(depth_.id(), "u_light_view_proj");
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+      glClearDepth(1.0);
+      glUseProgram(depth_.id());
+      for (int i = 0; i < count_; ++i) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbos_[static_cast<std::size_t>(i)].id());
+        glViewport(0, 0, size_, size_);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        const glm::mat4 light_view_proj = frame_.views[static_cast<std::size_t>(i)].view_projection();
+        glUniformMatrix4fv(at, 1, GL_FALSE, &light_view_proj[0][0]);
+        draw_casters_from_light(ctx, light_view_proj);
+      }
+    });
+  });
+}
+
+void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms&) const {
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  const auto program = static_cast<GLuint>(current);
+  static const CascadeNames tex_names = indexed_names("u_csm_tex"), far_names = indexed_names("u_csm_far"),
+                            texel_names = indexed_names("u_csm_texel_depth");
+  for (int i = 0; i < frame_.count; ++i) {
+    const auto c = static_cast<std::size_t>(i);
+    const LightView& v = frame_.views[c];
+    const glm::mat4 tex = clip_to_texture() * v.view_projection();
+    set_by_name(program, tex_names[c].c_str(), [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &tex[0][0]); });
+    set_by_name(program, far_names[c].c_str(), [&](GLint at) { glUniform1f(at, frame_.splits[c + 1]); });
+    // One texel's world size in the depth units of the comparison ([0, 1] over the box's depth).
+    const float depth_range = 2.0f / std::abs(v.projection[2][2]);
+    set_by_name(program, texel_names[c].c_str(),
+                [&](GLint at) { glUniform1f(at, v.world_size.x / static_cast<float>(frame_.map_size) / depth_range); });
+  }
+  set_by_name(program, "u_csm_near", [&](GLint at) { glUniform1f(at, frame_.splits.empty() ? 0.0f : frame_.splits.front()); });
+  set_by_name(program, "u_csm_count", [&](GLint at) { glUniform1i(at, frame_.count); });
+  set_by_name(program, "u_csm_camera_view", [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &frame_.camera_view[0][0]); });
+  set_by_name(program, "u_csm_blend", [&](GLint at) { glUniform1f(at, static_cast<float>(csm_param(params, "csm.blend"))); });
+  set_by_name(program, "u_csm_maps", [&](GLint at) { glUniform1i(at, 2); });
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
+  glActiveTexture(GL_TEXTURE0);
+}
+
+void CascadePass::draw_views(PassContext& ctx, LitPass& lit) {
+  if (csm_param(ctx.params, "csm.show_cascades") != 0.0)
+    ctx.timed("cascade_view", [&] { lit.draw(ctx, *this, LitVariant::CascadeView); });
+}
+
+void CascadePass::draw_debug_quads(const DebugQuadArea& area) {
+  // One quad per cascade, right to left from the corner, nearest cascade rightmost; smaller when many.
+  const int side = count_ > 2 ? area.side * 2 / count_ : area.side;
+  glUseProgram(quad_.id());
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
+  set_by_name(quad_.id(), "u_depth_maps", [](GLint at) { glUniform1i(at, 0); });
+  glBindVertexArray(area.empty_vao);
+  for (int i = 0; i < count_; ++i) {
+    glViewport(area.width - (i + 1) * (side + 4) - 4, 8, side, side);
+    set_by_name(quad_.id(), "u_layer", [&](GLint at) { glUniform1f(at, static_cast<float>(i)); });
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+}
+
+std::vector<float> CascadePass::read_layer(int layer) const {
+  if (layer < 0 || layer >= count_) throw std::out_of_range("no cascade " + std::to_string(layer));
+  return read_pixels(fbos_[static_cast<std::size_t>(layer)].id(), GL_NONE, size_, size_, GL_DEPTH_COMPONENT, 1);
+}
+
+std::vector<float> CascadePass::read_depth(int* size) const {
+  *size = size_;
+  return count_ > 0 ? read_layer(0) : std::vector<float>{};
+}
+
+std::vector<std::uint8_t> CascadePass::image(int* size) const {
+  const int grid = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(count_, 1)))));
+  *size = grid * size_;
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(*size) * static_cast<std::size_t>(*size) * 4, 255);
+  for (int i = 0; i < count_; ++i) {
+    const std::vector<std::uint8_t> layer = depth_map_image(read_layer(i), size_);  // top row first
+    const int gx = i % grid, gy = i / grid;
+    for (int y = 0; y < size_; ++y)
+      std::copy_n(&layer[static_cast<std::size_t>(y) * size_ * 4], static_cast<std::size_t>(size_) * 4,
+                  &rgba[((static_cast<std::size_t>(gy) * size_ + y) * *size + static_cast<std::size_t>(gx) * size_) * 4]);
+  }
+  return rgba;
+}
+
+}  // namespace shadowlab
