@@ -12,16 +12,17 @@ namespace shadowlab {
 
 namespace {
 
-int csm_count(const ParamSet& params) {
-  return params.find("csm.count") ? params.get_int("csm.count") : static_cast<int>(csm_param_specs()[0].default_value);
-}
-
+// The value of a csm.* key when the set declares it, else the declared default (read from a table built
+// once: the lit inputs read these every frame).
 double csm_param(const ParamSet& params, std::string_view key) {
   if (params.find(key)) return params.get(key);
-  for (const auto& spec : csm_param_specs())
+  static const std::vector<ParamSpec> specs = csm_param_specs();
+  for (const auto& spec : specs)
     if (spec.key == key) return spec.default_value;
   throw std::out_of_range("no csm parameter " + std::string(key));
 }
+
+int csm_count(const ParamSet& params) { return static_cast<int>(csm_param(params, "csm.count")); }
 
 void set_by_name(GLuint program, const char* name, const auto& set) {
   const GLint at = glGetUniformLocation(program, name);
