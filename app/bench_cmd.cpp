@@ -45,6 +45,7 @@ struct BenchScene {
   Scene scene;
   std::vector<std::pair<std::string, std::string>> sets;  // e.g. a grazing light
   std::optional<Bounds> view;                            // what the camera frames (default: the scene)
+  std::optional<OrbitCamera> camera;                     // or a camera standing inside the scene
 };
 
 struct BenchPoint {
@@ -89,18 +90,25 @@ const Lab& blurred_moments_lab() {
 
 std::vector<BenchScene> scenes(const std::string& scene_file) {
   std::vector<BenchScene> out;
-  out.push_back({"default", make_default_scene(), {}, std::nullopt});
-  out.push_back({"grazing", make_default_scene(), {{"light.elevation", "10"}}, std::nullopt});
-  out.push_back({"stacked", make_stacked_occluders_scene(), {}, std::nullopt});
+  out.push_back({"default", make_default_scene(), {}, std::nullopt, std::nullopt});
+  out.push_back({"grazing", make_default_scene(), {{"light.elevation", "10"}}, std::nullopt, std::nullopt});
+  out.push_back({"stacked", make_stacked_occluders_scene(), {}, std::nullopt, std::nullopt});
   if (!scene_file.empty()) {
-    out.push_back({fs::path(scene_file).stem().string(), load_gltf(scene_file), {{"light.elevation", "30"}}, std::nullopt});
+    out.push_back({fs::path(scene_file).stem().string(), load_gltf(scene_file), {{"light.elevation", "30"}}, std::nullopt,
+                   std::nullopt});
   } else {
     // The PalmTree: 10k triangles on a 392-unit sea; the camera looks at its 80-unit island.
     const fs::path palm = data_dir() / "assets" / "models" / "PalmTree" / "PalmTree.gltf";
     Bounds island;
     island.extend(glm::vec3(-40.0f, -1.0f, -57.0f));
     island.extend(glm::vec3(38.0f, 4.0f, 22.0f));
-    out.push_back({"palmtree", load_gltf(palm), {{"light.elevation", "30"}}, island});
+    Scene palm_tree = load_gltf(palm);
+    // The same scene seen from a camera standing on the island among the palms (lab 12's): the view
+    // reaches the sea's edge, far beyond what is near the camera, where cascades are meant to win.
+    const OrbitCamera on_island =
+        OrbitCamera::looking({6.0f, 2.5f, 9.0f}, {-2.5f, 1.0f, 1.0f}, 45.0f, palm_tree.bounds());
+    out.push_back({"palmtree", palm_tree, {{"light.elevation", "30"}}, island, std::nullopt});
+    out.push_back({"palmtree-island", std::move(palm_tree), {{"light.elevation", "30"}}, std::nullopt, on_island});
   }
   return out;
 }
@@ -115,6 +123,7 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   params.set("view.debug_quad", 0.0);
   if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
   FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
+  if (s.camera) request.camera = *s.camera;
 
   BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
   std::map<std::string, std::vector<double>> pass_ms;

@@ -14,11 +14,8 @@ namespace {
 // The value of a csm.* key when the set declares it, else the declared default (read from a table built
 // once: the lit inputs read these every frame).
 double csm_param(const ParamSet& params, std::string_view key) {
-  if (params.find(key)) return params.get(key);
-  static const std::vector<ParamSpec> specs = csm_param_specs();
-  for (const auto& spec : specs)
-    if (spec.key == key) return spec.default_value;
-  throw std::out_of_range("no csm parameter " + std::string(key));
+  static const std::vector<ParamSpec> table = csm_param_specs();
+  return param_or_default(params, table, key, "csm");
 }
 
 int csm_count(const ParamSet& params) { return static_cast<int>(csm_param(params, "csm.count")); }

@@ -181,4 +181,23 @@ void ParamSet::values_invalidating(unsigned bits, std::vector<std::pair<std::str
   out.resize(n);
 }
 
+
+const ParamSpec& spec_in(const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
+  for (const auto& spec : all)
+    if (spec.key == key) return spec;
+  throw std::out_of_range(std::string("no ") + family + " parameter " + std::string(key));
+}
+
+double param_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
+  if (params.find(key)) return params.get(key);
+  return spec_in(all, key, family).default_value;
+}
+
+const std::string& choice_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key,
+                                     const char* family) {
+  if (params.find(key)) return params.get_choice(key);
+  const ParamSpec& spec = spec_in(all, key, family);
+  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
+}
+
 }  // namespace shadowlab

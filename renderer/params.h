@@ -88,6 +88,15 @@ class ParamSet {
   std::size_t index_of(std::string_view key) const;
 };
 
+// A family's table of specs (the technique's, vsm's, csm's: built once, so that a frame allocates
+// nothing) read by key: the spec, the set's value or the declared default when the set lacks the key,
+// and a choice's name likewise. `family` names the table in the error for a key it does not declare.
+const ParamSpec& spec_in(const std::vector<ParamSpec>& table, std::string_view key, const char* family);
+double param_or_default(const ParamSet& params, const std::vector<ParamSpec>& table, std::string_view key,
+                        const char* family);
+const std::string& choice_or_default(const ParamSet& params, const std::vector<ParamSpec>& table, std::string_view key,
+                                     const char* family);
+
 // The renderer's own parameters (renderer_params.cpp); feature sets add theirs and may change these
 // defaults.
 std::vector<ParamSpec> renderer_param_specs();

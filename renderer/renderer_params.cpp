@@ -154,12 +154,6 @@ std::vector<ParamSpec> all_technique_specs() {
     all.insert(all.end(), group.begin(), group.end());
   return all;
 }
-// The spec of `key` in a family's table; `family` names it in the error ("technique", "vsm").
-const ParamSpec& spec_in(const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
-  for (const auto& spec : all)
-    if (spec.key == key) return spec;
-  throw std::out_of_range(std::string("no ") + family + " parameter " + std::string(key));
-}
 // The tables the per-frame lookups of a default read: built once, so a frame allocates nothing.
 const std::vector<ParamSpec>& technique_table() {
   static const std::vector<ParamSpec> all = all_technique_specs();
@@ -168,16 +162,6 @@ const std::vector<ParamSpec>& technique_table() {
 const std::vector<ParamSpec>& vsm_table() {
   static const std::vector<ParamSpec> all = vsm_param_specs();
   return all;
-}
-double param_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
-  if (params.find(key)) return params.get(key);
-  return spec_in(all, key, family).default_value;
-}
-const std::string& choice_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key,
-                                     const char* family) {
-  if (params.find(key)) return params.get_choice(key);
-  const ParamSpec& spec = spec_in(all, key, family);
-  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
 }
 }  // namespace
 
