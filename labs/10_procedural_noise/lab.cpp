@@ -393,10 +393,10 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"noise.view", "Floor view", ParamKind::Choice, 0, 0, 3,
        "What the floor shows: the wood, the noise, the octave sum, or the three octaves as red, green, blue.",
        {"wood", "noise", "octave sum", "octaves (RGB)"}},
-      {"noise.scale", "Noise scale", ParamKind::Float, 2.0, 0.25, 8.0,
+      {"noise.scale", "Noise scale", ParamKind::Float, 1.5, 0.25, 8.0,
        "Noise units (gradient texels) per world unit on the floor.", {}},
-      {"noise.rings", "Rings per unit", ParamKind::Float, 10.0, 1.0, 40.0, "The wood's rings per world unit.", {}},
-      {"noise.turbulence", "Turbulence", ParamKind::Float, 1.5, 0.0, 6.0,
+      {"noise.rings", "Rings per unit", ParamKind::Float, 3.0, 1.0, 40.0, "The wood's rings per world unit.", {}},
+      {"noise.turbulence", "Turbulence", ParamKind::Float, 0.8, 0.0, 6.0,
        "How far the octave sum pushes the rings, in rings.", {}},
   };
   lab.presets = {
