@@ -326,6 +326,9 @@ void check_noise(CheckContext& ctx, CheckResult& result) {
     err_oct = std::max(err_oct, std::abs(value(g0 + 3 * n + i) -
                                          (value(g0 + i) + 0.5 * value(g0 + n + i) + 0.25 * value(g0 + 2 * n + i))));
 
+  // The held-out part: the off-grid, lattice and border points are drawn from the seed.
+  result.conditions.push_back({{"tag", "points"}, {"seed", ctx.seed}, {"off_grid", kRandomPoints},
+                               {"reach", kRandomReach}, {"lattice", kLatticePoints}, {"borders", 2 * kBorderPoints}});
   metrics["gradients"] = {{"size", kPeriod}, {"seed", kGradientSeed}, {"format", "RGBA8, g * 0.5 + 0.5"}};
   metrics["cases"] = in.size();
   metrics["fade"] = quintic ? "quintic" : "cubic";
