@@ -43,6 +43,10 @@ struct LitUniforms {
   Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
+  struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
+    Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
+    Uniform near, count, camera_view, blend, maps;
+  } csm;
 };
 
 // Uniforms the lit program may be compiled with as constants (name, value; see ProgramDesc::constants):

@@ -5,10 +5,12 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
 
 uniform mat4 u_view_proj;
+uniform mat4 u_light_tex_matrix;  // world -> the shadow map's texture space (shadow/common.glsl)
 
 out vec3 v_world_position;
 out vec3 v_normal;
 out vec3 v_color;
+out vec4 v_light_tex;  // u_light_tex_matrix times the position, before the divide
 // The shadow-volume passes draw the scene twice and test depth for equality: same inputs, same depths.
 invariant gl_Position;
 
@@ -16,5 +18,6 @@ void main() {
   v_world_position = a_position;
   v_normal = a_normal;
   v_color = a_color;
+  v_light_tex = u_light_tex_matrix * vec4(a_position, 1.0);
   gl_Position = u_view_proj * vec4(a_position, 1.0);
 }
