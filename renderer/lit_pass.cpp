@@ -189,7 +189,7 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
   set_uniforms(ctx, shadow, p.u);
-  bind_material(p.program.id(), ctx);
+  bind_material(p.program, ctx);
   ctx.gpu_scene.bind();
   for (const auto& range : ctx.gpu_scene.ranges()) {
     ctx.gpu_scene.draw(range);
@@ -215,22 +215,34 @@ void LitPass::set_material(const std::map<std::string, Features::MaterialTexture
     material_textures_.emplace_back(name, std::move(tex));
   }
   material_params_ = params;
+  material_locations_.clear();
 }
 
-void LitPass::bind_material(GLuint program, const PassContext& ctx) const {
+void LitPass::bind_material(const ReloadableProgram& program, const PassContext& ctx) const {
   if (material_textures_.empty() && material_params_.empty()) return;
+  // The material's uniform locations, looked up once per program build (textures, then parameters, then
+  // u_floor_height).
+  auto& cached = material_locations_[program.id()];
+  if (cached.first != program.generation() || cached.second.empty()) {
+    cached.first = program.generation();
+    cached.second.clear();
+    for (const auto& entry : material_textures_) cached.second.push_back(glGetUniformLocation(program.id(), entry.first.c_str()));
+    for (const auto& entry : material_params_) cached.second.push_back(glGetUniformLocation(program.id(), entry.first.c_str()));
+    cached.second.push_back(glGetUniformLocation(program.id(), "u_floor_height"));
+  }
+  const std::vector<GLint>& at = cached.second;
+  std::size_t k = 0;
   int unit = kMaterialFirstUnit;
-  for (const auto& [name, tex] : material_textures_) {
+  for (const auto& entry : material_textures_) {
     glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D, tex.id());
+    glBindTexture(GL_TEXTURE_2D, entry.second.id());
     glBindSampler(static_cast<GLuint>(unit), 0);
-    glUniform1i(glGetUniformLocation(program, name.c_str()), unit);
+    glUniform1i(at[k++], unit);
     ++unit;
   }
   glActiveTexture(GL_TEXTURE0);
-  for (const auto& [name, key] : material_params_)
-    glUniform1f(glGetUniformLocation(program, name.c_str()), ctx.params.get_float(key));
-  glUniform1f(glGetUniformLocation(program, "u_floor_height"), ctx.scene.bounds().min.y);
+  for (const auto& entry : material_params_) glUniform1f(at[k++], ctx.params.get_float(entry.second));
+  glUniform1f(at[k], ctx.scene.bounds().min.y);
 }
 
 void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {

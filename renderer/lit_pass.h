@@ -76,11 +76,13 @@ class LitPass {
   static void end();
   void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
 
-  void bind_material(GLuint program, const PassContext& ctx) const;
+  void bind_material(const ReloadableProgram& program, const PassContext& ctx) const;
 
   std::map<Key, Slot> programs_;
   std::vector<std::pair<std::string, GlTexture>> material_textures_;
   std::map<std::string, std::string> material_params_;
+  // Per program id: the generation its material locations were looked up for, and the locations.
+  mutable std::map<GLuint, std::pair<int, std::vector<GLint>>> material_locations_;
   LitConstants constants_, drawn_constants_;
   bool specialise_ = true;
   int width_ = 0, height_ = 0;
