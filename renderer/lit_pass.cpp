@@ -10,6 +10,9 @@ namespace shadowlab {
 
 namespace {
 
+// The material's textures take units from here up (the shadow techniques use the ones below).
+constexpr int kMaterialFirstUnit = 8;
+
 // The variance debug view draws the same scene through the same vertex shader with its own fragment
 // shader; it is never written into the G-buffer.
 bool writes_gbuffer(LitVariant variant, bool gbuffer) {
@@ -186,12 +189,60 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
   set_uniforms(ctx, shadow, p.u);
+  bind_material(p.program, ctx);
   ctx.gpu_scene.bind();
   for (const auto& range : ctx.gpu_scene.ranges()) {
     ctx.gpu_scene.draw(range);
     ++ctx.stats.draws;
   }
   end();
+}
+
+void LitPass::set_material(const std::map<std::string, Features::MaterialTexture>& textures,
+                           const std::map<std::string, std::string>& params) {
+  material_textures_.clear();
+  for (const auto& [name, t] : textures) {
+    if (t.width <= 0 || t.height <= 0 || t.rgba.size() != static_cast<std::size_t>(t.width) * t.height * 4)
+      throw std::invalid_argument("material texture " + name + ": texels do not match its size");
+    GlTexture tex = make_texture_2d(GL_RGBA8, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, tex.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    material_textures_.emplace_back(name, std::move(tex));
+  }
+  material_params_ = params;
+  material_locations_.clear();
+}
+
+void LitPass::bind_material(const ReloadableProgram& program, const PassContext& ctx) const {
+  if (material_textures_.empty() && material_params_.empty()) return;
+  // The material's uniform locations, looked up once per program build (textures, then parameters, then
+  // u_floor_height).
+  auto& cached = material_locations_[program.id()];
+  if (cached.first != program.generation() || cached.second.empty()) {
+    cached.first = program.generation();
+    cached.second.clear();
+    for (const auto& entry : material_textures_) cached.second.push_back(glGetUniformLocation(program.id(), entry.first.c_str()));
+    for (const auto& entry : material_params_) cached.second.push_back(glGetUniformLocation(program.id(), entry.first.c_str()));
+    cached.second.push_back(glGetUniformLocation(program.id(), "u_floor_height"));
+  }
+  const std::vector<GLint>& at = cached.second;
+  std::size_t k = 0;
+  int unit = kMaterialFirstUnit;
+  for (const auto& entry : material_textures_) {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_2D, entry.second.id());
+    glBindSampler(static_cast<GLuint>(unit), 0);
+    glUniform1i(at[k++], unit);
+    ++unit;
+  }
+  glActiveTexture(GL_TEXTURE0);
+  for (const auto& entry : material_params_) glUniform1f(at[k++], ctx.params.get_float(entry.second));
+  glUniform1f(at[k], ctx.scene.bounds().min.y);
 }
 
 void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {

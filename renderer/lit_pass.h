@@ -11,11 +11,13 @@
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include "renderer/oracle.h"
+#include "renderer/renderer.h"
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {
@@ -34,6 +36,10 @@ class LitPass {
   // window's framebuffer (0, which has depth and stencil): no target of its own, no copy; read-backs
   // and present() then have nothing of their own to read.
   void ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window = false, GLuint window = 0);
+  // The material's textures and parameter uniforms (Features::material_textures, material_params),
+  // bound by every draw.
+  void set_material(const std::map<std::string, Features::MaterialTexture>& textures,
+                    const std::map<std::string, std::string>& params);
   // The constants the next draws compile in (empty, or with specialise off: the generic programs).
   void use_constants(const LitConstants& constants) { constants_ = constants; }
   void set_specialise(bool on) { specialise_ = on; }
@@ -70,7 +76,13 @@ class LitPass {
   static void end();
   void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
 
+  void bind_material(const ReloadableProgram& program, const PassContext& ctx) const;
+
   std::map<Key, Slot> programs_;
+  std::vector<std::pair<std::string, GlTexture>> material_textures_;
+  std::map<std::string, std::string> material_params_;
+  // Per program id: the generation its material locations were looked up for, and the locations.
+  mutable std::map<GLuint, std::pair<int, std::vector<GLint>>> material_locations_;
   LitConstants constants_, drawn_constants_;
   bool specialise_ = true;
   int width_ = 0, height_ = 0;

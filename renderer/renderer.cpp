@@ -29,8 +29,16 @@ struct Renderer::ShadowMapInputs {
   bool operator==(const ShadowMapInputs&) const = default;
 };
 
+namespace {
+// The surfaces' material when a feature gives none: the vertex colour.
+constexpr const char* kMaterialInclude = "lab/material.glsl";
+constexpr const char* kPlainMaterial = "shaders/material/plain.glsl";
+}  // namespace
+
 std::map<std::string, std::string> Renderer::default_includes(ShadowTechnique technique, LightType light) {
-  return shadow_pass_entry(technique, light).default_includes(light);
+  auto includes = shadow_pass_entry(technique, light).default_includes(light);
+  includes.emplace(kMaterialInclude, kPlainMaterial);
+  return includes;
 }
 
 Renderer::Renderer()
@@ -75,6 +83,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   const ShadowPassEntry& entry = shadow_pass_entry(features.technique, light);
   IncludeMap includes;
   for (const auto& [name, file] : entry.default_includes(light)) includes[name] = file;
+  includes[kMaterialInclude] = kPlainMaterial;
   for (const auto& [name, file] : features.includes) includes[name] = file;
   // The same technique keeps its pass (and targets); another gets a new one, kept only if it builds.
   std::unique_ptr<ShadowPass> fresh;
@@ -100,6 +109,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     shadow_entry_ = &entry;
   }
   lit_->keep_only(variants);
+  lit_->set_material(features.material_textures, features.material_params);
   views_->set_includes(includes, features.include_rules);
   features_ = features;
   programs_light_ = light;

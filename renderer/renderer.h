@@ -9,6 +9,7 @@
 // (renderer/debug_views.h) are passes of their own.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -68,6 +69,16 @@ struct Features {
   // renderer/cascades.h).
   CascadeSplitFn cascade_splits;
   CascadeFitFn cascade_fit;
+  // The surfaces' material in the lit pass: "lab/material.glsl" (default shaders/material/plain.glsl,
+  // the vertex colour) may read textures and parameters. Each texture is bound for the lit pass under
+  // its sampler uniform's name (RGBA8 texels, row 0 at v = 0, repeat-wrapped, nearest filtering); each
+  // float uniform is set from a parameter every frame; u_floor_height is the scene's lowest y.
+  struct MaterialTexture {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;  // width x height x 4
+  };
+  std::map<std::string, MaterialTexture> material_textures;  // sampler uniform -> texels
+  std::map<std::string, std::string> material_params;        // float uniform -> parameter key
 };
 
 struct FrameRequest {

@@ -1,6 +1,7 @@
 #version 330 core
 // Lit pass: ambient + Lambert, with the light's term scaled by the shadow test's visibility.
-// The shadow test itself comes from "lab/visibility.glsl", which a lab may point at its own file.
+// The shadow test itself comes from "lab/visibility.glsl", which a lab may point at its own file; the
+// surface's colour from "lab/material.glsl" (the vertex colour unless a lab gives a material).
 //
 // Variants (injected defines): LIGHT_SPOT / LIGHT_POINT light from u_light_position (a spot only within
 // its cone), else a directional light along u_to_light. With stencil shadow volumes the scene is drawn
@@ -9,6 +10,7 @@
 #define SHADOW_COORDS_FROM_VERTEX  // v_world_position and v_light_tex come from lit.vert
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
+#include "lab/material.glsl"
 
 in vec3 v_normal;
 in vec3 v_color;
@@ -51,8 +53,9 @@ void main() {
   vec3 n = normalize(v_normal) * (gl_FrontFacing ? 1.0 : -1.0);
   float n_dot_l = reached_by_light(v_world_position) ? dot(n, light_vector(v_world_position)) : 0.0;
   float visibility = n_dot_l > 0.0 ? shadow_visibility(v_world_position, n, n_dot_l) : 0.0;
-  vec3 ambient = v_color * u_ambient;
-  vec3 linear = ambient + v_color * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
+  vec3 albedo = surface_albedo(v_world_position, n, v_color);
+  vec3 ambient = albedo * u_ambient;
+  vec3 linear = ambient + albedo * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
 #if defined(SHADOW_VOLUME_AMBIENT)
   visibility = 0.0;  // the additive pass adds 1 where the light reaches
   o_color = vec4(encode(ambient), 1.0);

@@ -139,35 +139,35 @@ for lab, row in zip(labs, rows):
 print(len(rows), "rows match the lab folders")
 PY
     ;;
-  one_folder_lab)  # run by tests/one_folder.sh on a copy holding labs/10_throwaway (lab 0 copied, retitled)
+  one_folder_lab)  # run by tests/one_folder.sh on a copy holding labs/98_throwaway (lab 0 copied, retitled)
     "$bin" labs --json >"$tmp/labs.json" || fail "labs --json failed"
-    python3 - "$tmp/labs.json" <<'PY' || fail "lab 10 is not listed from its folder"
+    python3 - "$tmp/labs.json" <<'PY' || fail "lab 98 is not listed from its folder"
 import json, sys
 labs = {l["number"]: l for l in json.load(open(sys.argv[1]))["labs"]}
-l = labs.get(10)
-assert l and l["title"] == "Throwaway copy" and l["folder"] == "labs/10_throwaway" and l["has_check"], l
-assert l["exercise_files"] == ["labs/10_throwaway/exercise.glsl"], l["exercise_files"]
+l = labs.get(98)
+assert l and l["title"] == "Throwaway copy" and l["folder"] == "labs/98_throwaway" and l["has_check"], l
+assert l["exercise_files"] == ["labs/98_throwaway/exercise.glsl"], l["exercise_files"]
 assert labs[0]["exercise_files"] == ["labs/00_basic_shadow_map/exercise.glsl"], labs[0]
 print("listed:", l["number"], l["title"], l["exercise_files"])
 PY
-    "$bin" labs | grep -q "^10  Throwaway copy" || fail "shadowlab labs does not list lab 10"
-    "$bin" check --lab 10 --impl solution >"$tmp/out" || fail "lab 10's solution does not pass: $(cat "$tmp/out")"
-    "$bin" check --lab 10 --impl exercise >"$tmp/out"; rc=$?
-    [ "$rc" -eq 1 ] || fail "lab 10's stock exercise: exit $rc, expected 1 (a failed check)"
+    "$bin" labs | grep -q "^98  Throwaway copy" || fail "shadowlab labs does not list lab 98"
+    "$bin" check --lab 98 --impl solution >"$tmp/out" || fail "lab 98's solution does not pass: $(cat "$tmp/out")"
+    "$bin" check --lab 98 --impl exercise >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "lab 98's stock exercise: exit $rc, expected 1 (a failed check)"
     png_reader
-    window --lab 10 --frames 3 --screenshot "$tmp/lab10.png"
+    window --lab 98 --frames 3 --screenshot "$tmp/lab98.png"
     window --lab 0 --frames 3 --screenshot "$tmp/lab0.png"
-    window --lab 1 --script "frames:3,key:1,frames:1,key:0,frames:3,screenshot:$tmp/keys10.png"
-    python3 - "$tmp" <<'PY' || fail "the window does not show lab 10 (by --lab 10 and by the keys 1, 0)"
+    window --lab 1 --script "frames:3,key:9,frames:1,key:8,frames:3,screenshot:$tmp/keys98.png"
+    python3 - "$tmp" <<'PY' || fail "the window does not show lab 98 (by --lab 98 and by the keys 9, 8)"
 import sys
 sys.path.insert(0, sys.argv[1])
 from png_read import load, differing
-shot = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("lab10", "lab0", "keys10")}
+shot = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("lab98", "lab0", "keys98")}
 title = (20, 20, 430, 60)  # the panel's lab title
-d = {"lab10/lab0": differing(shot["lab10"], shot["lab0"], *title), "lab10/keys10": differing(shot["lab10"], shot["keys10"], *title)}
+d = {"lab98/lab0": differing(shot["lab98"], shot["lab0"], *title), "lab98/keys98": differing(shot["lab98"], shot["keys98"], *title)}
 print(d)
-assert d["lab10/lab0"] > 0.005, "lab 10's title looks like lab 0's"
-assert d["lab10/keys10"] < 0.001, "keys 1, 0 did not open lab 10"
+assert d["lab98/lab0"] > 0.005, "lab 98's title looks like lab 0's"
+assert d["lab98/keys98"] < 0.001, "keys 9, 8 did not open lab 98"
 PY
     ;;
   no_display)  # one line: GLFW's own reason, and the headless commands; exit 3 (runtime: no window)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# "A lab is a folder", proven: a copy of the source tree gets a copy of lab 0 as labs/10_throwaway (its
+# "A lab is a folder", proven: a copy of the source tree gets a copy of lab 0 as labs/98_throwaway (its
 # title changed inside its own lab.cpp, nothing else edited anywhere), is configured and built, and the
-# built shadowlab lists lab 10, grades it (its solution passes, its stock exercise fails) and opens it in
-# the window, by --lab 10 and by the keys 1, 0 (tests/cli.sh case one_folder_lab).
+# built shadowlab lists lab 98, grades it (its solution passes, its stock exercise fails) and opens it in
+# the window, by --lab 98 and by the keys 9, 8 (tests/cli.sh case one_folder_lab).
 # Usage: tests/one_folder.sh [WORK_DIR]   (default: a temporary folder, removed afterwards)
 # The copy is compiled with the original tree's SHADOWLAB_DATA_DIR, so that ccache serves every object
 # but the new lab's and the generated lab list; at run time SHADOWLAB_DATA_DIR points at the copy.
@@ -24,9 +24,9 @@ if git -C "$src" rev-parse --show-toplevel >/dev/null 2>&1; then
 else  # not a git checkout: everything but the build folder
   tar -C "$src" --exclude=./build -cf - . | tar -xf - -C "$copy"
 fi
-cp -r "$copy/labs/00_basic_shadow_map" "$copy/labs/10_throwaway"
-sed -i 's/lab.title = "Basic shadow map";/lab.title = "Throwaway copy";/' "$copy/labs/10_throwaway/lab.cpp"
-grep -q '"Throwaway copy"' "$copy/labs/10_throwaway/lab.cpp" || { echo "one_folder: lab 0's title line moved" >&2; exit 1; }
+cp -r "$copy/labs/00_basic_shadow_map" "$copy/labs/98_throwaway"
+sed -i 's/lab.title = "Basic shadow map";/lab.title = "Throwaway copy";/' "$copy/labs/98_throwaway/lab.cpp"
+grep -q '"Throwaway copy"' "$copy/labs/98_throwaway/lab.cpp" || { echo "one_folder: lab 0's title line moved" >&2; exit 1; }
 
 launcher=()
 if command -v ccache >/dev/null; then
@@ -37,5 +37,5 @@ fi
 cmake -S "$copy" -B "$copy/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_TESTS=OFF \
   -DSHADOWLAB_DATA_DIR="$src" "${launcher[@]}" >/dev/null
 cmake --build "$copy/build" --target shadowlab -j "$(nproc)" >"$work/build.log" 2>&1 \
-  || { tail -30 "$work/build.log" >&2; echo "one_folder: the copy with labs/10_throwaway does not build" >&2; exit 1; }
+  || { tail -30 "$work/build.log" >&2; echo "one_folder: the copy with labs/98_throwaway does not build" >&2; exit 1; }
 SHADOWLAB_DATA_DIR="$copy" bash "$copy/tests/cli.sh" "$copy/build/app/shadowlab" one_folder_lab
