@@ -1,6 +1,5 @@
 #include "renderer/cascade_pass.h"
 
-#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -23,19 +22,6 @@ double csm_param(const ParamSet& params, std::string_view key) {
 }
 
 int csm_count(const ParamSet& params) { return static_cast<int>(csm_param(params, "csm.count")); }
-
-void set_by_name(GLuint program, const char* name, const auto& set) {
-  const GLint at = glGetUniformLocation(program, name);
-  if (at >= 0) set(at);
-}
-
-// "u_csm_tex[i]" and the other per-cascade uniform names, made once: a frame builds no string.
-using CascadeNames = std::array<std::string, kMaxCascades>;
-CascadeNames indexed_names(const char* base) {
-  CascadeNames names;
-  for (int i = 0; i < kMaxCascades; ++i) names[static_cast<std::size_t>(i)] = std::string(base) + "[" + std::to_string(i) + "]";
-  return names;
-}
 
 }  // namespace
 
@@ -114,7 +100,8 @@ void CascadePass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
 void CascadePass::draw_map(PassContext& ctx) {
   ctx.timed("shadow", [&] {
     ctx.count_texels([&] {
-      const GLint at = glGetUniformLocation(depth_.id(), "u_light_view_proj");
+      if (depth_u_.generation != depth_.generation())
+        depth_u_ = {depth_.generation(), Uniform(depth_.id(), "u_light_view_proj")};
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(GL_LESS);
       glDepthMask(GL_TRUE);
@@ -125,35 +112,28 @@ void CascadePass::draw_map(PassContext& ctx) {
         glViewport(0, 0, size_, size_);
         glClear(GL_DEPTH_BUFFER_BIT);
         const glm::mat4 light_view_proj = frame_.views[static_cast<std::size_t>(i)].view_projection();
-        glUniformMatrix4fv(at, 1, GL_FALSE, &light_view_proj[0][0]);
+        depth_u_.light_view_proj.set(light_view_proj);
         draw_casters_from_light(ctx, light_view_proj);
       }
     });
   });
 }
 
-void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms&) const {
-  GLint current = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
-  const auto program = static_cast<GLuint>(current);
-  static const CascadeNames tex_names = indexed_names("u_csm_tex"), far_names = indexed_names("u_csm_far"),
-                            texel_names = indexed_names("u_csm_texel_depth");
+void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
   for (int i = 0; i < frame_.count; ++i) {
     const auto c = static_cast<std::size_t>(i);
     const LightView& v = frame_.views[c];
-    const glm::mat4 tex = clip_to_texture() * v.view_projection();
-    set_by_name(program, tex_names[c].c_str(), [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &tex[0][0]); });
-    set_by_name(program, far_names[c].c_str(), [&](GLint at) { glUniform1f(at, frame_.splits[c + 1]); });
+    u.csm.tex[i].set(clip_to_texture() * v.view_projection());
+    u.csm.far[i].set(frame_.splits[c + 1]);
     // One texel's world size in the depth units of the comparison ([0, 1] over the box's depth).
     const float depth_range = 2.0f / std::abs(v.projection[2][2]);
-    set_by_name(program, texel_names[c].c_str(),
-                [&](GLint at) { glUniform1f(at, v.world_size.x / static_cast<float>(frame_.map_size) / depth_range); });
+    u.csm.texel_depth[i].set(v.world_size.x / static_cast<float>(frame_.map_size) / depth_range);
   }
-  set_by_name(program, "u_csm_near", [&](GLint at) { glUniform1f(at, frame_.splits.empty() ? 0.0f : frame_.splits.front()); });
-  set_by_name(program, "u_csm_count", [&](GLint at) { glUniform1i(at, frame_.count); });
-  set_by_name(program, "u_csm_camera_view", [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, &frame_.camera_view[0][0]); });
-  set_by_name(program, "u_csm_blend", [&](GLint at) { glUniform1f(at, static_cast<float>(csm_param(params, "csm.blend"))); });
-  set_by_name(program, "u_csm_maps", [&](GLint at) { glUniform1i(at, 2); });
+  u.csm.near.set(frame_.splits.empty() ? 0.0f : frame_.splits.front());
+  u.csm.count.set(frame_.count);
+  u.csm.camera_view.set(frame_.camera_view);
+  u.csm.blend.set(static_cast<float>(csm_param(params, "csm.blend")));
+  u.csm.maps.set(2);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
   glActiveTexture(GL_TEXTURE0);
@@ -170,11 +150,13 @@ void CascadePass::draw_debug_quads(const DebugQuadArea& area) {
   glUseProgram(quad_.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
-  set_by_name(quad_.id(), "u_depth_maps", [](GLint at) { glUniform1i(at, 0); });
+  if (quad_u_.generation != quad_.generation())
+    quad_u_ = {quad_.generation(), Uniform(quad_.id(), "u_depth_maps"), Uniform(quad_.id(), "u_layer")};
+  quad_u_.maps.set(0);
   glBindVertexArray(area.empty_vao);
   for (int i = 0; i < count_; ++i) {
     glViewport(area.width - (i + 1) * (side + 4) - 4, 8, side, side);
-    set_by_name(quad_.id(), "u_layer", [&](GLint at) { glUniform1f(at, static_cast<float>(i)); });
+    quad_u_.layer.set(static_cast<float>(i));
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
 }

@@ -45,6 +45,14 @@ class CascadePass final : public ShadowPass {
 
  private:
   ReloadableProgram depth_, quad_;
+  struct DepthUniforms {
+    int generation = -1;
+    Uniform light_view_proj;
+  } depth_u_;
+  struct QuadUniforms {
+    int generation = -1;
+    Uniform maps, layer;
+  } quad_u_;
   int size_ = 0, count_ = 0;
   GlTexture maps_;
   std::vector<GlFramebuffer> fbos_;  // one per layer

@@ -71,7 +71,19 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_pcf_hardware"),
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
-       Uniform(id, "u_alpha_cutoff")};
+       Uniform(id, "u_alpha_cutoff"),
+       {}};
+  for (int i = 0; i < kMaxCascades; ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    u.csm.tex[i] = Uniform(id, ("u_csm_tex" + at).c_str());
+    u.csm.far[i] = Uniform(id, ("u_csm_far" + at).c_str());
+    u.csm.texel_depth[i] = Uniform(id, ("u_csm_texel_depth" + at).c_str());
+  }
+  u.csm.near = Uniform(id, "u_csm_near");
+  u.csm.count = Uniform(id, "u_csm_count");
+  u.csm.camera_view = Uniform(id, "u_csm_camera_view");
+  u.csm.blend = Uniform(id, "u_csm_blend");
+  u.csm.maps = Uniform(id, "u_csm_maps");
 }
 
 }  // namespace

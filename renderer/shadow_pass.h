@@ -44,6 +44,10 @@ struct LitUniforms {
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
+  struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
+    Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
+    Uniform near, count, camera_view, blend, maps;
+  } csm;
 };
 
 // Uniforms the lit program may be compiled with as constants (name, value; see ProgramDesc::constants):

@@ -6,10 +6,10 @@
 // its cone), else a directional light along u_to_light. With stencil shadow volumes the scene is drawn
 // twice: SHADOW_VOLUME_AMBIENT (ambient only, and the G-buffer) and SHADOW_VOLUME_ADDITIVE (the light's
 // share, added where the stencil test found no volume).
+#define SHADOW_COORDS_FROM_VERTEX  // v_world_position and v_light_tex come from lit.vert
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
 
-in vec3 v_world_position;
 in vec3 v_normal;
 in vec3 v_color;
 #ifdef MATERIAL_TEXTURE

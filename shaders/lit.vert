@@ -13,10 +13,12 @@ layout(location = 2) in vec3 a_color;
 #endif
 
 uniform mat4 u_view_proj;
+uniform mat4 u_light_tex_matrix;  // world -> the shadow map's texture space (shadow/common.glsl)
 
 out vec3 v_world_position;
 out vec3 v_normal;
 out vec3 v_color;
+out vec4 v_light_tex;  // u_light_tex_matrix times the position, before the divide
 // The shadow-volume passes draw the scene twice and test depth for equality: same inputs, same depths.
 invariant gl_Position;
 
@@ -30,5 +32,6 @@ void main() {
 #else
   v_color = a_color;
 #endif
+  v_light_tex = u_light_tex_matrix * vec4(a_position, 1.0);
   gl_Position = u_view_proj * vec4(a_position, 1.0);
 }

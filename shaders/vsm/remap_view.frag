@@ -3,12 +3,12 @@
 // image (same vertices, depth test LEQUAL, blending): for each pixel it evaluates the lab's visibility
 // (with the remap) and Chebyshev's bound alone (same bias, no remap), and tints the pixel by how much
 // light the remap removed.
+#define SHADOW_COORDS_FROM_VERTEX  // v_world_position and v_light_tex come from lit.vert
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"
 
-in vec3 v_world_position;
 in vec3 v_normal;
 in vec3 v_color;
 
