@@ -167,7 +167,8 @@ int run_render(const RenderOptions& options) {
     ParamSet params = lab_params(*lab);
     for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = load_scene_or_default(options.scene_file);
-    const OrbitCamera camera = camera_option(options.camera, scene.bounds());
+    const OrbitCamera camera = options.camera.empty() ? frame_scene_camera(scene, params)
+                                                      : camera_option(options.camera, frame_scene_bounds(scene, params));
     std::optional<BenchPlots> bench_plots;
     if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
     make_output_dir(options.out_dir);

@@ -215,13 +215,18 @@ struct App {
   }
   void open_scene(const std::string& path) {
     try {
-      const Scene scene = load_gltf(path);
+      std::vector<std::string> warnings;  // e.g. an image that cannot be decoded (drawn as a checker)
+      const Scene scene = load_gltf(path, {}, &warnings);
       renderer->set_scene(scene);
       split.set_scene(scene);
-      camera = OrbitCamera::framing(scene.bounds());
+      camera = frame_scene_camera(scene, params);  // the model and its shadow, on the ground it may get
       check_result.reset();
       scene_error.clear();
       status = "opened " + printable(path, 200) + " (" + std::to_string(scene.triangle_count()) + " triangles)";
+      for (const std::string& w : warnings) {
+        std::fprintf(stderr, "shadowlab: warning: %s: %s\n", printable(path, 400).c_str(), printable(w, 400).c_str());
+        status += "; warning: " + shortened(printable(w, 400), kPanelErrorBytes);
+      }
     } catch (const std::exception& e) {
       // The whole message on the terminal; the panel shows a bounded part (ImGui's draw lists hold at
       // most 64k vertices: a 60 MB message made it abort). Loader messages are printable already.
@@ -549,7 +554,8 @@ int run_window(const WindowOptions& options) {
     if (!options.size.empty()) parse_size_option(options.size, &width, &height);
     ParamSet check = lab_params(*lab);
     for (const auto& a : options.assignments) apply_set_option(check, a);
-    camera = camera_option(options.camera, scene.bounds());
+    camera = options.camera.empty() ? frame_scene_camera(scene, check)
+                                    : camera_option(options.camera, frame_scene_bounds(scene, check));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", e.what());
     return kExitUsage;

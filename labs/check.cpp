@@ -223,7 +223,9 @@ void CheckContext::use_scene_named(const std::string& name) {
 }
 
 const Oracle& CheckContext::oracle() {
-  if (!oracle_) oracle_ = std::make_unique<Oracle>(*scene_);
+  // The scene as the renderer draws it (with the ground plane it adds to a scene without one, and the
+  // scene.blend_casts choice), once it has been uploaded; the same triangles the shadow map holds.
+  if (!oracle_) oracle_ = std::make_unique<Oracle>(uploaded_generation_ == scene_generation_ ? renderer.scene() : *scene_);
   return *oracle_;
 }
 

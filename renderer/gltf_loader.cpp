@@ -36,6 +36,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/transform.hpp>
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include "renderer/gltf_schema.h"
@@ -129,6 +130,8 @@ struct FolderSandbox {
   }
 };
 
+constexpr std::uint64_t kMaxImageFileBytes = 64ull << 20;
+
 bool sandbox_file_exists(const std::string& path, void* user) {
   auto& box = *static_cast<FolderSandbox*>(user);
   const auto uri = box.uri_of(path);
@@ -157,14 +160,14 @@ bool sandbox_read_file(std::vector<unsigned char>* out, std::string* err, const 
     *err = why;
     return false;
   }
-  // A buffer is read up to the byteLength it declares; an image only opened and checked (images are
-  // never decoded), and handed on as one placeholder byte.
+  // A buffer is read up to the byteLength it declares; an image up to kMaxImageFileBytes (decoded once,
+  // by decode_image).
   const auto buffer = box.buffer_uris.find(*uri);
   const bool is_buffer = buffer != box.buffer_uris.end();
   try {
-    const std::string bytes = box.folder.read(*uri, is_buffer ? buffer->second : 0);
-    if (is_buffer) out->assign(bytes.begin(), bytes.end());
-    else out->assign(1, 0);
+    const std::string bytes = box.folder.read(*uri, is_buffer ? buffer->second : kMaxImageFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    if (!is_buffer && out->empty()) out->assign(1, 0);  // an empty image file: decode_image says so
     return true;
   } catch (const platform::FileError& e) {
     *err = printable(e.what());
@@ -180,9 +183,62 @@ bool sandbox_read_file(std::vector<unsigned char>* out, std::string* err, const 
   }
 }
 
-// Textures are not used: images are accepted undecoded, so corrupt image data cannot matter.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Base-colour images are decoded here, once each, to RGBA8. One that cannot be decoded (corrupt, an
+// unknown format, too large) is not an error of the model: its problem is kept per image, the loader
+// reports it and draws a checker in its place.
+struct ImageProblems {
+  std::map<int, std::string> by_image;
+};
+constexpr int kMaxImageSide = 16384;
+constexpr std::uint64_t kMaxImagePixels = 64ull << 20;
+
+bool decode_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* user) {
+  auto& problems = static_cast<ImageProblems*>(user)->by_image;
+  int w = 0, h = 0, channels = 0;
+  if (!bytes || size <= 1 || !stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
+    problems[index] = size <= 1 ? "the image is empty"
+                                : std::string("not an image stb_image can decode (") +
+                                      (stbi_failure_reason() ? stbi_failure_reason() : "unknown format") + ")";
+    return true;
+  }
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide ||
+      static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > kMaxImagePixels) {
+    problems[index] = "the image is " + std::to_string(w) + " x " + std::to_string(h) + " pixels, beyond the limit of " +
+                      std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImagePixels) + " pixels";
+    return true;
+  }
+  unsigned char* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
+  if (!pixels) {
+    problems[index] = std::string("the image data is corrupt (") +
+                      (stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")";
+    return true;
+  }
+  image->width = w;
+  image->height = h;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image.assign(pixels, pixels + static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
+  stbi_image_free(pixels);
   return true;
+}
+
+// What replaces an image that could not be decoded: 8 x 8 magenta and black squares, seen at once.
+std::shared_ptr<const std::vector<std::uint8_t>> checker_image(int* width, int* height) {
+  constexpr int side = 64;
+  auto rgba = std::make_shared<std::vector<std::uint8_t>>(side * side * 4);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const bool on = ((x / 8) + (y / 8)) % 2 == 0;
+      std::uint8_t* p = rgba->data() + 4 * (y * side + x);
+      p[0] = on ? 255 : 0;
+      p[1] = 0;
+      p[2] = on ? 255 : 0;
+      p[3] = 255;
+    }
+  *width = *height = side;
+  return rgba;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -256,6 +312,7 @@ class Loader {
 
     Scene scene;
     scene.name = printable(path_.string(), 400);
+    scene.textures = build_textures();
     scene.meshes.reserve(draws.size());
     for (const Draw& d : draws) scene.meshes.push_back(build_mesh(d));
     if (scene.meshes.empty()) fail("no triangle meshes to draw");
@@ -426,7 +483,7 @@ class Loader {
     tinygltf::TinyGLTF gltf;
     // WriteWholeFile stays null: loading never writes.
     gltf.SetFsCallbacks({&sandbox_file_exists, &sandbox_expand_path, &sandbox_read_file, nullptr, &*box});
-    gltf.SetImageLoader(&skip_image, nullptr);
+    gltf.SetImageLoader(&decode_image, &image_problems_);
     std::string err, warn;
     bool ok = false;
     try {
@@ -889,15 +946,115 @@ class Loader {
     return out;
   }
 
-  glm::vec3 material_color(int material) const {
-    if (material < 0) return glm::vec3(0.8f);
-    const auto& factor = model_.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
+  // One Texture per glTF texture; the pixels of an image are decoded once and shared by every texture
+  // that uses it. A bad or missing image becomes a checker, with one warning naming it and the problem.
+  std::vector<Texture> build_textures() {
+    std::vector<Texture> out;
+    std::map<int, Texture> images;  // per image: its pixels, or the checker and its problem
+    for (std::size_t i = 0; i < model_.textures.size(); ++i) {
+      const auto& gt = model_.textures[i];
+      Texture t;
+      if (gt.source >= 0) {
+        auto found = images.find(gt.source);
+        if (found == images.end()) {
+          Texture img;
+          const auto& gi = model_.images[static_cast<std::size_t>(gt.source)];
+          img.name = !gi.uri.empty() && !gi.uri.starts_with("data:") ? printable(gi.uri, 200)
+                                                                     : "image " + std::to_string(gt.source);
+          if (const auto p = image_problems_.by_image.find(gt.source); p != image_problems_.by_image.end()) {
+            img.problem = p->second;
+          } else if (gi.image.empty() || gi.width <= 0 || gi.height <= 0) {
+            img.problem = gi.uri.empty() || gi.uri.starts_with("data:") ? "the image data cannot be read"
+                                                                         : "the file cannot be read (missing?)";
+          } else {
+            img.width = gi.width;
+            img.height = gi.height;
+            img.rgba = std::make_shared<const std::vector<std::uint8_t>>(gi.image);
+          }
+          if (!img.problem.empty()) {
+            img.rgba = checker_image(&img.width, &img.height);
+            warnings_.push_back("image " + std::to_string(gt.source) + " (" + img.name + "): " + img.problem +
+                                "; drawn as a magenta checker");
+          }
+          found = images.emplace(gt.source, std::move(img)).first;
+        }
+        t = found->second;
+      } else {
+        t.name = "texture " + std::to_string(i) + " (no image)";
+      }
+      if (gt.sampler >= 0) {
+        const auto& s = model_.samplers[static_cast<std::size_t>(gt.sampler)];
+        t.wrap_s = s.wrapS;
+        t.wrap_t = s.wrapT;
+        if (s.minFilter > 0) t.min_filter = s.minFilter;
+        if (s.magFilter > 0) t.mag_filter = s.magFilter;
+      }
+      out.push_back(std::move(t));
+    }
+    model_.images.clear();  // the pixels now live in the scene's textures
+    return out;
+  }
+
+  // The primitive's material: base colour factor, texture (with its TEXCOORD_0), alpha mode and cutoff.
+  void apply_material(Mesh& mesh, int material, const tinygltf::Primitive& prim) const {
+    if (material < 0) return;  // no material: the lab's grey, opaque
+    const auto& mat = model_.materials[static_cast<std::size_t>(material)];
+    const auto& factor = mat.pbrMetallicRoughness.baseColorFactor;
     if (factor.size() != 4 || !std::all_of(factor.begin(), factor.end(), [](double x) { return x >= 0.0 && x <= 1.0; }))
       fail("material " + std::to_string(material) + " baseColorFactor must be 4 numbers between 0 and 1");
-    // tinygltf fills in the default [1, 1, 1, 1] when the factor is absent and does not tell; a material
-    // with the default factor (typically a textured one) gets the lab's grey, like no material.
-    if (factor == std::vector<double>{1.0, 1.0, 1.0, 1.0}) return glm::vec3(0.8f);
-    return glm::vec3(static_cast<float>(factor[0]), static_cast<float>(factor[1]), static_cast<float>(factor[2]));
+    mesh.color = glm::vec3(static_cast<float>(factor[0]), static_cast<float>(factor[1]), static_cast<float>(factor[2]));
+    mesh.alpha = static_cast<float>(factor[3]);
+    if (mat.alphaMode == "MASK") mesh.alpha_mode = AlphaMode::Mask;
+    else if (mat.alphaMode == "BLEND") mesh.alpha_mode = AlphaMode::Blend;
+    mesh.alpha_cutoff = static_cast<float>(mat.alphaCutoff);
+    const auto& info = mat.pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return;
+    const std::string set = "TEXCOORD_" + std::to_string(info.texCoord);
+    const auto uv = prim.attributes.find(set);
+    if (uv == prim.attributes.end()) {
+      warnings_.push_back("material " + std::to_string(material) + "'s base colour texture reads " +
+                                                     set + ", which the primitive does not have: drawn untextured");
+      return;
+    }
+    mesh.uvs = read_floats<glm::vec2>(uv->second, set);
+    mesh.texture = info.index;
+  }
+
+  // A float, normalised unsigned byte or unsigned short attribute (TEXCOORD_n, COLOR_0) as vectors of N
+  // floats; COLOR_0 may be VEC3 (alpha 1).
+  template <typename V>
+  std::vector<V> read_floats(int index, const std::string& what) const {
+    const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+    const int n = a.type == TINYGLTF_TYPE_VEC2 ? 2 : a.type == TINYGLTF_TYPE_VEC3 ? 3 : a.type == TINYGLTF_TYPE_VEC4 ? 4 : 0;
+    const int c = a.componentType;
+    if (n == 0 || n > V::length() ||
+        !(c == TINYGLTF_COMPONENT_TYPE_FLOAT || ((c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                  c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) && a.normalized)))
+      fail(accessor_name(index) + " (" + what + ") must be float or normalised unsigned byte/short vectors");
+    const std::size_t size = component_size(c);
+    std::vector<V> out(a.count, V(1.0f));
+    for (std::size_t k = 0; k < a.count; ++k) {
+      const auto* e = element(a, k);
+      for (int j = 0; j < n; ++j) {
+        float v = 0.0f;
+        if (c == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+          std::memcpy(&v, e + j * size, sizeof v);
+          if (!std::isfinite(v)) fail(accessor_name(index) + " (" + what + ") element " + str(k) + " is not finite");
+        } else if (size == 1) {
+          v = static_cast<float>(e[j]) / 255.0f;
+        } else {
+          std::uint16_t u = 0;
+          std::memcpy(&u, e + 2 * j, 2);
+          v = static_cast<float>(u) / 65535.0f;
+        }
+        out[k][j] = v;
+      }
+    }
+    return out;
+  }
+
+  static std::string where_primitive(const Draw& d) {
+    return "mesh " + std::to_string(d.mesh) + " primitive " + std::to_string(d.primitive);
   }
 
   Mesh build_mesh(const Draw& d) const {
@@ -910,10 +1067,14 @@ class Loader {
     mesh.name = !gmesh.name.empty() ? printable(gmesh.name, 80)
                 : !node.name.empty() ? printable(node.name, 80)
                                      : "mesh " + std::to_string(d.mesh);
-    mesh.color = material_color(prim.material);
-
     const int position = prim.attributes.at("POSITION");
     mesh.positions = read_vec3(position);
+    apply_material(mesh, prim.material, prim);
+    if (const auto color = prim.attributes.find("COLOR_0"); color != prim.attributes.end())
+      mesh.colors = read_floats<glm::vec4>(color->second, "COLOR_0");
+    if ((!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) ||
+        (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size()))
+      fail(where_primitive(d) + ": TEXCOORD or COLOR_0 has a count other than POSITION's");
     for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
       const glm::vec3& p = mesh.positions[k];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -1001,8 +1162,9 @@ class Loader {
 
   fs::path path_;
   LoadLimits limits_;
-  std::vector<std::string> warnings_;  // what the specification says to ignore, for the caller
+  mutable std::vector<std::string> warnings_;  // what the specification says to ignore, for the caller
   tinygltf::Model model_;
+  ImageProblems image_problems_;
   std::vector<std::string> roles_;  // per accessor: what uses it, for messages
   std::vector<int> parent_;         // per node: its parent, or -1
   std::vector<glm::dmat4> local_;   // per node: its own transform

@@ -1,8 +1,10 @@
-// The scene on the GPU: one vertex buffer (position, normal, colour) and one index buffer for all
-// meshes, with each mesh's index range and bounds kept so passes can draw or skip meshes one by one.
+// The scene on the GPU: one vertex buffer (position, normal, colour with alpha, texture coordinates) and
+// one index buffer for all meshes, with each mesh's index range, bounds and material kept so passes can
+// draw or skip meshes one by one; the scene's base-colour textures, uploaded once each.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -19,6 +21,9 @@ class GpuScene {
     std::uint32_t index_count = 0;
     Bounds bounds;
     bool casts_shadow = true;
+    int texture = -1;  // into textures(); -1: none (a 1 x 1 white texture stands in)
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;
   };
 
   GpuScene() = default;
@@ -33,7 +38,16 @@ class GpuScene {
   struct CasterCounts {
     long drawn = 0, culled = 0;
   };
-  CasterCounts draw_casters(const glm::mat4* light_view_projs, int count, bool cull = true) const;
+  // With `masked` given, MASK casters are left out of the first round and drawn after it, each after
+  // masked(range) (which binds the alpha-testing program, its texture and cutoff).
+  CasterCounts draw_casters(const glm::mat4* light_view_projs, int count, bool cull = true,
+                            const std::function<void(const Range&)>* masked = nullptr) const;
+  // Whether any mesh has a texture, a MASK or a BLEND material: the lit pass then compiles its material
+  // variant (MATERIAL_TEXTURE); a scene without any draws with the plain program, unchanged.
+  bool has_materials() const { return has_materials_; }
+  bool has_masked_casters() const { return has_masked_casters_; }
+  // Binds the range's texture (or the white one) to texture unit `unit`.
+  void bind_texture(const Range& range, int unit) const;
   const std::vector<Range>& ranges() const { return ranges_; }
   std::size_t triangle_count() const { return triangles_; }
 
@@ -42,6 +56,10 @@ class GpuScene {
   GlBuffer vertices_;
   GlBuffer indices_;
   std::vector<Range> ranges_;
+  std::vector<GlTexture> textures_;
+  GlTexture white_;
+  bool has_materials_ = false;
+  bool has_masked_casters_ = false;
   std::size_t triangles_ = 0;
 };
 

@@ -22,8 +22,17 @@ bool writes_gbuffer(LitVariant variant, bool gbuffer) {
 // The debug views over the lit image: their own fragment shader, blended, no G-buffer.
 bool is_overlay(LitVariant variant) { return variant == LitVariant::RemapView || variant == LitVariant::CascadeView; }
 
+// The texture unit of the material variant's base-colour texture (the shadow techniques use the first few).
+constexpr int kBaseColorUnit = 6;
+
+// Adds or removes the material variant's define (overlays never get it: they draw no materials).
+void set_material_define(ProgramDesc& d, bool on) {
+  std::erase_if(d.defines, [](const auto& def) { return def.first == "MATERIAL_TEXTURE"; });
+  if (on && d.fragment == "shaders/lit.frag") d.defines.emplace_back("MATERIAL_TEXTURE", "1");
+}
+
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
-                     LitVariant variant) {
+                     LitVariant variant, bool materials) {
   const bool remap = is_overlay(variant);
   const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
                          : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
@@ -34,6 +43,7 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
+  set_material_define(d, materials);
   return d;
 }
 
@@ -63,6 +73,8 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_pcf_radius"),
        Uniform(id, "u_pcf_hardware"),
        Uniform(id, "u_light_view_proj"),
+       Uniform(id, "u_base_color"),
+       Uniform(id, "u_alpha_cutoff"),
        {}};
   for (int i = 0; i < kMaxCascades; ++i) {
     const std::string at = "[" + std::to_string(i) + "]";
@@ -88,10 +100,24 @@ bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, Light
       Slot& slot = programs_[{variant, gbuffer}];
       slot.specialised.clear();  // built from the old includes; made again when drawn
       slot.failed.clear();
-      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant));
+      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant, materials_));
       ok = slot.generic.program.rebuild() && ok;
     }
   return ok;
+}
+
+void LitPass::use_materials(bool on) {
+  if (on == materials_) return;
+  materials_ = on;
+  // The same programs with the material variant's define added or taken out, built again.
+  for (auto& [key, slot] : programs_) {
+    slot.specialised.clear();
+    slot.failed.clear();
+    ProgramDesc d = slot.generic.program.desc();
+    set_material_define(d, on);
+    slot.generic.program.set_desc(std::move(d));
+    slot.generic.program.rebuild();
+  }
 }
 
 void LitPass::keep_only(const std::vector<LitVariant>& variants) {
@@ -176,6 +202,7 @@ void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, 
 }
 
 void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant) {
+  use_materials(ctx.gpu_scene.has_materials());
   const auto it = programs_.find({variant, writes_gbuffer(variant, ctx.gbuffer)});
   if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
   Program& p = program_for(it->second);
@@ -191,9 +218,31 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   set_uniforms(ctx, shadow, p.u);
   bind_material(p.program, ctx);
   ctx.gpu_scene.bind();
-  for (const auto& range : ctx.gpu_scene.ranges()) {
-    ctx.gpu_scene.draw(range);
-    ++ctx.stats.draws;
+  if (!materials_) {
+    for (const auto& range : ctx.gpu_scene.ranges()) {
+      ctx.gpu_scene.draw(range);
+      ++ctx.stats.draws;
+    }
+  } else {
+    // Opaque and masked meshes first; BLEND meshes after them (in the plain lit view: blended over what
+    // is behind, without writing depth; in the shadow-volume passes as opaque).
+    p.u.base_color.set(kBaseColorUnit);
+    const bool blend_after = variant == LitVariant::Lit;
+    for (int round = 0; round < (blend_after ? 2 : 1); ++round) {
+      if (round == 1) {
+        glDepthMask(GL_FALSE);
+        glEnablei(GL_BLEND, 0);  // colour only: the G-buffer takes the front surface's values as they are
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+      }
+      for (const auto& range : ctx.gpu_scene.ranges()) {
+        const bool blend = range.alpha_mode == AlphaMode::Blend;
+        if (blend_after && blend != (round == 1)) continue;
+        ctx.gpu_scene.bind_texture(range, kBaseColorUnit);
+        p.u.alpha_cutoff.set(range.alpha_mode == AlphaMode::Mask ? range.alpha_cutoff : blend && blend_after ? -2.0f : -1.0f);
+        ctx.gpu_scene.draw(range);
+        ++ctx.stats.draws;
+      }
+    }
   }
   end();
 }

@@ -29,6 +29,10 @@ class LitPass {
   bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
              const std::vector<LitVariant>& variants);
   void keep_only(const std::vector<LitVariant>& variants);
+  // Compiles the material variant (MATERIAL_TEXTURE: base-colour texture, alpha modes) or the plain
+  // one into every program; draw() switches to what the scene needs, so a scene without textures or
+  // alpha modes draws with exactly the plain program.
+  void use_materials(bool on);
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
 
   // The view's targets for this size; with `stencil` a DEPTH24_STENCIL8 depth buffer (shadow volumes),
@@ -85,6 +89,7 @@ class LitPass {
   mutable std::map<GLuint, std::pair<int, std::vector<GLint>>> material_locations_;
   LitConstants constants_, drawn_constants_;
   bool specialise_ = true;
+  bool materials_ = false;
   int width_ = 0, height_ = 0;
   bool gbuffer_ = false;
   bool stencil_ = false;

@@ -72,11 +72,30 @@ glm::vec3 any_perpendicular(const glm::vec3& d) {
 
 }  // namespace
 
+// What the occlusion filter of an alpha-tested (MASK) caster needs: the cut-out of Mesh::cut_out, from a
+// copy of the mesh's material (the texture's pixels shared), so the oracle outlives the scene it was built
+// from. A hit whose point is cut out is rejected and the ray goes on, as the shadow map's discard does.
+struct MaskedCaster {
+  Mesh mesh;  // indices, uvs, colours and the material; no positions
+  std::vector<Texture> textures;
+
+  static void filter(const RTCFilterFunctionNArguments* args) {
+    const auto* self = static_cast<const MaskedCaster*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+      if (args->valid[i] == 0) continue;
+      const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+      const unsigned t = RTCHitN_primID(args->hit, args->N, i);
+      if (self->mesh.cut_out(self->textures, t, u, v)) args->valid[i] = 0;
+    }
+  }
+};
+
 struct Oracle::Impl {
   struct Band;
   struct Job;
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  std::vector<std::unique_ptr<MaskedCaster>> masked;  // user data of the MASK geometries
   float scene_epsilon = 0.0f;  // kSceneRelativeEpsilon x the scene's bounding-box diagonal
   std::size_t triangles = 0;
 
@@ -110,7 +129,7 @@ struct Oracle::Impl {
   }
 
   // Copies a shadow-casting mesh into the scene (mesh index m for messages).
-  void attach(const Mesh& mesh, std::size_t m) {
+  void attach(const Mesh& mesh, std::size_t m, const std::vector<Texture>& textures) {
     const std::size_t vertex_count = mesh.positions.size();
     const std::size_t triangle_count = mesh.triangle_count();
     for (std::size_t k = 0; k < triangle_count * 3; ++k) {
@@ -142,6 +161,21 @@ struct Oracle::Impl {
     vertices[3 * v + 2] = mesh.positions[v].z;
   }
   std::copy_n(mesh.indices.begin(), triangle_count * 3, indices);
+  if (mesh.alpha_mode == AlphaMode::Mask) {
+    auto caster = std::make_unique<MaskedCaster>();
+    caster->mesh.indices = mesh.indices;
+    caster->mesh.uvs = mesh.uvs;
+    caster->mesh.colors = mesh.colors;
+    caster->mesh.alpha = mesh.alpha;
+    caster->mesh.texture = mesh.texture;
+    caster->mesh.alpha_mode = mesh.alpha_mode;
+    caster->mesh.alpha_cutoff = mesh.alpha_cutoff;
+    caster->textures = textures;
+    rtcSetGeometryUserData(geometry, caster.get());
+    rtcSetGeometryOccludedFilterFunction(geometry, &MaskedCaster::filter);
+    rtcSetGeometryIntersectFilterFunction(geometry, &MaskedCaster::filter);
+    masked.push_back(std::move(caster));
+  }
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);  // the scene holds its own reference
@@ -203,7 +237,7 @@ Oracle::Oracle(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     const Mesh& mesh = scene.meshes[m];
     // A mesh that casts no shadow is not in the shadow maps either, so it does not occlude the truth.
     if (!mesh.casts_shadow || mesh.triangle_count() == 0 || mesh.positions.empty()) continue;
-    im.attach(mesh, m);
+    im.attach(mesh, m, scene.textures);
   }
 
   rtcCommitScene(im.scene);

@@ -52,8 +52,60 @@ Renderer::Renderer()
 Renderer::~Renderer() = default;
 
 void Renderer::set_scene(const Scene& scene) {
-  scene_ = scene;
+  source_ = scene;
+  source_has_ground_ = has_ground(scene);
+  scene_ = frame_scene(source_, ground_added_, blend_casts_);
   upload_scene();
+}
+
+Scene frame_scene(const Scene& scene, bool add_ground, bool blend_casts) {
+  Scene out = with_ground(scene, add_ground);
+  if (!blend_casts)
+    for (Mesh& m : out.meshes)
+      if (m.alpha_mode == AlphaMode::Blend) m.casts_shadow = false;
+  return out;
+}
+
+bool adds_ground(const Scene& scene, const ParamSet& params) {
+  return params.get_or("scene.ground", 1.0) != 0.0 && !has_ground(scene);
+}
+
+Bounds frame_scene_bounds(const Scene& scene, const ParamSet& params) {
+  Bounds box = scene.bounds();
+  if (box.empty() || !adds_ground(scene, params)) return box;
+  const glm::vec3 to_light = direction_from_angles(static_cast<float>(params.get_or("light.azimuth", 35.0)),
+                                                   static_cast<float>(params.get_or("light.elevation", 50.0)));
+  const float height = box.extent().y;
+  // Along the light's direction down to the ground: a point at height h moves h / tan(elevation) sideways.
+  const glm::vec2 side(-to_light.x, -to_light.z);
+  const float per_height = to_light.y > 1e-3f ? glm::length(side) / to_light.y : 1e3f;
+  const glm::vec2 dir = glm::length(side) > 0.0f ? glm::normalize(side) : glm::vec2(0.0f);
+  const float reach = std::min(per_height * height, 3.0f * height);
+  Bounds out = box;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c = box.corner(i);
+    out.extend(glm::vec3(c.x + dir.x * reach, box.min.y, c.z + dir.y * reach));
+  }
+  return out;
+}
+
+OrbitCamera frame_scene_camera(const Scene& scene, const ParamSet& params) {
+  OrbitCamera cam = OrbitCamera::framing(frame_scene_bounds(scene, params));
+  if (adds_ground(scene, params)) {
+    const Bounds all = with_ground(scene, true).bounds();
+    cam.far_plane = std::max(cam.far_plane, glm::length(cam.eye() - all.center()) + 0.5f * glm::length(all.extent()));
+  }
+  return cam;
+}
+
+bool Renderer::update_scene_options(const ParamSet& params) {
+  const bool ground = params.get_or("scene.ground", 1.0) != 0.0 && !source_has_ground_;
+  const bool blend_casts = params.get_or("scene.blend_casts", 1.0) != 0.0;
+  if (ground == ground_added_ && blend_casts == blend_casts_) return false;
+  ground_added_ = ground;
+  blend_casts_ = blend_casts;
+  scene_ = frame_scene(source_, ground_added_, blend_casts_);
+  return true;
 }
 
 void Renderer::upload_scene() {
@@ -163,7 +215,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   // In the local frame: the scene converted once per placement, the light's position each frame.
   Placement placement = placement_from(params);
   placement.offset += placement.scale * scene_.origin;  // the scene's own origin, moved and scaled with it
-  if (!(placement == placement_)) {
+  const bool options_changed = update_scene_options(params);  // the ground plane, BLEND casters
+  if (options_changed || !(placement == placement_)) {
     placement_ = placement;
     upload_scene();
   }

@@ -96,6 +96,19 @@ struct FrameRequest {
   std::optional<OrbitCamera> cascade_camera;
 };
 
+// The scene a frame draws from a scene as given: with the ground plane (with_ground) when add_ground,
+// and BLEND meshes casting no shadow unless blend_casts. Renderer::set_scene and whoever builds an
+// oracle for a dropped model use the same function.
+Scene frame_scene(const Scene& scene, bool add_ground, bool blend_casts);
+// Whether these parameters add a ground plane to this scene (scene.ground on, has_ground false).
+bool adds_ground(const Scene& scene, const ParamSet& params);
+// The camera for a scene as given: OrbitCamera::framing's three-quarter view of its box; for a scene that
+// gets a ground plane (a dropped model), of the model and its shadow on that ground (the box's corners
+// carried down along the light's direction from light.azimuth and light.elevation, the shadow's length
+// capped at three times the model's height), with the far plane reaching the whole ground.
+OrbitCamera frame_scene_camera(const Scene& scene, const ParamSet& params);
+Bounds frame_scene_bounds(const Scene& scene, const ParamSet& params);
+
 class Renderer {
  public:
   Renderer();  // needs a current GL 3.3+ core context
@@ -105,8 +118,13 @@ class Renderer {
 
   // The scene in its own frame. The scene.* parameters place it in the world (renderer/placement.h);
   // the GPU gets it in the local frame, converted in double whenever the placement changes.
+  // The scene drawn is the one given plus what the parameters add: a ground plane when scene.ground is on
+  // and the scene has none of its own (has_ground, renderer/scene.h), and BLEND meshes as casters or not
+  // (scene.blend_casts); scene() is that scene (the oracle's), source_scene() the one given.
   void set_scene(const Scene& scene);
   const Scene& scene() const { return scene_; }
+  const Scene& source_scene() const { return source_; }
+  bool ground_added() const { return ground_added_; }
   // The last frame's placement, and the scene as the GPU has it (positions relative to the local origin).
   const Placement& placement() const { return placement_; }
   const Scene& local_scene() const { return local_scene_; }
@@ -200,7 +218,13 @@ class Renderer {
 
   // Converts scene_ to the local frame of placement_ and uploads it.
   void upload_scene();
+  // Applies scene.ground and scene.blend_casts to scene_; true when it changed (upload it).
+  bool update_scene_options(const ParamSet& params);
 
+  Scene source_;  // as set_scene was given it
+  bool source_has_ground_ = true;
+  bool ground_added_ = false;
+  bool blend_casts_ = true;
   Scene scene_;
   Placement placement_;
   Scene local_scene_;  // scene_ in the local frame of placement_ (what gpu_scene_ and the passes hold)

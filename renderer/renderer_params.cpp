@@ -53,6 +53,13 @@ std::vector<ParamSpec> renderer_param_specs() {
       {"view.volumes", "Show shadow volumes (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
        "The shadow volumes' silhouette quads and caps, extruded by the geometry shader from adjacency, as "
        "wireframe. Builds the adjacency on first use.", {}},
+      {"scene.ground", "Ground when missing", ParamKind::Bool, 1.0, 0.0, 1.0,
+       "A scene with no surface of its own under it (no roughly horizontal receiver in the bottom quarter of its "
+       "box covering a quarter of its footprint) gets a ground plane at the bottom of its box, four times its "
+       "width, so its shadow falls on something. Scenes with a ground never get a second one.", {}, shadow},
+      {"scene.blend_casts", "BLEND materials cast shadows", ParamKind::Bool, 1.0, 0.0, 1.0,
+       "Whether meshes whose glTF material is alphaMode BLEND (drawn blended after the opaque ones) cast "
+       "shadows as solid casters, or none at all.", {}, shadow},
   };
   for (ParamSpec& spec : placement_param_specs()) specs.push_back(std::move(spec));
   return specs;

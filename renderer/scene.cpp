@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -23,6 +24,85 @@ std::size_t Scene::triangle_count() const {
   std::size_t n = 0;
   for (const auto& m : meshes) n += m.triangle_count();
   return n;
+}
+
+namespace {
+
+// A texel coordinate under a glTF wrap mode (33071 clamp, 33648 mirrored repeat, else repeat).
+int wrap_texel(int i, int n, int mode) {
+  if (mode == 33071) return std::clamp(i, 0, n - 1);
+  if (mode == 33648) {
+    const int period = 2 * n;
+    int m = ((i % period) + period) % period;
+    return m < n ? m : period - 1 - m;
+  }
+  return ((i % n) + n) % n;
+}
+
+glm::vec4 texel(const Texture& t, int x, int y) {
+  x = wrap_texel(x, t.width, t.wrap_s);
+  y = wrap_texel(y, t.height, t.wrap_t);
+  const std::uint8_t* p = t.rgba->data() + 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) + x);
+  return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+}
+
+}  // namespace
+
+glm::vec4 sample_texture(const Texture& t, glm::vec2 uv) {
+  if (!t.rgba || t.width <= 0 || t.height <= 0) return glm::vec4(1.0f);
+  // Rows are stored top row first and uploaded as given, so v = 0 is the first row (glTF's convention).
+  const float x = uv.x * static_cast<float>(t.width), y = uv.y * static_cast<float>(t.height);
+  if (t.mag_filter == 9728) return texel(t, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+  const float fx = x - 0.5f, fy = y - 0.5f;
+  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+  const float ax = fx - static_cast<float>(x0), ay = fy - static_cast<float>(y0);
+  const glm::vec4 top = glm::mix(texel(t, x0, y0), texel(t, x0 + 1, y0), ax);
+  const glm::vec4 bottom = glm::mix(texel(t, x0, y0 + 1), texel(t, x0 + 1, y0 + 1), ax);
+  return glm::mix(top, bottom, ay);
+}
+
+float Mesh::alpha_at(const std::vector<Texture>& textures, std::size_t t, float u, float v) const {
+  const std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
+  const float w = 1.0f - u - v;
+  float alpha = this->alpha;
+  if (!colors.empty()) alpha *= w * colors[a].a + u * colors[b].a + v * colors[c].a;
+  if (texture >= 0 && static_cast<std::size_t>(texture) < textures.size() && !uvs.empty())
+    alpha *= sample_texture(textures[static_cast<std::size_t>(texture)], w * uvs[a] + u * uvs[b] + v * uvs[c]).a;
+  return alpha;
+}
+
+bool has_ground(const Scene& scene) {
+  const Bounds box = scene.bounds();
+  if (box.empty()) return true;  // nothing to stand on anything
+  const glm::vec3 size = box.extent();
+  const float footprint = size.x * size.z;
+  if (!(footprint > 0.0f)) return false;
+  const float top = box.min.y + 0.25f * size.y;
+  double area = 0.0;
+  for (const Mesh& m : scene.meshes)
+    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+      const glm::vec3 &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+                      &c = m.positions[m.indices[3 * t + 2]];
+      if (std::max({a.y, b.y, c.y}) > top) continue;
+      const glm::vec3 n = glm::cross(b - a, c - a);
+      const float len = glm::length(n);
+      // Facing up (counter-clockwise seen from above): a model's own flat underside faces down.
+      if (len > 0.0f && n.y > 0.9f * len) area += 0.5 * len;
+    }
+  return area >= 0.25 * footprint;
+}
+
+Scene with_ground(const Scene& scene, bool add) {
+  if (!add) return scene;
+  Scene out = scene;
+  const Bounds box = scene.bounds();
+  if (box.empty()) return out;
+  const float half = 2.0f * std::max({box.extent().x, box.extent().z, 0.5f * box.extent().y, 1e-3f});
+  Mesh ground = make_plane({box.center().x, box.min.y, box.center().z}, half, half, {0.75f, 0.75f, 0.72f});
+  ground.name = "ground";
+  ground.ground = true;
+  out.meshes.push_back(std::move(ground));
+  return out;
 }
 
 void compute_normals(Mesh& mesh) {

@@ -43,6 +43,7 @@ struct LitUniforms {
   Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
+  Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
   struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
     Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
     Uniform near, count, camera_view, blend, maps;
@@ -162,7 +163,8 @@ class ShadowPass {
 void set_shadow_culling(int cull);
 // Draws the casters into the bound target as the light sees them, with the pass's culling (the caller has
 // bound its program and set its light matrix), counting draws and culled casters; culling is off after.
-void draw_casters_from_light(PassContext& ctx, const glm::mat4& light_view_proj);
+void draw_casters_from_light(PassContext& ctx, const glm::mat4& light_view_proj,
+                             const std::function<void(const GpuScene::Range&)>* masked = nullptr);
 // A depth map as a picture: the occupied range stretched to full contrast (the cleared background,
 // depth 1, stays white), RGBA8 top row first.
 std::vector<std::uint8_t> depth_map_image(const std::vector<float>& depth, int size);

@@ -14,6 +14,15 @@
 
 in vec3 v_normal;
 in vec3 v_color;
+#ifdef MATERIAL_TEXTURE
+// Compiled only for scenes with materials (the renderer's MATERIAL_TEXTURE variant): the base-colour
+// texture (white for untextured meshes) times the vertex colour; MASK discards below the cutoff
+// (u_alpha_cutoff: -1 for OPAQUE, -2 for BLEND, whose alpha goes out with the colour; the others write 1).
+in float v_alpha;
+in vec2 v_uv;
+uniform sampler2D u_base_color;
+uniform float u_alpha_cutoff;
+#endif
 
 uniform vec3 u_to_light;
 uniform float u_ambient;
@@ -50,10 +59,20 @@ vec3 encode(vec3 linear) { return pow(linear, vec3(1.0 / 2.2)); }
 
 void main() {
   // Shade both sides of thin or open geometry: the side facing the camera is the one we see.
+#ifdef MATERIAL_TEXTURE
+  vec4 texel = texture(u_base_color, v_uv);
+  float alpha = v_alpha * texel.a;
+  if (alpha < u_alpha_cutoff) discard;
+  vec3 base = v_color * texel.rgb;
+  if (u_alpha_cutoff > -1.5) alpha = 1.0;
+#else
+  const float alpha = 1.0;
+  vec3 base = v_color;
+#endif
   vec3 n = normalize(v_normal) * (gl_FrontFacing ? 1.0 : -1.0);
   float n_dot_l = reached_by_light(v_world_position) ? dot(n, light_vector(v_world_position)) : 0.0;
   float visibility = n_dot_l > 0.0 ? shadow_visibility(v_world_position, n, n_dot_l) : 0.0;
-  vec3 albedo = surface_albedo(v_world_position, n, v_color);
+  vec3 albedo = surface_albedo(v_world_position, n, base);  // the lab's material over the base colour
   vec3 ambient = albedo * u_ambient;
   vec3 linear = ambient + albedo * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
 #if defined(SHADOW_VOLUME_AMBIENT)
@@ -64,7 +83,7 @@ void main() {
   // light's share is the difference of the encoded sums: ambient + this = encode(ambient + diffuse).
   o_color = vec4(encode(linear) - encode(ambient), 0.0);
 #else
-  o_color = vec4(encode(linear), 1.0);
+  o_color = vec4(encode(linear), alpha);
 #endif
 #ifdef WRITE_GBUFFER
   o_visibility = visibility;

@@ -90,9 +90,10 @@ TEST(GltfModels, BoxColourComesFromItsMaterial) {
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_NEAR(scene.meshes[0].color.r, 0.8f, 1e-6f);
   EXPECT_EQ(scene.meshes[0].color.g, 0.0f);
-  // A textured material with no baseColorFactor gets the lab's grey.
+  // A textured material with no baseColorFactor: the factor's default, white, times its texture.
   const Scene textured = load_gltf(kModels / "BoxTextured/BoxTextured.gltf");
-  EXPECT_EQ(textured.meshes[0].color, glm::vec3(0.8f));
+  EXPECT_EQ(textured.meshes[0].color, glm::vec3(1.0f));
+  EXPECT_EQ(textured.meshes[0].texture, 0);
 }
 
 // ---------------------------------------------------------------------------------------------------

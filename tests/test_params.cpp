@@ -96,7 +96,8 @@ TEST(Params, ValuesInvalidatingListsTheDeclaredInputsInOrder) {
   std::vector<std::string> keys;
   for (const auto& [key, value] : inputs) keys.push_back(key);
   EXPECT_EQ(keys, (std::vector<std::string>{"light.azimuth", "light.elevation", "shadow.map_size", "shadow.depth_format",
-                                            "shadow.cull", "shadow.cull_casters", "scene.local_origin", "scene.offset_x",
+                                            "shadow.cull", "shadow.cull_casters", "scene.ground", "scene.blend_casts",
+                                            "scene.local_origin", "scene.offset_x",
                                             "scene.offset_y", "scene.offset_z", "scene.scale", "test.input"}));
   EXPECT_EQ(inputs.front().second, 120.0);
   EXPECT_EQ(inputs.back().second, 0.5);

@@ -1,7 +1,7 @@
 // A compile-only stand-in for Embree 4's <embree4/rtcore.h>: the declarations renderer/oracle.cpp uses,
 // as Embree 4's manual pages give them (rtcOccluded1(3), rtcInitOccludedArguments(3), RTCRay(3),
 // rtcSetDeviceErrorFunction(3), rtcSetSceneFlags(3), rtcSetNewGeometryBuffer(3), RTCError in
-// rtcGetDeviceError(3)). This machine has only Embree 3; tests/CMakeLists.txt compiles the oracle's
+// rtcGetDeviceError(3); the filter functions at the end). This machine has only Embree 3; tests/CMakeLists.txt compiles the oracle's
 // Embree 4 branch against this file so a call that Embree 4 no longer has (rtcInitIntersectContext, the
 // context argument of rtcOccluded1) fails the build here. It is never linked or run.
 #pragma once
@@ -65,3 +65,25 @@ struct RTCRay {
 };
 struct RTCOccludedArguments;  // optional; its defaults are what the oracle wants
 void rtcOccluded1(RTCScene scene, struct RTCRay* ray, struct RTCOccludedArguments* args = NULL);
+
+// Filter functions (RTCFilterFunctionNArguments(3), rtcSetGeometryOccludedFilterFunction(3),
+// rtcSetGeometryIntersectFilterFunction(3), rtcSetGeometryUserData(3), RTCHitN(3)): the oracle's
+// alpha-tested casters.
+struct RTCRayQueryContext;
+struct RTCRayN;
+struct RTCHitN;
+struct RTCFilterFunctionNArguments {
+  int* valid;
+  void* geometryUserPtr;
+  struct RTCRayQueryContext* context;
+  struct RTCRayN* ray;
+  struct RTCHitN* hit;
+  unsigned int N;
+};
+typedef void (*RTCFilterFunctionN)(const struct RTCFilterFunctionNArguments* args);
+void rtcSetGeometryOccludedFilterFunction(RTCGeometry geometry, RTCFilterFunctionN filter);
+void rtcSetGeometryIntersectFilterFunction(RTCGeometry geometry, RTCFilterFunctionN filter);
+void rtcSetGeometryUserData(RTCGeometry geometry, void* ptr);
+inline float& RTCHitN_u(RTCHitN* hit, unsigned int N, unsigned int i) { return ((float*)hit)[3 * N + i]; }
+inline float& RTCHitN_v(RTCHitN* hit, unsigned int N, unsigned int i) { return ((float*)hit)[4 * N + i]; }
+inline unsigned& RTCHitN_primID(RTCHitN* hit, unsigned int N, unsigned int i) { return ((unsigned*)hit)[5 * N + i]; }
