@@ -107,6 +107,7 @@ TEST_F(LightsTest, AdjacencyReportNamesOpenEdges) {
 
 // What lab 9's check counts (transform feedback): one box lit from above at an angle shows the light its
 // top and two sides (six triangles), outlined by six silhouette edges (a hexagon).
+// The box stands alone (scene.ground=0): the ground a scene without one gets would add its own volume.
 TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
   Scene s;
   Mesh box = make_box({0.0f, 1.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.5f, 0.5f, 0.5f});
@@ -117,7 +118,7 @@ TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
   Features hooks;
   hooks.technique = ShadowTechnique::ShadowVolumes;
   ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
-  r.render(lab_set({"light.type=directional", "light.azimuth=35", "light.elevation=50"}), request(OrbitCamera::framing(s.bounds())));
+  r.render(lab_set({"scene.ground=0", "light.type=directional", "light.azimuth=35", "light.elevation=50"}), request(OrbitCamera::framing(s.bounds())));
   const VolumeTriangles open = r.count_volume_triangles(false);
   EXPECT_EQ(open.sides, 12);  // six silhouette edges, a quad (two triangles) each
   EXPECT_EQ(open.near_caps, 0);
@@ -126,7 +127,7 @@ TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
   EXPECT_EQ(closed.sides, 12);
   EXPECT_EQ(closed.near_caps, 6);  // the lit triangles
   EXPECT_EQ(closed.far_caps, 0) << "a directional light's far cap has no area and is left out";
-  r.render(lab_set({"light.type=point", "light.position_x=3", "light.position_y=4", "light.position_z=2"}),
+  r.render(lab_set({"scene.ground=0", "light.type=point", "light.position_x=3", "light.position_y=4", "light.position_z=2"}),
            request(OrbitCamera::framing(s.bounds())));
   const VolumeTriangles point = r.count_volume_triangles(true);
   EXPECT_EQ(point.sides, 12);
@@ -134,7 +135,7 @@ TEST_F(LightsTest, VolumeTrianglesSortSidesFromCaps) {
   EXPECT_EQ(point.far_caps, 6);
   // Lab 9's stock exercise emits nothing: the capture must still link (its output is written in main).
   ASSERT_TRUE(r.set_features(find_lab(9)->hooks(Impl::Exercise))) << r.shader_error();
-  r.render(lab_set({"light.type=point"}), request(OrbitCamera::framing(s.bounds())));
+  r.render(lab_set({"scene.ground=0", "light.type=point"}), request(OrbitCamera::framing(s.bounds())));
   const VolumeTriangles none = r.count_volume_triangles(true);
   EXPECT_EQ(none.sides + none.near_caps + none.far_caps, 0);
 }
