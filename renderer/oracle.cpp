@@ -1,7 +1,8 @@
 #include "renderer/oracle.h"
 
+#include "renderer/parallel_rows.h"
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -10,7 +11,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 // Embree 3 or 4 (cmake/Dependencies.cmake finds either; SHADOWLAB_EMBREE_MAJOR says which). The two
 // differ here only in the header's folder, how one shadow ray is cast (below: cast_occluded) and the
@@ -253,6 +253,8 @@ bool Oracle::occluded(const glm::vec3& origin, const glm::vec3& direction, float
   return impl_->occluded(origin, direction, max_distance);
 }
 
+float Oracle::ray_epsilon(const glm::vec3& p) const { return impl_->epsilon(p); }
+
 namespace {
 
 std::size_t checked_pixel_count(const GBuffer& gbuffer) {
@@ -418,22 +420,11 @@ struct Oracle::Impl::Job {
   // the output does not depend on timing. Returns the rays cast.
   std::uint64_t all_pixels() const {
     const auto width = static_cast<std::size_t>(gbuffer.width), height = static_cast<std::size_t>(gbuffer.height);
-    std::atomic<std::size_t> next_row{0};
-    std::atomic<std::uint64_t> total_rays{0};
-    auto worker = [&] {
+    return for_each_row_parallel(height, kMaxThreads, [&](std::size_t y) {
       std::uint64_t rays = 0;
-      for (std::size_t y = next_row++; y < height; y = next_row++) {
-        for (std::size_t x = 0; x < width; ++x) rays += pixel(y * width + x);
-      }
-      total_rays += rays;
-    };
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    const std::size_t thread_count = std::min<std::size_t>({kMaxThreads, hardware, std::max<std::size_t>(height, 1)});
-    std::vector<std::thread> threads;
-    for (std::size_t t = 1; t < thread_count; ++t) threads.emplace_back(worker);
-    worker();
-    for (auto& t : threads) t.join();
-    return total_rays.load();
+      for (std::size_t x = 0; x < width; ++x) rays += pixel(y * width + x);
+      return rays;
+    });
   }
 };
 

@@ -82,6 +82,10 @@ class Oracle {
 
   Truth evaluate(const GBuffer& gbuffer, const OracleLight& light, const BandSpec& band = {}) const;
 
+  // How far a shadow ray from surface point p starts along the normal (see the notes above): the soft
+  // truth (renderer/soft_truth.h) starts its rays where this one does.
+  float ray_epsilon(const glm::vec3& p) const;
+
   double build_seconds() const { return build_seconds_; }
   // Triangles in the acceleration structure (meshes with casts_shadow == false are left out).
   std::size_t triangle_count() const;
