@@ -24,7 +24,8 @@ int csm_count(const ParamSet& params) { return static_cast<int>(csm_param(params
 
 CascadePass::CascadePass()
     : depth_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}}),
-      quad_({"shaders/fullscreen.vert", {}, "shaders/csm/debug_layer.frag", {}, {}}) {}
+      quad_({"shaders/fullscreen.vert", {}, "shaders/csm/debug_layer.frag", {}, {}}),
+      mask_(depth_.desc()) {}
 
 std::map<std::string, std::string> CascadePass::default_includes(LightType) {
   return {{"lab/visibility.glsl", "shaders/csm/visibility.glsl"}};
@@ -38,12 +39,14 @@ const ShadowPass::Shape& CascadePass::shape() const {
 bool CascadePass::set_includes(const IncludeMap&, const IncludeRules&) {
   frame_valid_ = false;  // a new feature set may bring other split and fit functions
   const bool depth_ok = depth_.rebuild();
-  return quad_.rebuild() && depth_ok;
+  const bool mask_ok = mask_.follow(depth_.desc());
+  return quad_.rebuild() && depth_ok && mask_ok;
 }
 
 void CascadePass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
   f(depth_);
   f(quad_);
+  mask_.for_each_program(f);
 }
 
 bool CascadePass::ensure_targets(const ParamSet& params) {
@@ -103,14 +106,16 @@ void CascadePass::draw_map(PassContext& ctx) {
       glDepthFunc(GL_LESS);
       glDepthMask(GL_TRUE);
       glClearDepth(1.0);
-      glUseProgram(depth_.id());
       for (int i = 0; i < count_; ++i) {
         glBindFramebuffer(GL_FRAMEBUFFER, fbos_[static_cast<std::size_t>(i)].id());
         glViewport(0, 0, size_, size_);
         glClear(GL_DEPTH_BUFFER_BIT);
+        glUseProgram(depth_.id());  // again each cascade: its alpha-tested casters end on mask_'s program
         const glm::mat4 light_view_proj = frame_.views[static_cast<std::size_t>(i)].view_projection();
         depth_u_.light_view_proj.set(light_view_proj);
-        draw_casters_from_light(ctx, light_view_proj);
+        draw_casters_from_light(ctx, light_view_proj, mask_.prepare(ctx.gpu_scene, [&](AlphaMaskVariant& v) {
+          v.set("u_light_view_proj", light_view_proj);
+        }));
       }
     });
   });

@@ -45,6 +45,7 @@ class CascadePass final : public ShadowPass {
 
  private:
   ReloadableProgram depth_, quad_;
+  AlphaMaskVariant mask_;  // depth_ with ALPHA_MASK: alpha-tested (MASK) casters
   struct DepthUniforms {
     int generation = -1;
     Uniform light_view_proj;

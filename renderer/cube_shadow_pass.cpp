@@ -30,6 +30,8 @@ CubeShadowPass::CubeShadowPass()
     : faces_({"shaders/cube/distance.vert", {}, "shaders/cube/distance.frag", {}, {{kStoreInclude, kDefaultStore}}}),
       layered_({"shaders/cube/distance.vert", "shaders/cube/layers.geom", "shaders/cube/distance.frag",
                 {{"LAYERED", "1"}}, {{kStoreInclude, kDefaultStore}}}),
+      faces_mask_(faces_.desc()),
+      layered_mask_(layered_.desc()),
       face_quad_({"shaders/fullscreen.vert", {}, "shaders/debug/cube_face.frag", {}, {}}) {
   if (!faces_.rebuild() || !layered_.rebuild())
     throw std::runtime_error("cannot build the cube shadow pass's shaders:\n" + faces_.error() + layered_.error());
@@ -53,6 +55,8 @@ bool CubeShadowPass::set_includes(const IncludeMap& includes, const IncludeRules
     p->set_desc(std::move(d));
     ok = p->rebuild() && ok;
   }
+  ok = faces_mask_.follow(faces_.desc()) && ok;
+  ok = layered_mask_.follow(layered_.desc()) && ok;
   return face_quad_.rebuild() && ok;
 }
 
@@ -60,6 +64,8 @@ void CubeShadowPass::for_each_program(const std::function<void(ReloadableProgram
   f(faces_);
   f(layered_);
   f(face_quad_);
+  faces_mask_.for_each_program(f);
+  layered_mask_.for_each_program(f);
 }
 
 bool CubeShadowPass::ensure_targets(const ParamSet& params) {
@@ -150,8 +156,8 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
   glm::mat4 view_proj[6];
   for (int f = 0; f < 6; ++f) view_proj[f] = views.projection * views.view[f];
   // A caster outside every face's frustum (single pass) or outside this face's (six passes) is not drawn.
-  auto draw_casters = [&](const glm::mat4* faces_view_proj, int count) {
-    const auto counts = scene.draw_casters(faces_view_proj, count, cull_casters);
+  auto draw_casters = [&](const glm::mat4* faces_view_proj, int count, const AlphaMaskVariant::Callback* masked) {
+    const auto counts = scene.draw_casters(faces_view_proj, count, cull_casters, masked);
     draws += counts.drawn;
     culled += counts.culled;
   };
@@ -169,7 +175,10 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
     if (layered_u_.face_view_proj.present())
       glUniformMatrix4fv(glGetUniformLocation(layered_.id(), "u_face_view_proj[0]"), 6, GL_FALSE, &view_proj[0][0][0]);
     layered_u_.light_position.set(light_position);
-    draw_casters(view_proj, 6);
+    draw_casters(view_proj, 6, layered_mask_.prepare(scene, [&](AlphaMaskVariant& v) {
+      glUniformMatrix4fv(v.location("u_face_view_proj[0]"), 6, GL_FALSE, &view_proj[0][0][0]);
+      v.set("u_light_position", light_position);
+    }));
     faces += 6;
   } else {
     // 1..6. One face at a time: attach it, clear it, draw the scene through that face's view.
@@ -179,12 +188,16 @@ void CubeShadowPass::draw(const GpuScene& scene, const CubeLightViews& views, co
     glUseProgram(faces_.id());
     faces_u_.light_position.set(light_position);
     for (int f = 0; f < 6; ++f) {
+      glUseProgram(faces_.id());  // again each face: its alpha-tested casters end on faces_mask_'s program
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, distance_.id(), 0, f);
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth_.id(), 0, f);
       glClearBufferfv(GL_COLOR, 0, empty);
       glClearBufferfv(GL_DEPTH, 0, &far_depth);
       faces_u_.light_view_proj.set(view_proj[f]);
-      draw_casters(&view_proj[f], 1);
+      draw_casters(&view_proj[f], 1, faces_mask_.prepare(scene, [&](AlphaMaskVariant& v) {
+        v.set("u_light_view_proj", view_proj[f]);
+        v.set("u_light_position", light_position);
+      }));
       ++faces;
     }
   }

@@ -56,6 +56,7 @@ class CubeShadowPass final : public ShadowPass {
 
  private:
   ReloadableProgram faces_, layered_;
+  AlphaMaskVariant faces_mask_, layered_mask_;  // with ALPHA_MASK: alpha-tested (MASK) casters
   struct FaceUniforms {
     int generation = -1;
     Uniform light_view_proj, light_position;

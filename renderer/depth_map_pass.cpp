@@ -16,14 +16,12 @@ GLenum depth_internal_format(const std::string& name) {
 int pcf_radius(const ParamSet& params) { return std::stoi(technique_choice(params, "pcf.kernel")) / 2; }
 bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.hardware") != 0.0; }
 
-constexpr int kMaskTextureUnit = 6;  // the lit pass's base-colour unit (lit_pass.cpp), free in the shadow pass
-
 }  // namespace
 
 DepthMapPass::DepthMapPass()
     : depth_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}}),
       quad_({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}}),
-      mask_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {{"ALPHA_MASK", "1"}}, {}}) {}
+      mask_(depth_.desc()) {}
 
 std::map<std::string, std::string> DepthMapPass::default_includes(LightType light) {
   // A perspective map's depth is not linear in distance: the spot's test compares distances.
@@ -34,14 +32,14 @@ std::map<std::string, std::string> DepthMapPass::default_includes(LightType ligh
 bool DepthMapPass::set_includes(const IncludeMap&, const IncludeRules&) {
   // Its programs include no feature files; built here so that errors show when a feature is switched on.
   const bool depth_ok = depth_.rebuild();
-  const bool mask_ok = mask_.rebuild();
+  const bool mask_ok = mask_.follow(depth_.desc());
   return quad_.rebuild() && depth_ok && mask_ok;
 }
 
 void DepthMapPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
   f(depth_);
   f(quad_);
-  f(mask_);
+  mask_.for_each_program(f);
 }
 
 bool DepthMapPass::ensure_targets(const ParamSet& params) {
@@ -78,23 +76,10 @@ void DepthMapPass::draw_depth(PassContext& ctx) {
   glUseProgram(depth_.id());
   const glm::mat4 light_view_proj = ctx.light.view.view_projection();
   depth_u_.light_view_proj.set(light_view_proj);
-  if (!ctx.gpu_scene.has_masked_casters()) return draw_casters_from_light(ctx, light_view_proj);
   // Alpha-tested casters after the others, through the program that discards where the view does.
-  if (mask_u_.generation != mask_.generation())
-    mask_u_ = {mask_.generation(), Uniform(mask_.id(), "u_light_view_proj"), Uniform(mask_.id(), "u_base_color"),
-               Uniform(mask_.id(), "u_alpha_cutoff")};
-  bool first = true;
-  const std::function<void(const GpuScene::Range&)> masked = [&](const GpuScene::Range& range) {
-    if (first) {
-      glUseProgram(mask_.id());
-      mask_u_.light_view_proj.set(light_view_proj);
-      mask_u_.base_color.set(kMaskTextureUnit);
-      first = false;
-    }
-    ctx.gpu_scene.bind_texture(range, kMaskTextureUnit);
-    mask_u_.alpha_cutoff.set(range.alpha_cutoff);
-  };
-  draw_casters_from_light(ctx, light_view_proj, &masked);
+  draw_casters_from_light(ctx, light_view_proj, mask_.prepare(ctx.gpu_scene, [&](AlphaMaskVariant& v) {
+    v.set("u_light_view_proj", light_view_proj);
+  }));
 }
 
 void DepthMapPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {

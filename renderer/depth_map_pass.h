@@ -33,11 +33,7 @@ class DepthMapPass final : public ShadowPass {
   void draw_depth(PassContext& ctx);
 
   ReloadableProgram depth_, quad_;
-  ReloadableProgram mask_;  // depth_ with ALPHA_MASK: alpha-tested (MASK) casters
-  struct MaskUniforms {
-    int generation = -1;
-    Uniform light_view_proj, base_color, alpha_cutoff;
-  } mask_u_;
+  AlphaMaskVariant mask_;  // depth_ with ALPHA_MASK: alpha-tested (MASK) casters
   struct DepthUniforms {
     int generation = -1;
     Uniform light_view_proj;

@@ -40,6 +40,7 @@ MomentsPass::MomentsPass()
       blur_x_(blur_desc("ivec2(1, 0)")),
       blur_y_(blur_desc("ivec2(0, 1)")),
       debug_({"shaders/fullscreen.vert", {}, "shaders/vsm/debug_moments.frag", {}, {}}),
+      mask_(moments_.desc()),
       fast_path_(has_compute_shaders() ? FastPath::Compute : FastPath::Fragment) {}
 
 std::map<std::string, std::string> MomentsPass::default_includes(LightType) {
@@ -52,6 +53,7 @@ std::map<std::string, std::string> MomentsPass::default_includes(LightType) {
 
 void MomentsPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
   f(moments_);
+  mask_.for_each_program(f);
   f(blur_x_);
   f(blur_y_);
   f(debug_);
@@ -72,7 +74,7 @@ bool MomentsPass::set_includes(const IncludeMap& includes, const IncludeRules& r
     p->set_desc(std::move(d));
     ok = p->rebuild() && ok;
   }
-  return ok;
+  return mask_.follow(moments_.desc()) && ok;
 }
 
 bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur) {
@@ -121,7 +123,10 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);
   moments_u_.warp_exponent.set(warp_exponent_);
-  const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters);
+  const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters, mask_.prepare(scene, [&](AlphaMaskVariant& v) {
+    v.set("u_light_view_proj", light_view_proj);
+    v.set("u_warp_exponent", warp_exponent_);
+  }));
   draws += counts.drawn;
   culled += counts.culled;
   glDisable(GL_CULL_FACE);

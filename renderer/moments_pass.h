@@ -148,6 +148,7 @@ class MomentsPass final : public ShadowPass {
 
  private:
   ReloadableProgram moments_, blur_x_, blur_y_, debug_;
+  AlphaMaskVariant mask_;  // moments_ with ALPHA_MASK: alpha-tested (MASK) casters
   struct MomentsUniforms {
     int generation = -1;
     Uniform light_view_proj, warp_exponent;

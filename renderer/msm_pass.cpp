@@ -4,7 +4,8 @@
 
 namespace shadowlab {
 
-MsmPass::MsmPass() : moments_({"shaders/shadow_depth.vert", {}, "shaders/msm/moments.frag", {}, {}}) {}
+MsmPass::MsmPass()
+    : moments_({"shaders/shadow_depth.vert", {}, "shaders/msm/moments.frag", {}, {}}), mask_(moments_.desc()) {}
 
 std::map<std::string, std::string> MsmPass::default_includes(LightType) {
   return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
@@ -17,10 +18,14 @@ bool MsmPass::set_includes(const IncludeMap& includes, const IncludeRules& rules
   d.includes = includes;
   d.rules = rules;
   moments_.set_desc(std::move(d));
-  return moments_.rebuild();
+  const bool ok = moments_.rebuild();
+  return mask_.follow(moments_.desc()) && ok;
 }
 
-void MsmPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) { f(moments_); }
+void MsmPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(moments_);
+  mask_.for_each_program(f);
+}
 
 bool MsmPass::ensure_targets(const ParamSet& params) {
   const int size = std::stoi(params.get_choice("shadow.map_size"));
@@ -55,7 +60,9 @@ void MsmPass::draw_map(PassContext& ctx) {
       glUseProgram(moments_.id());
       const glm::mat4 light_view_proj = ctx.light.view.view_projection();
       moments_u_.light_view_proj.set(light_view_proj);
-      draw_casters_from_light(ctx, light_view_proj);
+      draw_casters_from_light(ctx, light_view_proj, mask_.prepare(ctx.gpu_scene, [&](AlphaMaskVariant& v) {
+        v.set("u_light_view_proj", light_view_proj);
+      }));
     });
   });
   ++ctx.stats.moments_passes;

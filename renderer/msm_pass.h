@@ -42,6 +42,7 @@ class MsmPass final : public ShadowPass {
 
  private:
   ReloadableProgram moments_;
+  AlphaMaskVariant mask_;  // moments_ with ALPHA_MASK: alpha-tested (MASK) casters
   struct {
     int generation = -1;
     Uniform light_view_proj;

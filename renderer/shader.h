@@ -121,6 +121,7 @@ class Uniform {
  public:
   Uniform() = default;
   Uniform(GLuint program, const char* name) : location_(glGetUniformLocation(program, name)) {}
+  explicit Uniform(GLint location) : location_(location) {}
   void set(float v) const { glUniform1f(location_, v); }
   void set(int v) const { glUniform1i(location_, v); }
   void set(const glm::vec2& v) const { glUniform2f(location_, v.x, v.y); }

@@ -18,6 +18,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -157,6 +158,55 @@ class ShadowPass {
   virtual std::vector<float> read_depth(int* size) const;
   // The map as a picture (what the debug quad shows), RGBA8 top row first.
   virtual std::vector<std::uint8_t> image(int* size) const = 0;
+};
+
+// The ALPHA_MASK variant of a shadow pass's program. Alpha-tested (glTF MASK) casters drawn through it
+// discard where the view discards (shaders/shadow/alpha_mask.glsl: the base colour's alpha, factor x
+// vertex colour x texture, below the material's cutoff), so they cut the same holes into the map as
+// into the view and the oracle's truth. It is built on first use, i.e. only for a scene with MASK
+// casters: a scene without any never compiles it and draws exactly as before.
+class AlphaMaskVariant {
+ public:
+  using Callback = std::function<void(const GpuScene::Range&)>;
+  // `pass_program`: the pass's own program, which the variant follows with ALPHA_MASK defined.
+  explicit AlphaMaskVariant(const ProgramDesc& pass_program);
+  AlphaMaskVariant(const AlphaMaskVariant&) = delete;  // its callback points at it
+  AlphaMaskVariant& operator=(const AlphaMaskVariant&) = delete;
+  // The pass's program has new includes (a feature): the variant takes them too, and is rebuilt now if
+  // it was built, so that an error in them shows when the feature is switched on. False on a failure.
+  bool follow(const ProgramDesc& pass_program);
+  // f on the program once built (its generation is then an input of the map; its error is reported).
+  void for_each_program(const std::function<void(ReloadableProgram&)>& f);
+  // The `masked` argument of GpuScene::draw_casters for one call: null when the scene has no MASK casters
+  // (or the variant does not build: they are then drawn solid, and the error is the program's). Before
+  // the first masked caster the variant's program is made current and `use` sets the pass's own
+  // uniforms on it (through set()); before each masked caster, its texture and cutoff are bound.
+  template <typename Use>
+  const Callback* prepare(const GpuScene& scene, Use&& use) {
+    if (!ready(scene)) return nullptr;  // nothing is made for a scene without MASK casters
+    use_ = std::forward<Use>(use);
+    return &callback_;
+  }
+  // A uniform of the variant's program by name (its location looked up once per program build).
+  template <typename T>
+  void set(const char* name, const T& value) {
+    Uniform(location(name)).set(value);
+  }
+  GLint location(const char* name);
+
+ private:
+  // Whether the scene has MASK casters and the program builds (built now the first time).
+  bool ready(const GpuScene& scene);
+
+  ProgramDesc desc_;
+  ReloadableProgram program_;
+  bool built_ = false, current_ = false;
+  std::function<void(AlphaMaskVariant&)> use_;
+  const GpuScene* scene_ = nullptr;
+  Callback callback_;
+  int generation_ = -1;
+  Uniform base_color_, alpha_cutoff_;
+  std::vector<std::pair<std::string, GLint>> locations_;
 };
 
 // Faces the shadow pass skips (0 none, 1 front, 2 back): enables or disables GL_CULL_FACE to match.

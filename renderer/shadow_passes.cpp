@@ -47,6 +47,65 @@ std::vector<float> ShadowPass::read_depth(int* size) const {
   return {};
 }
 
+namespace {
+// The lit pass's base-colour unit (lit_pass.cpp): no shadow pass uses it for anything else.
+constexpr int kMaskTextureUnit = 6;
+
+ProgramDesc with_alpha_mask(ProgramDesc desc) {
+  desc.defines.emplace_back("ALPHA_MASK", "1");
+  return desc;
+}
+}  // namespace
+
+AlphaMaskVariant::AlphaMaskVariant(const ProgramDesc& pass_program)
+    : desc_(with_alpha_mask(pass_program)),
+      callback_([this](const GpuScene::Range& range) {
+        if (!current_) {
+          glUseProgram(program_.id());
+          base_color_.set(kMaskTextureUnit);
+          if (use_) use_(*this);
+          current_ = true;
+        }
+        scene_->bind_texture(range, kMaskTextureUnit);
+        alpha_cutoff_.set(range.alpha_cutoff);
+      }) {}
+
+bool AlphaMaskVariant::follow(const ProgramDesc& pass_program) {
+  desc_ = with_alpha_mask(pass_program);
+  program_.set_desc(desc_);
+  return !built_ || program_.rebuild();
+}
+
+void AlphaMaskVariant::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  if (built_) f(program_);
+}
+
+bool AlphaMaskVariant::ready(const GpuScene& scene) {
+  if (!scene.has_masked_casters()) return false;
+  if (!built_) {
+    program_.set_desc(desc_);
+    program_.rebuild();
+    built_ = true;
+  }
+  if (!program_.valid()) return false;
+  if (generation_ != program_.generation()) {
+    generation_ = program_.generation();
+    base_color_ = Uniform(program_.id(), "u_base_color");
+    alpha_cutoff_ = Uniform(program_.id(), "u_alpha_cutoff");
+    locations_.clear();
+  }
+  scene_ = &scene;
+  current_ = false;
+  return true;
+}
+
+GLint AlphaMaskVariant::location(const char* name) {
+  for (const auto& [n, at] : locations_)
+    if (n == name) return at;
+  locations_.emplace_back(name, glGetUniformLocation(program_.id(), name));
+  return locations_.back().second;
+}
+
 void set_shadow_culling(int cull) {
   if (cull == 0) {
     glDisable(GL_CULL_FACE);

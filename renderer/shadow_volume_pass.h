@@ -12,6 +12,11 @@
 // once per scene (renderer/adjacency.h); open, non-manifold and inconsistently wound edges are counted
 // per mesh and reported, not hidden. The renderer creates this pass only while a feature uses shadow
 // volumes or the volume wireframe view is on.
+//
+// Alpha-tested (glTF MASK) casters get the volume of their whole triangles: a silhouette is found from
+// edges, and a cut-out's edges are in its texture. Their shadows are solid here (the lit passes still
+// discard their holes in the view); the map techniques cut the holes (AlphaMaskVariant). Leaving them
+// out instead would lose their shadows altogether; tests/test_materials.cpp measures both.
 #pragma once
 
 #include <filesystem>
@@ -24,6 +29,11 @@
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {
+
+// The stencil pass's depth offset, in units of the depth buffer's resolution (glPolygonOffset(0, this)):
+// enough for the near caps to lose every depth tie with the faces they lie on (1 left 0.004 % of lab 9's
+// graded pixels wrong, 4 none), with no slope term, which would move the shadow outlines.
+inline constexpr float kVolumeOffsetUnits = 4.0f;
 
 // What the adjacency of one shadow-casting mesh says about its fitness for shadow volumes.
 struct VolumeMeshReport {

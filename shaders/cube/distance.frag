@@ -7,5 +7,10 @@ uniform vec3 u_light_position;
 layout(location = 0) out float o_distance;
 
 #include "lab/cube_store.glsl"
+// An alpha-tested caster (the ALPHA_MASK variant) discards where the view does.
+#include "shadow/alpha_mask.glsl"
 
-void main() { o_distance = value_to_store(v_world_position); }
+void main() {
+  alpha_test();
+  o_distance = value_to_store(v_world_position);
+}

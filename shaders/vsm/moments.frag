@@ -4,8 +4,14 @@
 // Colour can be filtered linearly and blurred, a depth buffer cannot: that is the point of VSM. The
 // depth test still runs, against the pass's own depth renderbuffer, so each texel keeps the nearest
 // surface. What the moments are is "lab/moments.glsl"'s job (lab 3).
+// An alpha-tested caster (the ALPHA_MASK variant) discards where the view does: after the moments, whose
+// slope term takes derivatives across the whole quad of fragments.
 #include "lab/moments.glsl"
+#include "shadow/alpha_mask.glsl"
 
 layout(location = 0) out vec2 o_moments;
 
-void main() { o_moments = shadow_moments(gl_FragCoord.z); }
+void main() {
+  o_moments = shadow_moments(gl_FragCoord.z);
+  alpha_test();
+}
