@@ -275,7 +275,7 @@ OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, flo
 
 CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Features& hooks, const std::string& name,
                                                 const Bounds* view, const BandSpec& band, int width, int height,
-                                                const OrbitCamera* camera) {
+                                                const OrbitCamera* camera, const Oracle* truth_oracle) {
   using clock = std::chrono::steady_clock;
   Measurement m;
   use(hooks);
@@ -310,7 +310,9 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Fe
     return a.radius_texels == b.radius_texels && a.samples == b.samples && a.fixed_screen_pixels == b.fixed_screen_pixels &&
            a.grazing_n_dot_l == b.grazing_n_dot_l;
   };
-  if (last_.scene_generation == scene_generation_ && same_light(last_.light, light) && same_band(last_.band, band) &&
+  if (truth_oracle) {
+    m.truth = truth_oracle->evaluate(gbuffer, light, band);
+  } else if (last_.scene_generation == scene_generation_ && same_light(last_.light, light) && same_band(last_.band, band) &&
       last_.gbuffer.width == gbuffer.width && last_.gbuffer.height == gbuffer.height &&
       last_.gbuffer.covered == gbuffer.covered && last_.gbuffer.position == gbuffer.position &&
       last_.gbuffer.normal == gbuffer.normal) {
