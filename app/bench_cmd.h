@@ -18,6 +18,8 @@ struct BenchOptions {
   // Only the placement figures (app/bench_placement.h): every technique over offsets and scales, and the
   // frame cost with the local origin against without it; placement.json. --quick: the CI test's sample.
   bool placement_only = false;
+  // Only pareto.png, drawn again from this bench.json (a recorded run): nothing is measured.
+  std::string replot;
 };
 
 int run_bench(const BenchOptions& options);

@@ -143,8 +143,9 @@ int main(int argc, char** argv) {
                       "Only the placement figures: every technique's error at offsets 1e3..1e7 and scales 1e-4..1e5 "
                       "against the origin's, and the frame cost with the local origin against without it");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
+  bench_cmd->add_option("--replot", bench.replot, "Only draw pareto.png again from this bench.json (no measuring)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();
-  bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out); 3 runtime error.\n"
+  bench_cmd->footer("Exit: 0 written; 2 usage (unusable --scene/--out/--replot); 3 runtime error.\n"
                     "Progress goes to stderr: one line rewritten on a terminal, a line per tenth of the sweep in a log.\n"
                     "Example: shadowlab bench --quick --out out/bench");
 

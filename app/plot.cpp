@@ -19,14 +19,22 @@ void mark_pareto_front(std::vector<PlotPoint>& points) {
 
 std::vector<ImVec2> place_labels(const std::vector<ImVec2>& anchors, const std::vector<ImVec2>& sizes, ImVec2 min,
                                  ImVec2 max) {
+  constexpr int kFarthestStep = 8;  // how many label heights a label may move up or down from its point
   std::vector<ImRect> placed;
   std::vector<ImVec2> out;
   for (std::size_t i = 0; i < anchors.size(); ++i) {
     const ImVec2 c = anchors[i], size = sizes[i];
-    const ImVec2 corners[] = {{c.x + 8, c.y - 16}, {c.x + 8, c.y + 4}, {c.x - 8 - size.x, c.y - 16},
-                              {c.x - 8 - size.x, c.y + 4}};
-    ImRect where(corners[0], ImVec2(corners[0].x + size.x, corners[0].y + size.y));
-    for (const ImVec2& at : corners) {
+    const float step = size.y + 2;
+    // The four corners first, then further up and down on either side, nearest first.
+    std::vector<ImVec2> candidates = {{c.x + 8, c.y - 16}, {c.x + 8, c.y + 4}, {c.x - 8 - size.x, c.y - 16},
+                                      {c.x - 8 - size.x, c.y + 4}};
+    for (int k = 1; k <= kFarthestStep; ++k)
+      for (const float x : {c.x + 8, c.x - 8 - size.x}) {
+        candidates.push_back({x, c.y - 16 - k * step});
+        candidates.push_back({x, c.y + 4 + k * step});
+      }
+    ImRect where(candidates[0], ImVec2(candidates[0].x + size.x, candidates[0].y + size.y));
+    for (const ImVec2& at : candidates) {
       const ImRect r(at, ImVec2(at.x + size.x, at.y + size.y));
       const bool inside = r.Min.x >= min.x && r.Max.x <= max.x && r.Min.y >= min.y && r.Max.y <= max.y;
       const bool free = std::none_of(placed.begin(), placed.end(), [&](const ImRect& q) { return q.Overlaps(r); });
@@ -121,8 +129,14 @@ void draw_error_time_plot(const std::vector<PlotPoint>& points, const std::vecto
     sizes.push_back(ImGui::CalcTextSize(p->label.c_str()));
   }
   const std::vector<ImVec2> at = place_labels(anchors, sizes, p0, p1);
-  for (std::size_t i = 0; i < front.size(); ++i)
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    // A label moved away from its point (crowded fronts) gets a thin line back to it.
+    const ImRect r(at[i], ImVec2(at[i].x + sizes[i].x, at[i].y + sizes[i].y));
+    const ImVec2 nearest(std::clamp(anchors[i].x, r.Min.x, r.Max.x), std::clamp(anchors[i].y, r.Min.y, r.Max.y));
+    const float dx = nearest.x - anchors[i].x, dy = nearest.y - anchors[i].y;
+    if (dx * dx + dy * dy > 18.0f * 18.0f) draw->AddLine(anchors[i], nearest, IM_COL32(200, 200, 200, 160), 1.0f);
     draw->AddText(at[i], IM_COL32(255, 255, 255, 255), front[i]->label.c_str());
+  }
   // Legend.
   float y = p0.y + 6, widest = 0.0f;
   for (const auto& name : group_names) widest = std::max(widest, ImGui::CalcTextSize(name.c_str()).x);

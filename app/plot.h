@@ -21,8 +21,9 @@ struct PlotPoint {
 void mark_pareto_front(std::vector<PlotPoint>& points);
 
 // Where to put labels of the given sizes next to their anchors (top-left corners): above right of the
-// anchor, else the first other corner (below right, above left, below left) that stays inside [min, max]
-// and overlaps no label placed before; when none does, above right.
+// anchor, else the first other corner (below right, above left, below left), else further up or down
+// on either side (up to 8 label heights, nearest first), that stays inside [min, max] and overlaps no
+// label placed before; when none does, above right.
 std::vector<ImVec2> place_labels(const std::vector<ImVec2>& anchors, const std::vector<ImVec2>& sizes, ImVec2 min,
                                  ImVec2 max);
 

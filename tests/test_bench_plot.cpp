@@ -112,10 +112,10 @@ TEST_F(BenchFiles, ErrorsNameTheFileAndTheProblem) {
 }
 
 // The project's own measured results (docs/bench.json, shown by the window and the README) load and
-// have a front in each of the benchmark's four scenes.
+// have a front in each of the benchmark's five scenes.
 TEST(BenchPlots, ShippedResultsLoad) {
   const BenchPlots plots = load_bench_plots(fs::path(SHADOWLAB_SOURCE_DIR) / "docs" / "bench.json");
-  for (const char* scene : {"default", "grazing", "stacked", "palmtree"}) {
+  for (const char* scene : {"default", "grazing", "stacked", "palmtree", "palmtree-island"}) {
     ASSERT_TRUE(plots.by_scene.contains(scene)) << scene;
     const auto& points = plots.by_scene.at(scene);
     EXPECT_GE(points.size(), 20u) << scene;
@@ -139,6 +139,24 @@ TEST(PlotLabels, ApartAndInside) {
   EXPECT_EQ(at[0].x, 108.0f);                // the first takes the default corner, above right
   EXPECT_LE(at[3].x + size.x, 600.0f);       // the last would leave the plot on the right: left of it
   EXPECT_LT(at[3].x, anchors[3].x);
+}
+
+// A crowded front (nine points within a few pixels, as the island scene's cascades are): every label
+// finds a place of its own inside the plot, stacked above and below once the four corners are taken.
+TEST(PlotLabels, CrowdedFrontStaysApart) {
+  const ImVec2 size(90, 14);
+  std::vector<ImVec2> anchors;
+  for (int i = 0; i < 9; ++i) anchors.push_back({300.0f + 3.0f * static_cast<float>(i), 200.0f + (i % 2 ? 1.0f : -1.0f)});
+  const auto at = place_labels(anchors, std::vector<ImVec2>(anchors.size(), size), ImVec2(0, 0), ImVec2(600, 400));
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    EXPECT_GE(at[i].y, 0.0f);
+    EXPECT_LE(at[i].y + size.y, 400.0f);
+    for (std::size_t j = i + 1; j < at.size(); ++j) {
+      const bool overlap = at[i].x < at[j].x + size.x && at[j].x < at[i].x + size.x && at[i].y < at[j].y + size.y &&
+                           at[j].y < at[i].y + size.y;
+      EXPECT_FALSE(overlap) << i << " and " << j;
+    }
+  }
 }
 
 // What the Speed against error window builds, through a bare ImGui context (no window, no GL).
