@@ -117,6 +117,17 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
   if (name.find("negative_variance") != std::string::npos)
     return {format("%.0f texels have a negative variance", v), "E[z^2] - E[z]^2 must not go below the minimum variance."};
   if (name.find("non_finite") != std::string::npos) return {format("%.0f values are NaN or Inf", v), "no NaN or Inf may come out."};
+  if (name == "orientation")
+    return {format("the quad is turned up to %.2f deg away from the upright quad facing the light", v),
+            "turn the quad about the vertical toward the light."};
+  if (name == "size")
+    return {format("the quad's sides are up to %.1f %% off the tree's size, or not at a right angle", 100 * v),
+            "make the sides the tree's width and height, at a right angle."};
+  if (name == "follows_camera")
+    return {c.metric.starts_with("shadow_map")
+                ? format("%.2f %% of the shadow map's texels change when only the camera moves", 100 * v)
+                : format("the shadow pass's quad moves by up to %.3g units when only the camera moves", v),
+            "the shadow must not depend on the camera."};
   if (name.ends_with("_mismatch"))
     return {format("%.2f %% of the probe's cases differ from the reference", 100 * v), "compare your function with the lab's text."};
   const bool whole = v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit);

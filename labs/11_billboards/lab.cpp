@@ -51,7 +51,11 @@ constexpr double kMaxProbeCameraChange = 1e-5;  // world units: the quad for two
 constexpr double kMaxAlphaMismatch = 0.001;     // share of (uv, cutoff) points kept or cut wrongly
 constexpr double kMaxMapChange = 0.0;           // share of shadow-map texels changed between the two cameras
 
-// The held-out cutoffs and tree sizes (each case draws one of each).
+// The second camera (the first is the default framing: yaw 30, pitch 30 degrees).
+constexpr float kCameraBYaw = -70.0f, kCameraBPitch = 45.0f;
+
+// The held-out lights' elevation ranges (low, then high), and their cutoffs and tree sizes.
+constexpr float kHeldOutElevation[3] = {25.0f, 45.0f, 70.0f};
 constexpr float kHeldOutCutoff[2] = {0.3f, 0.7f};
 constexpr float kHeldOutWidth[2] = {1.0f, 1.8f};
 constexpr float kHeldOutHeight[2] = {1.6f, 2.2f};
@@ -201,10 +205,11 @@ void check_billboards(CheckContext& ctx, CheckResult& result) {
                           "and turn the quad toward the light.",
                           "light passes where the light-facing tree casts shadow: turn the quad toward the light, at "
                           "the view's size."};
-  // Two cameras: the default framing, and one 100 degrees round and higher. The shadow map must be the
+  // Two cameras: the default framing, and one 100 degrees round the other way and higher, looking toward
+  // the light (from the light's side the casters hide their own shadows). The shadow map must be the
   // same texel for texel.
   const Bounds box = ctx.scene().bounds();
-  const OrbitCamera camera_a = OrbitCamera::framing(box), camera_b = OrbitCamera::framing(box, 130.0f, 45.0f);
+  const OrbitCamera camera_a = OrbitCamera::framing(box), camera_b = OrbitCamera::framing(box, kCameraBYaw, kCameraBPitch);
   const auto a = shoot(ctx, params, hooks, "lab11_camera_a_" + impl, camera_a);
   grade_hard_shadow(result, "camera_a", a.metrics, limits);
   result.metrics["camera_a"]["render_ms"] = a.render_ms;
@@ -229,8 +234,8 @@ void check_billboards(CheckContext& ctx, CheckResult& result) {
   // Held-out: other lights and map sizes (draw_directional_cases), each with another cutoff and tree size.
   std::mt19937 rng(ctx.seed * 7919u + 12u);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const std::vector<HeldOutRange> ranges = {{25.0f, 45.0f, {"1024", "2048"}, {"default"}},
-                                            {45.0f, 70.0f, {"1024", "2048"}, {"default"}}};
+  const std::vector<HeldOutRange> ranges = {{kHeldOutElevation[0], kHeldOutElevation[1], {"1024", "2048"}, {"default"}},
+                                            {kHeldOutElevation[1], kHeldOutElevation[2], {"1024", "2048"}, {"default"}}};
   int k = 0;
   for (const DirectionalCase& c : draw_directional_cases(ctx, ranges)) {
     ParamSet p = c.apply(ctx, params);
