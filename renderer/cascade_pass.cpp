@@ -78,10 +78,10 @@ void CascadePass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
   const int budget = std::stoi(ctx.params.get_choice("shadow.map_size"));
   const float lambda = static_cast<float>(csm_param(ctx.params, "csm.lambda"));
   // The cascades depend on these alone: a still frame keeps them (and allocates nothing).
-  const FrameKey key{ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds().min,
-                     ctx.scene.bounds().max, count_, budget, lambda};
+  const Bounds& box = ctx.gpu_scene.bounds();
+  const FrameKey key{ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, box.min, box.max, count_, budget, lambda};
   if (!frame_valid_ || !(key == frame_key_)) {
-    frame_ = compute_cascades(ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, ctx.scene.bounds(), count_, lambda,
+    frame_ = compute_cascades(ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, box, count_, lambda,
                               budget, ctx.cascade_splits ? *ctx.cascade_splits : solution_splits,
                               ctx.cascade_fit ? *ctx.cascade_fit : solution_fit);
     frame_key_ = key;

@@ -52,7 +52,7 @@ void DebugViews::normals(PassContext& ctx, LitPass& lit) {
   glUseProgram(normals_.id());
   normals_u_.view_proj.set(ctx.camera_view_proj());
   // A few percent of the scene's size: long enough to see, short enough not to hide the scene.
-  const Bounds b = ctx.scene.bounds();
+  const Bounds& b = ctx.gpu_scene.bounds();
   normals_u_.length.set(b.empty() ? 0.1f : 0.03f * glm::length(b.extent()));
   ctx.gpu_scene.bind();
   for (const auto& range : ctx.gpu_scene.ranges()) {

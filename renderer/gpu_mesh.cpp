@@ -62,6 +62,7 @@ GpuScene::GpuScene(const Scene& scene)
     range.first_index = static_cast<std::uint32_t>(indices.size());
     range.index_count = static_cast<std::uint32_t>(mesh.indices.size());
     range.bounds = mesh.bounds();
+    bounds_.extend(range.bounds);
     range.casts_shadow = mesh.casts_shadow;
     const bool textured = mesh.texture >= 0 && static_cast<std::size_t>(mesh.texture) < scene.textures.size() &&
                           mesh.uvs.size() == mesh.positions.size();

@@ -50,6 +50,9 @@ class GpuScene {
   void bind_texture(const Range& range, int unit) const;
   const std::vector<Range>& ranges() const { return ranges_; }
   std::size_t triangle_count() const { return triangles_; }
+  // The scene's box (the union of the meshes' boxes, as Scene::bounds() gives it), kept from the
+  // upload so that a frame does not walk the vertices again.
+  const Bounds& bounds() const { return bounds_; }
 
  private:
   GlVertexArray vao_;
@@ -61,6 +64,7 @@ class GpuScene {
   bool has_materials_ = false;
   bool has_masked_casters_ = false;
   std::size_t triangles_ = 0;
+  Bounds bounds_;
 };
 
 }  // namespace shadowlab

@@ -291,7 +291,7 @@ void LitPass::bind_material(const ReloadableProgram& program, const PassContext&
   }
   glActiveTexture(GL_TEXTURE0);
   for (const auto& entry : material_params_) glUniform1f(at[k++], ctx.params.get_float(entry.second));
-  glUniform1f(at[k], ctx.scene.bounds().min.y);
+  glUniform1f(at[k], ctx.gpu_scene.bounds().min.y);
 }
 
 void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {
