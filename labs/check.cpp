@@ -117,6 +117,17 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
   if (name.find("negative_variance") != std::string::npos)
     return {format("%.0f texels have a negative variance", v), "E[z^2] - E[z]^2 must not go below the minimum variance."};
   if (name.find("non_finite") != std::string::npos) return {format("%.0f values are NaN or Inf", v), "no NaN or Inf may come out."};
+  if (name == "orientation")
+    return {format("the quad is turned up to %.2f deg away from the upright quad facing the light", v),
+            "turn the quad about the vertical toward the light."};
+  if (name == "size")
+    return {format("the quad's sides are up to %.1f %% off the tree's size, or not at a right angle", 100 * v),
+            "make the sides the tree's width and height, at a right angle."};
+  if (name == "follows_camera")
+    return {c.metric.starts_with("shadow_map")
+                ? format("%.2f %% of the shadow map's texels change when only the camera moves", 100 * v)
+                : format("the shadow pass's quad moves by up to %.3g units when only the camera moves", v),
+            "the shadow must not depend on the camera."};
   if (name.ends_with("_mismatch"))
     return {format("%.2f %% of the probe's cases differ from the reference", 100 * v), "compare your function with the lab's text."};
   const bool whole = v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit);
@@ -275,7 +286,7 @@ OrbitCamera camera_looking_at(const glm::vec3& eye, const glm::vec3& target, flo
 
 CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Features& hooks, const std::string& name,
                                                 const Bounds* view, const BandSpec& band, int width, int height,
-                                                const OrbitCamera* camera) {
+                                                const OrbitCamera* camera, const Oracle* truth_oracle) {
   using clock = std::chrono::steady_clock;
   Measurement m;
   use(hooks);
@@ -310,7 +321,9 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Fe
     return a.radius_texels == b.radius_texels && a.samples == b.samples && a.fixed_screen_pixels == b.fixed_screen_pixels &&
            a.grazing_n_dot_l == b.grazing_n_dot_l;
   };
-  if (last_.scene_generation == scene_generation_ && same_light(last_.light, light) && same_band(last_.band, band) &&
+  if (truth_oracle) {
+    m.truth = truth_oracle->evaluate(gbuffer, light, band);
+  } else if (last_.scene_generation == scene_generation_ && same_light(last_.light, light) && same_band(last_.band, band) &&
       last_.gbuffer.width == gbuffer.width && last_.gbuffer.height == gbuffer.height &&
       last_.gbuffer.covered == gbuffer.covered && last_.gbuffer.position == gbuffer.position &&
       last_.gbuffer.normal == gbuffer.normal) {

@@ -127,9 +127,11 @@ class CheckContext {
   // The camera frames `view` (default: the whole scene's bounds).
   // A spot light lights only its cone: pixels outside it (and within kSpotConeMarginDeg of its rim, where
   // the shader's and this test's rounding may differ) are not graded. `camera` replaces the framing.
+  // `truth_oracle` replaces the scene's oracle (casters the scene does not hold, e.g. lab 11's
+  // billboards as the light should see them); its truth is not reused by later measurements.
   Measurement measure(const ParamSet& params, const Features& hooks, const std::string& name,
                       const Bounds* view = nullptr, const BandSpec& band = grading_band(), int width = 960, int height = 540,
-                      const OrbitCamera* camera = nullptr);
+                      const OrbitCamera* camera = nullptr, const Oracle* truth_oracle = nullptr);
 
   std::vector<std::string> images;
 

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "renderer/billboards.h"
+
 namespace shadowlab {
 
 namespace {
@@ -60,7 +62,12 @@ bool DepthMapPass::ensure_targets(const ParamSet& params) {
 }
 
 void DepthMapPass::draw_map(PassContext& ctx) {
-  ctx.timed("shadow", [&] { ctx.count_texels([&] { draw_depth(ctx); }); });
+  ctx.timed("shadow", [&] {
+    ctx.count_texels([&] {
+      draw_depth(ctx);
+      if (ctx.billboards) ctx.billboards->draw_shadow(ctx, ctx.light.view.view_projection());
+    });
+  });
 }
 
 void DepthMapPass::draw_depth(PassContext& ctx) {

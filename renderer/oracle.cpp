@@ -170,6 +170,7 @@ struct Oracle::Impl {
     caster->mesh.texture = mesh.texture;
     caster->mesh.alpha_mode = mesh.alpha_mode;
     caster->mesh.alpha_cutoff = mesh.alpha_cutoff;
+    caster->mesh.shape_alpha = mesh.shape_alpha;
     caster->textures = textures;
     rtcSetGeometryUserData(geometry, caster.get());
     rtcSetGeometryOccludedFilterFunction(geometry, &MaskedCaster::filter);

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/billboards.h"
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/debug_views.h"
 #include "renderer/lit_pass.h"
@@ -23,6 +24,7 @@ struct Renderer::ShadowMapInputs {
   glm::vec3 light_position{0.0f};
   LightType light_type = LightType::Directional;
   int cull = 0;
+  glm::vec3 billboard_eye{0.0f};  // the camera, with billboards: a wrong shadow pass may turn them to it
   long scene = 0, targets = 0;
   std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
   std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
@@ -147,15 +149,22 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
   bool ok = lit_->build(includes, features.include_rules, light, variants);
   ok = pass.set_includes(includes, features.include_rules) && ok;
+  std::unique_ptr<BillboardPass> billboards;
+  if (!features.billboards.empty()) {
+    billboards = std::make_unique<BillboardPass>();
+    ok = billboards->set_includes(includes, features.include_rules) && ok;
+  }
   if (!ok) {
     // Kept now: a fresh pass that failed is dropped, and shader_error() walks only the kept passes.
     failed_build_error_.clear();
     const auto collect = [&](ReloadableProgram& program) { append_once(failed_build_error_, program.error()); };
     lit_->for_each_program(collect);
     pass.for_each_program(collect);
+    if (billboards) billboards->for_each_program(collect);
     return false;
   }
   failed_build_error_.clear();
+  billboards_ = std::move(billboards);
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
@@ -172,6 +181,7 @@ void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f
   lit_->for_each_program(f);
   views_->for_each_program(f);
   if (shadow_) shadow_->for_each_program(f);
+  if (billboards_) billboards_->for_each_program(f);
 }
 
 bool Renderer::poll_shader_files() {
@@ -228,6 +238,10 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
+  if (billboards_ && shadow_entry_ == &shadow_pass_entry(ShadowTechnique::Depth, light_.type)) {
+    billboards_->set_points(features_.billboards, placement_);
+    ctx.billboards = billboards_.get();
+  }
   // The lit program compiled for what these parameters use (the technique's few settings as constants).
   shadow.lit_constants(params, lit_constants_);
   lit_->use_constants(lit_constants_);
@@ -239,6 +253,13 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
 
   // 3. Lit pass from the camera, reading the shadow map (or the moments, or the stencil).
   ctx.timed("lit", [&] { lit_->draw(ctx, shadow, shape.lit); });
+  if (ctx.billboards) {
+    ctx.timed("billboards", [&] {
+      glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
+      glViewport(0, 0, request.width, request.height);
+      ctx.billboards->draw_view(ctx, params.get_or("billboard.show_shadow_quads", 0.0) != 0.0);
+    });
+  }
 
   // 4. Debug views.
   views_->draw(ctx, shadow, *lit_);
@@ -300,10 +321,12 @@ void Renderer::shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) co
   in.light_position = light_.position;
   in.light_type = light_.type;
   in.cull = ctx.cull;
+  in.billboard_eye = ctx.billboards ? glm::vec3(glm::inverse(ctx.camera_view)[3]) : glm::vec3(0.0f);
   in.scene = scene_generation_;
   in.targets = targets_generation_;
   in.programs.clear();
   shadow_->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
+  if (ctx.billboards) ctx.billboards->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
 }
 
 int Renderer::shadow_map_size() const { return shadow_->size(); }

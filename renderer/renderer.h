@@ -38,6 +38,7 @@
 namespace shadowlab {
 
 class ShadowPass;
+class BillboardPass;
 struct PassContext;
 class LitPass;
 class DebugViews;
@@ -79,6 +80,12 @@ struct Features {
   };
   std::map<std::string, MaterialTexture> material_textures;  // sampler uniform -> texels
   std::map<std::string, std::string> material_params;        // float uniform -> parameter key
+  // Billboards (renderer/billboards.h): trees standing at these points of the scene's frame, expanded by a
+  // geometry shader; the view turns them toward the camera, the depth map's pass draws the quads
+  // "lab/billboard.glsl" makes (default shaders/billboard/shadow_quad.glsl: toward the light) with its
+  // alpha test. Their size and cutoff are the billboard.* parameters (billboard_param_specs). With the
+  // depth-map technique only.
+  std::vector<glm::vec3> billboards;
 };
 
 struct FrameRequest {
@@ -238,6 +245,7 @@ class Renderer {
   std::unique_ptr<ShadowPass> shadow_;
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;
+  std::unique_ptr<BillboardPass> billboards_;  // only while the features have billboards
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   long targets_generation_ = 0;  // bumps whenever the shadow pass reallocates its targets

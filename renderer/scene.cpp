@@ -68,6 +68,7 @@ float Mesh::alpha_at(const std::vector<Texture>& textures, std::size_t t, float 
   if (!colors.empty()) alpha *= w * colors[a].a + u * colors[b].a + v * colors[c].a;
   if (texture >= 0 && static_cast<std::size_t>(texture) < textures.size() && !uvs.empty())
     alpha *= sample_texture(textures[static_cast<std::size_t>(texture)], w * uvs[a] + u * uvs[b] + v * uvs[c]).a;
+  if (shape_alpha && !uvs.empty()) alpha *= shape_alpha(w * uvs[a] + u * uvs[b] + v * uvs[c]);
   return alpha;
 }
 

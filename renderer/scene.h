@@ -72,10 +72,13 @@ struct Mesh {
   int texture = -1;
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;
+  // An analytic cut-out multiplied into the alpha at the point's uv (null: none): lab 11's billboards,
+  // whose shaders compute the same function (renderer/billboards.h).
+  float (*shape_alpha)(glm::vec2 uv) = nullptr;
   bool ground = false;  // the ground plane added by with_ground()
 
   // The alpha the material gives a point of triangle t at barycentrics (u, v) (factor x vertex colour x
-  // texture), as the lit and shadow passes compute it; `textures` is the scene's.
+  // texture x shape_alpha), as the lit and shadow passes compute it; `textures` is the scene's.
   float alpha_at(const std::vector<Texture>& textures, std::size_t t, float u, float v) const;
   // True when this point is cut out (MASK below the cutoff).
   bool cut_out(const std::vector<Texture>& textures, std::size_t t, float u, float v) const {

@@ -65,6 +65,8 @@ enum class LitVariant {
   CascadeView,     // cascaded shadow maps' debug view: tints each pixel by its cascade
 };
 
+class BillboardPass;
+
 // What a pass reads and records during one frame.
 struct PassContext {
   const Scene& scene;
@@ -84,6 +86,8 @@ struct PassContext {
   glm::mat4 cascade_view{1.0f}, cascade_projection{1.0f};
   const CascadeSplitFn* cascade_splits = nullptr;
   const CascadeFitFn* cascade_fit = nullptr;
+  // The features' billboards (null: none), which the depth map's pass draws after the casters.
+  BillboardPass* billboards = nullptr;
 
   glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
   template <typename F>

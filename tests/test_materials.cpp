@@ -12,6 +12,7 @@
 
 #include "labs/check.h"
 #include "labs/lab.h"
+#include "renderer/billboards.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/metrics.h"
 #include "renderer/oracle.h"
@@ -327,4 +328,38 @@ TEST_F(MaterialsTest, ShadowVolumesCastMaskedCastersSolid) {
 }
 
 }  // namespace
+
+// Lab 11's oracle: the light-facing billboard quads as MASK triangles whose alpha is the analytic cut-out
+// (Mesh::shape_alpha). A shadow ray through a point of the quad is blocked exactly where
+// billboard_alpha(uv) reaches the cutoff, at any cutoff; the quad stands upright and faces the light.
+TEST(Billboards, OracleCutsTheSameShapeAsTheShaders) {
+  const glm::vec3 to_light = direction_from_angles(35.0f, 50.0f), base(1.0f, 0.0f, -2.0f);
+  for (float cutoff : {0.3f, 0.5f, 0.7f}) {
+    BillboardSize size;
+    size.cutoff = cutoff;
+    Scene scene;
+    scene.meshes.push_back(billboard_light_quads({base}, size, to_light));
+    const Mesh& quad = scene.meshes[0];
+    ASSERT_EQ(quad.triangle_count(), 2u);
+    EXPECT_NEAR(glm::dot(quad.normals[0], to_light), glm::length(glm::vec3(to_light.x, 0, to_light.z)), 1e-5f);
+    EXPECT_FLOAT_EQ(quad.positions[2].y - quad.positions[0].y, size.height);
+    const Oracle oracle(scene);
+    const glm::vec3 right = quad.positions[1] - quad.positions[0], up = quad.positions[2] - quad.positions[0];
+    int blocked = 0, open = 0, wrong = 0;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 40; ++x) {
+        const glm::vec2 uv((x + 0.5f) / 40.0f, (y + 0.5f) / 40.0f);
+        const float alpha = billboard_alpha(uv);
+        if (std::abs(alpha - cutoff) < 1e-3f) continue;  // rounding of the hit's uv decides
+        const glm::vec3 p = quad.positions[0] + uv.x * right + uv.y * up;
+        const bool hit = oracle.occluded(p - 2.0f * to_light, to_light, 4.0f);
+        (hit ? blocked : open) += 1;
+        wrong += hit != (alpha >= cutoff);
+      }
+    EXPECT_EQ(wrong, 0) << "cutoff " << cutoff;
+    EXPECT_GT(blocked, 100) << "cutoff " << cutoff;  // the crown and trunk
+    EXPECT_GT(open, 100) << "cutoff " << cutoff;     // the gaps and the corners
+  }
+}
+
 }  // namespace shadowlab

@@ -1,0 +1,152 @@
+#include "renderer/billboards.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/shadow_pass.h"
+
+namespace shadowlab {
+
+namespace {
+
+constexpr float kTau = 6.28318530718f;
+
+glm::vec3 eye_of(const glm::mat4& view) { return glm::vec3(glm::inverse(view)[3]); }
+// (The lab's two programs are drawn once a frame each: their uniforms are looked up as they are set.)
+
+}  // namespace
+
+float billboard_alpha(glm::vec2 uv) {
+  const float x = std::abs(uv.x - 0.5f);
+  const float trunk = (x < 0.05f && uv.y < 0.4f) ? 1.0f : 0.0f;
+  const glm::vec2 d(x / 0.45f, (uv.y - 0.62f) / 0.36f);
+  const float crown = std::clamp(2.0f * (1.0f - glm::length(d)), 0.0f, 1.0f);
+  const float leaves = 0.65f + 0.35f * std::cos(kTau * 5.0f * x) * std::cos(kTau * 5.0f * uv.y);
+  return std::max(trunk, crown * leaves);
+}
+
+BillboardSize billboard_size(const ParamSet& params) {
+  BillboardSize s;
+  s.width = static_cast<float>(params.get_or("billboard.width", s.width));
+  s.height = static_cast<float>(params.get_or("billboard.height", s.height));
+  s.cutoff = static_cast<float>(params.get_or("billboard.cutoff", s.cutoff));
+  return s;
+}
+
+std::vector<ParamSpec> billboard_param_specs() {
+  const BillboardSize d;
+  const unsigned map = kInvalidatesShadowMap;
+  return {
+      {"billboard.width", "Tree width", ParamKind::Float, d.width, 0.2, 4.0, "The billboards' width, world units.", {}, map},
+      {"billboard.height", "Tree height", ParamKind::Float, d.height, 0.2, 4.0, "The billboards' height, world units.", {}, map},
+      {"billboard.cutoff", "Alpha cutoff", ParamKind::Float, d.cutoff, 0.05, 0.95,
+       "Points of the tree whose alpha is below this are cut out, in the view and (the lab's alpha test) in the "
+       "shadow map.",
+       {}, map},
+      {"billboard.show_shadow_quads", "Show the shadow pass's quads", ParamKind::Bool, 0, 0, 1,
+       "Draws the quads the shadow pass draws (your shadow_quad and shadow_keeps) in the view, in magenta.", {}},
+  };
+}
+
+Mesh billboard_light_quads(const std::vector<glm::vec3>& bases, const BillboardSize& size, const glm::vec3& to_light) {
+  Mesh m;
+  m.name = "billboards (light-facing)";
+  m.color = glm::vec3(0.2f, 0.45f, 0.16f);
+  m.alpha_mode = AlphaMode::Mask;
+  m.alpha_cutoff = size.cutoff;
+  m.shape_alpha = &billboard_alpha;
+  const glm::vec3 right = glm::normalize(glm::vec3(to_light.z, 0.0f, -to_light.x)) * size.width;
+  const glm::vec3 up(0.0f, size.height, 0.0f);
+  const glm::vec3 normal = glm::normalize(glm::cross(right, up));
+  for (const glm::vec3& base : bases) {
+    const auto first = static_cast<std::uint32_t>(m.positions.size());
+    for (int i = 0; i < 4; ++i) {
+      const glm::vec2 uv(static_cast<float>(i & 1), static_cast<float>(i >> 1));
+      m.positions.push_back(base + (uv.x - 0.5f) * right + uv.y * up);
+      m.normals.push_back(normal);
+      m.uvs.push_back(uv);
+    }
+    m.indices.insert(m.indices.end(), {first, first + 1, first + 2, first + 2, first + 1, first + 3});
+  }
+  return m;
+}
+
+BillboardPass::BillboardPass()
+    : shadow_({"shaders/billboard/billboard.vert", "shaders/billboard/shadow.geom", "shaders/billboard/shadow.frag", {}, {}}),
+      view_({"shaders/billboard/billboard.vert", "shaders/billboard/view.geom", "shaders/billboard/view.frag", {}, {}}) {}
+
+bool BillboardPass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
+  ProgramDesc desc = shadow_.desc();
+  desc.includes = includes;
+  desc.includes.emplace("lab/billboard.glsl", "shaders/billboard/shadow_quad.glsl");  // unless a lab gives one
+  desc.rules = rules;
+  shadow_.set_desc(desc);
+  const bool shadow_ok = shadow_.rebuild();
+  return view_.rebuild() && shadow_ok;
+}
+
+void BillboardPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(shadow_);
+  f(view_);
+}
+
+void BillboardPass::set_points(const std::vector<glm::vec3>& bases, const Placement& placement) {
+  std::vector<glm::vec3> local;
+  local.reserve(bases.size());
+  for (const glm::vec3& p : bases) local.push_back(placement.to_local(p));
+  if (local == uploaded_ && vao_) return;
+  if (!vao_) {
+    vao_ = GlVertexArray::create();
+    points_ = GlBuffer::create();
+  }
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, points_.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(local.size() * sizeof(glm::vec3)), local.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glBindVertexArray(0);
+  uploaded_ = std::move(local);
+  count_ = uploaded_.size();
+}
+
+void BillboardPass::draw_shadow_program(const PassContext& ctx, const glm::mat4& view_proj) {
+  const BillboardSize size = billboard_size(ctx.params);
+  const GLuint id = shadow_.id();
+  glUseProgram(id);
+  Uniform(id, "u_light_view_proj").set(view_proj);
+  Uniform(id, "u_to_light").set(ctx.light.to_light);
+  Uniform(id, "u_eye").set(eye_of(ctx.camera_view));
+  Uniform(id, "u_size").set(glm::vec2(size.width, size.height));
+  Uniform(id, "u_cutoff").set(size.cutoff);
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+}
+
+void BillboardPass::draw_shadow(const PassContext& ctx, const glm::mat4& light_view_proj) {
+  if (count_ == 0) return;
+  // Both faces: a quad turned either way casts the same shadow.
+  glDisable(GL_CULL_FACE);
+  draw_shadow_program(ctx, light_view_proj);
+}
+
+void BillboardPass::draw_view(const PassContext& ctx, bool show_shadow_quads) {
+  if (count_ == 0) return;
+  const BillboardSize size = billboard_size(ctx.params);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  const GLuint id = view_.id();
+  glUseProgram(id);
+  Uniform(id, "u_view_proj").set(ctx.camera_view_proj());
+  Uniform(id, "u_eye").set(eye_of(ctx.camera_view));
+  Uniform(id, "u_size").set(glm::vec2(size.width, size.height));
+  Uniform(id, "u_cutoff").set(size.cutoff);
+  Uniform(id, "u_ambient").set(ctx.params.get_float("view.ambient"));
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+  if (show_shadow_quads) draw_shadow_program(ctx, ctx.camera_view_proj());
+}
+
+}  // namespace shadowlab
