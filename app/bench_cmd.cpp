@@ -117,6 +117,10 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
                    int frames) {
   const Lab& lab = *t.lab;
   ParamSet params = lab_params(lab);
+  // Every technique of a scene under the same light: the renderer's default direction, whatever the
+  // lab's own default (lab 1's is a grazing 10 degrees), then the scene's and the technique's settings.
+  static const std::vector<ParamSpec> renderer_specs = renderer_param_specs();
+  for (const char* key : {"light.azimuth", "light.elevation"}) params.set(key, spec_in(renderer_specs, key, "renderer").default_value);
   for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
   for (const auto& [k, v] : t.entry.sets) params.set_from_string(k, v);
   if (map_size > 0) params.set_from_string("shadow.map_size", std::to_string(map_size));
