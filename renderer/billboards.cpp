@@ -91,10 +91,13 @@ void BillboardPass::for_each_program(const std::function<void(ReloadableProgram&
 }
 
 void BillboardPass::set_points(const std::vector<glm::vec3>& bases, const Placement& placement) {
+  // Called every frame: a still frame compares in place and allocates nothing.
+  bool same = vao_ && bases.size() == uploaded_.size();
+  for (std::size_t i = 0; same && i < bases.size(); ++i) same = placement.to_local(bases[i]) == uploaded_[i];
+  if (same) return;
   std::vector<glm::vec3> local;
   local.reserve(bases.size());
   for (const glm::vec3& p : bases) local.push_back(placement.to_local(p));
-  if (local == uploaded_ && vao_) return;
   if (!vao_) {
     vao_ = GlVertexArray::create();
     points_ = GlBuffer::create();
