@@ -218,6 +218,8 @@ void draw_stats(PanelModel& m) {
   if (!m.stats->passes.empty() && m.stats->passes.front().wall_clock)
     ImGui::TextDisabled("(wall): glFinish-bracketed time; a software rasteriser's real cost");
   ImGui::Text("shadow passes run: %ld of %ld frames", m.stats->shadow_passes, m.stats->frames);
+  if (m.stats->flashlight_shadow_passes > 0)
+    ImGui::Text("flashlight's map drawn: %ld of %ld frames", m.stats->flashlight_shadow_passes, m.stats->frames);
   ImGui::Text("since start: %ld draws, %ld casters culled,", m.stats->draws, m.stats->casters_culled);
   ImGui::Text("  %.1f M shadow texels written", static_cast<double>(m.stats->shadow_texels_written) * 1e-6);
   ImGui::Text("%zu triangles, scene: %s", m.triangles, m.scene_name.c_str());

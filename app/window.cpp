@@ -34,6 +34,7 @@
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
+#include "renderer/flashlight.h"
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/platform.h"
@@ -496,6 +497,9 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     const TimingMode timing = interactive_timing(app.renderer->timers_work(), app.pass_line_shown());
     app.renderer->set_timing(timing);
     app.split.set_timing(timing);
+    // The flashlight's node circles the scene while flashlight.animate is on (only its map is redrawn).
+    if (app.params.find("flashlight.animate") && app.params.get_bool("flashlight.animate"))
+      app.params.set("flashlight.phase", advance_flashlight_phase(app.params, glfwGetTime() - frame_start));
     const long finishes_before = FrameCost::finishes(app), blocking_before = FrameCost::blocking(app);
     render_view(app, width, height);
     FrameCost::Side& side = app.pass_line_shown() ? cost.shown : cost.hidden;

@@ -136,6 +136,9 @@ void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit)
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
   shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao});
+  // The flashlight's map left of the sun's.
+  if (ctx.flashlight_pass)
+    ctx.flashlight_pass->draw_debug_quads({lit.width() - side - 8, lit.height(), side, "depth", ctx.empty_vao});
   glEnable(GL_DEPTH_TEST);
   glViewport(0, 0, lit.width(), lit.height());
 }

@@ -20,10 +20,11 @@ bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.
 
 }  // namespace
 
-DepthMapPass::DepthMapPass()
+DepthMapPass::DepthMapPass(const char* pass_name)
     : depth_({"shaders/shadow_depth.vert", {}, "shaders/shadow_depth.frag", {}, {}}),
       quad_({"shaders/fullscreen.vert", {}, "shaders/debug_depth.frag", {}, {}}),
-      mask_(depth_.desc()) {}
+      mask_(depth_.desc()),
+      pass_name_(pass_name) {}
 
 std::map<std::string, std::string> DepthMapPass::default_includes(LightType light) {
   // A perspective map's depth is not linear in distance: the spot's test compares distances.
@@ -62,7 +63,7 @@ bool DepthMapPass::ensure_targets(const ParamSet& params) {
 }
 
 void DepthMapPass::draw_map(PassContext& ctx) {
-  ctx.timed("shadow", [&] {
+  ctx.timed(pass_name_, [&] {
     ctx.count_texels([&] {
       draw_depth(ctx);
       if (ctx.billboards) ctx.billboards->draw_shadow(ctx, ctx.light.view.view_projection());

@@ -15,7 +15,8 @@ namespace shadowlab {
 
 class DepthMapPass final : public ShadowPass {
  public:
-  DepthMapPass();
+  // `pass_name`: the pass's name in the frame's timings (a string literal).
+  explicit DepthMapPass(const char* pass_name = "shadow");
   static std::map<std::string, std::string> default_includes(LightType light);
 
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules) override;
@@ -26,6 +27,7 @@ class DepthMapPass final : public ShadowPass {
   void lit_constants(const ParamSet& params, LitConstants& out) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }
+  GLuint texture() const { return depth_texture_.id(); }
   std::vector<float> read_depth(int* size) const override;
   std::vector<std::uint8_t> image(int* size) const override;
 
@@ -42,6 +44,7 @@ class DepthMapPass final : public ShadowPass {
     int generation = -1;
     Uniform depth_map, rect;
   } quad_u_;
+  const char* pass_name_;
   int size_ = 0;
   std::string format_;
   GlTexture depth_texture_;

@@ -32,7 +32,8 @@ struct FrameStats {
   double cpu_ms = 0.0;  // wall time of render() (under Exact timing every pass is finished inside it)
   // Counters over the renderer's lifetime, so tests can see what was skipped.
   long frames = 0;
-  long shadow_passes = 0;   // shadow-map updates (depth, cube or moments)
+  long shadow_passes = 0;   // shadow-map updates (depth, cube or moments) of the frame's light (the sun)
+  long flashlight_shadow_passes = 0;  // updates of the flashlight's map (renderer/flashlight.h)
   long moments_passes = 0;  // of which moments passes
   long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map; brute2d: one)
   long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)

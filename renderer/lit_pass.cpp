@@ -32,7 +32,7 @@ void set_material_define(ProgramDesc& d, bool on) {
 }
 
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
-                     LitVariant variant, bool materials) {
+                     LitVariant variant, bool materials, bool flashlight) {
   const bool remap = is_overlay(variant);
   const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
                          : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
@@ -41,6 +41,7 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
+  if (flashlight && variant == LitVariant::Lit) d.defines.emplace_back("FLASHLIGHT", "1");
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
   set_material_define(d, materials);
@@ -87,12 +88,16 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
   u.csm.camera_view = Uniform(id, "u_csm_camera_view");
   u.csm.blend = Uniform(id, "u_csm_blend");
   u.csm.maps = Uniform(id, "u_csm_maps");
+  u.flash = {Uniform(id, "u_flash_map"),       Uniform(id, "u_flash_tex_matrix"), Uniform(id, "u_flash_position"),
+             Uniform(id, "u_flash_direction"), Uniform(id, "u_flash_cos_cone"),   Uniform(id, "u_flash_near"),
+             Uniform(id, "u_flash_far"),       Uniform(id, "u_flash_texel_angle"), Uniform(id, "u_flash_bias_slope"),
+             Uniform(id, "u_sun_intensity"),   Uniform(id, "u_flash_intensity")};
 }
 
 }  // namespace
 
 bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-                    const std::vector<LitVariant>& variants) {
+                    const std::vector<LitVariant>& variants, bool flashlight) {
   bool ok = true;
   for (LitVariant variant : variants)
     for (bool gbuffer : {false, true}) {
@@ -100,7 +105,7 @@ bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, Light
       Slot& slot = programs_[{variant, gbuffer}];
       slot.specialised.clear();  // built from the old includes; made again when drawn
       slot.failed.clear();
-      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant, materials_));
+      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant, materials_, flashlight));
       ok = slot.generic.program.rebuild() && ok;
     }
   return ok;
@@ -366,6 +371,25 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
   u.texel_angle.set(light.texel_angle(std::max(shadow.size(), 1)));
+  if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
+    const FrameLight& f = *ctx.flashlight;
+    const glm::mat4& fp = f.view.projection;
+    u.flash.tex_matrix.set(clip_to_texture() * f.view.view_projection());
+    u.flash.position.set(f.position);
+    u.flash.direction.set(f.spot_direction);
+    u.flash.cos_cone.set(std::cos(glm::radians(f.spot_cone_deg)));
+    u.flash.near.set(fp[3][2] / (fp[2][2] - 1.0f));
+    u.flash.far.set(fp[3][2] / (fp[2][2] + 1.0f));
+    u.flash.texel_angle.set(f.texel_angle(std::max(ctx.flashlight_pass->size(), 1)));
+    u.flash.bias_slope.set(static_cast<float>(params.get_or("flashlight.slope_bias", 2.0)));
+    u.flash.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
+    u.flash.intensity.set(static_cast<float>(params.get_or("flashlight.intensity", 0.8)));
+    glActiveTexture(GL_TEXTURE0 + kFlashlightUnit);
+    glBindTexture(GL_TEXTURE_2D, ctx.flashlight_map);
+    glBindSampler(kFlashlightUnit, 0);
+    u.flash.map.set(kFlashlightUnit);
+    glActiveTexture(GL_TEXTURE0);
+  }
   shadow.bind_lit_inputs(params, u);
   u.shadow_map.set(0);
 }

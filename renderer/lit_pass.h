@@ -24,10 +24,11 @@ namespace shadowlab {
 
 class LitPass {
  public:
-  // Builds these variants' programs (plain and G-buffer); false keeps the old programs (the error is in
+  // Builds these variants' programs (plain and G-buffer; with `flashlight` the lit one lit by the
+  // flashlight too: the FLASHLIGHT define, renderer/flashlight.h); false keeps the old programs (the error is in
   // them). Programs of other variants stay until keep_only().
   bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-             const std::vector<LitVariant>& variants);
+             const std::vector<LitVariant>& variants, bool flashlight = false);
   void keep_only(const std::vector<LitVariant>& variants);
   // Compiles the material variant (MATERIAL_TEXTURE: base-colour texture, alpha modes) or the plain
   // one into every program; draw() switches to what the scene needs, so a scene without textures or

@@ -8,6 +8,8 @@
 #include "renderer/billboards.h"
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/debug_views.h"
+#include "renderer/depth_map_pass.h"
+#include "renderer/flashlight.h"
 #include "renderer/lit_pass.h"
 #include "renderer/moments_pass.h"
 #include "renderer/shadow_volume_pass.h"
@@ -29,6 +31,16 @@ struct Renderer::ShadowMapInputs {
   std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
   std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
   bool operator==(const ShadowMapInputs&) const = default;
+};
+
+// Everything the flashlight's map is drawn from: its light, the casters, its targets, its programs and the
+// culling. Not the sun's parameters: moving the sun (or only the flashlight) leaves the other's map alone.
+struct Renderer::FlashlightInputs {
+  glm::mat4 light_view{1.0f}, light_projection{1.0f};
+  int cull = 0;
+  long scene = 0, targets = 0;
+  std::vector<int> programs;
+  bool operator==(const FlashlightInputs&) const = default;
 };
 
 namespace {
@@ -138,6 +150,8 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   IncludeMap includes;
   for (const auto& [name, file] : entry.default_includes(light)) includes[name] = file;
   includes[kMaterialInclude] = kPlainMaterial;
+  // The lit pass reads its includes before the preprocessor: the FLASHLIGHT part needs its file always.
+  includes["lab/combine.glsl"] = "shaders/shadow/combine_lights.glsl";
   for (const auto& [name, file] : features.includes) includes[name] = file;
   // The same technique keeps its pass (and targets); another gets a new one, kept only if it builds.
   std::unique_ptr<ShadowPass> fresh;
@@ -147,7 +161,12 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, features.include_rules, light, variants);
+  bool ok = lit_->build(includes, features.include_rules, light, variants, features.flashlight);
+  std::unique_ptr<DepthMapPass> flash;
+  if (features.flashlight) {
+    flash = std::make_unique<DepthMapPass>("flashlight shadow");
+    ok = flash->set_includes(includes, features.include_rules) && ok;
+  }
   ok = pass.set_includes(includes, features.include_rules) && ok;
   std::unique_ptr<BillboardPass> billboards;
   if (!features.billboards.empty()) {
@@ -165,6 +184,9 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   }
   failed_build_error_.clear();
   billboards_ = std::move(billboards);
+  flash_ = std::move(flash);
+  flash_inputs_valid_ = false;
+  ++flash_targets_generation_;
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
@@ -182,6 +204,7 @@ void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f
   views_->for_each_program(f);
   if (shadow_) shadow_->for_each_program(f);
   if (billboards_) billboards_->for_each_program(f);
+  if (flash_) flash_->for_each_program(f);
 }
 
 bool Renderer::poll_shader_files() {
@@ -204,7 +227,10 @@ std::string Renderer::shader_warnings() const {
   return out;
 }
 
-void Renderer::invalidate_shadow_map() { shadow_inputs_valid_ = false; }
+void Renderer::invalidate_shadow_map() {
+  shadow_inputs_valid_ = false;
+  flash_inputs_valid_ = false;
+}
 
 void Renderer::set_lit_constants(bool on) { lit_->set_specialise(on); }
 const LitConstants& Renderer::drawn_lit_constants() const { return lit_->drawn_constants(); }
@@ -249,6 +275,16 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's
   // view needs before it is lit (shadow volumes: the ambient and stencil passes).
   if (shape.has_map) update_shadow_map(ctx);
+  // 2b. The flashlight's own map, with its own inputs: moving it leaves the sun's map alone.
+  if (flash_) {
+    flash_light_ = flashlight_light(params, local_scene_.bounds(), camera_view_);
+    flash_light_.scene_position = placement_.to_scene(flash_light_.position);
+    if (flash_->ensure_targets(params)) ++flash_targets_generation_;
+    update_flashlight_map(ctx);
+    ctx.flashlight = &flash_light_;
+    ctx.flashlight_pass = flash_.get();
+    ctx.flashlight_map = flash_->texture();
+  }
   shadow.draw_view_passes(ctx, *lit_);
 
   // 3. Lit pass from the camera, reading the shadow map (or the moments, or the stencil).
@@ -312,6 +348,39 @@ void Renderer::update_shadow_map(PassContext& ctx) {
   shadow_map_inputs(ctx, *shadow_inputs_);
   shadow_inputs_->pass_inputs = inputs_scratch_->pass_inputs;  // into the capacity it already has
   shadow_inputs_valid_ = true;
+}
+
+void Renderer::update_flashlight_map(PassContext& ctx) {
+  if (!flash_scratch_) flash_scratch_ = std::make_unique<FlashlightInputs>();
+  if (!flash_inputs_) flash_inputs_ = std::make_unique<FlashlightInputs>();
+  FlashlightInputs& in = *flash_scratch_;
+  in.light_view = flash_light_.view.view;
+  in.light_projection = flash_light_.view.projection;
+  in.cull = ctx.cull;
+  in.scene = scene_generation_;
+  in.targets = flash_targets_generation_;
+  in.programs.clear();
+  flash_->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
+  if (flash_inputs_valid_ && *flash_inputs_ == in) return;
+  // The same frame's context with the flashlight as its light (and no billboards: they follow the sun).
+  PassContext light_ctx{ctx.scene,          ctx.gpu_scene,    ctx.params,         flash_light_,
+                        ctx.stats,          ctx.timer,        ctx.empty_vao,      ctx.cull,
+                        ctx.camera_view,    ctx.camera_projection, ctx.infinite_far_plane, ctx.gbuffer,
+                        ctx.cascade_view,   ctx.cascade_projection, ctx.cascade_splits, ctx.cascade_fit};
+  flash_->draw_map(light_ctx);
+  ++stats_.flashlight_shadow_passes;
+  std::swap(flash_inputs_, flash_scratch_);
+  flash_inputs_valid_ = true;
+}
+
+std::vector<float> Renderer::read_flashlight_depth(int* size) const {
+  if (!flash_) throw std::logic_error("read_flashlight_depth needs the flashlight feature");
+  return flash_->read_depth(size);
+}
+
+std::vector<std::uint8_t> Renderer::flashlight_map_image(int* size) const {
+  if (!flash_) throw std::logic_error("flashlight_map_image needs the flashlight feature");
+  return flash_->image(size);
 }
 
 void Renderer::shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const {

@@ -39,6 +39,7 @@ namespace shadowlab {
 
 class ShadowPass;
 class BillboardPass;
+class DepthMapPass;
 struct PassContext;
 class LitPass;
 class DebugViews;
@@ -86,6 +87,12 @@ struct Features {
   // alpha test. Their size and cutoff are the billboard.* parameters (billboard_param_specs). With the
   // depth-map technique only.
   std::vector<glm::vec3> billboards;
+  // A second shadowed light, the flashlight (renderer/flashlight.h: a spot on a node circling the scene or
+  // on the camera, the flashlight.* parameters): its own perspective depth map, redrawn only when it, its
+  // casters or its map's settings change; the lit pass combines both lights' terms in "lab/combine.glsl"
+  // (default shaders/shadow/combine_lights.glsl). With the techniques that have a map (not shadow
+  // volumes); billboards cast no shadow from it.
+  bool flashlight = false;
 };
 
 struct FrameRequest {
@@ -193,6 +200,12 @@ class Renderer {
   int height() const { return height_; }
   const FrameStats& stats() const { return stats_; }
 
+  // The flashlight of the last frame (null unless the features have one), in the local frame but for
+  // scene_position; its map's depths (bottom row first) and its map as a picture (as the debug quad).
+  const FrameLight* flashlight() const { return features_.flashlight && flash_ ? &flash_light_ : nullptr; }
+  std::vector<float> read_flashlight_depth(int* size) const;
+  std::vector<std::uint8_t> flashlight_map_image(int* size) const;
+
   // The light of the last frame. For spot and point lights to_light() points from the scene's centre
   // toward the light (for display); the lit pass uses the position.
   LightType light_type() const { return light_.type; }
@@ -215,6 +228,9 @@ class Renderer {
 
  private:
   struct ShadowMapInputs;
+  struct FlashlightInputs;
+  // The flashlight's map, unless everything it was last drawn from is unchanged.
+  void update_flashlight_map(PassContext& ctx);
   bool build_programs(const Features& features, LightType light);
   PassContext frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane);
   // Draws the shadow map unless everything it was last drawn from is unchanged.
@@ -246,6 +262,11 @@ class Renderer {
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;
   std::unique_ptr<BillboardPass> billboards_;  // only while the features have billboards
+  std::unique_ptr<DepthMapPass> flash_;          // only while the features have a flashlight
+  FrameLight flash_light_;
+  std::unique_ptr<FlashlightInputs> flash_inputs_, flash_scratch_;
+  bool flash_inputs_valid_ = false;
+  long flash_targets_generation_ = 0;
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   long targets_generation_ = 0;  // bumps whenever the shadow pass reallocates its targets

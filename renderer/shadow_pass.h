@@ -45,6 +45,10 @@ struct LitUniforms {
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
+  struct Flashlight {  // the FLASHLIGHT variant's (shaders/shadow/flashlight.glsl)
+    Uniform map, tex_matrix, position, direction, cos_cone, near, far, texel_angle, bias_slope;
+    Uniform sun_intensity, intensity;
+  } flash;
   struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
     Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
     Uniform near, count, camera_view, blend, maps;
@@ -66,6 +70,10 @@ enum class LitVariant {
 };
 
 class BillboardPass;
+class ShadowPass;
+
+// The texture unit of the flashlight's map in the lit pass (the techniques use the first few).
+constexpr int kFlashlightUnit = 7;
 
 // What a pass reads and records during one frame.
 struct PassContext {
@@ -88,6 +96,11 @@ struct PassContext {
   const CascadeFitFn* cascade_fit = nullptr;
   // The features' billboards (null: none), which the depth map's pass draws after the casters.
   BillboardPass* billboards = nullptr;
+  // The flashlight beside the frame's light (renderer/flashlight.h): its light and its map's pass (null:
+  // no flashlight). The lit pass reads its map on texture unit kFlashlightUnit.
+  const FrameLight* flashlight = nullptr;
+  ShadowPass* flashlight_pass = nullptr;
+  GLuint flashlight_map = 0;  // its depth texture
 
   glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
   template <typename F>

@@ -11,6 +11,14 @@
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
 #include "lab/material.glsl"
+#ifdef FLASHLIGHT
+// A second shadowed light, the flashlight (renderer/flashlight.h): its own map and test, and the lab's
+// combination of both lights' terms.
+#include "shadow/flashlight.glsl"
+#include "lab/combine.glsl"
+uniform float u_sun_intensity;
+uniform float u_flash_intensity;
+#endif
 
 in vec3 v_normal;
 in vec3 v_color;
@@ -74,7 +82,15 @@ void main() {
   float visibility = n_dot_l > 0.0 ? shadow_visibility(v_world_position, n, n_dot_l) : 0.0;
   vec3 albedo = surface_albedo(v_world_position, n, base);  // the lab's material over the base colour
   vec3 ambient = albedo * u_ambient;
+#ifdef FLASHLIGHT
+  float flash_n_dot_l = flashlight_n_dot_l(v_world_position, n);
+  float flash_visibility = flash_n_dot_l > 0.0 ? flashlight_visibility(v_world_position, n, flash_n_dot_l) : 0.0;
+  float direct = combine_lights(u_sun_intensity * max(n_dot_l, 0.0), visibility,
+                                u_flash_intensity * max(flash_n_dot_l, 0.0), flash_visibility);
+  vec3 linear = ambient + albedo * (1.0 - u_ambient) * direct;
+#else
   vec3 linear = ambient + albedo * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
+#endif
 #if defined(SHADOW_VOLUME_AMBIENT)
   visibility = 0.0;  // the additive pass adds 1 where the light reaches
   o_color = vec4(encode(ambient), 1.0);
@@ -86,7 +102,11 @@ void main() {
   o_color = vec4(encode(linear), alpha);
 #endif
 #ifdef WRITE_GBUFFER
+#ifdef FLASHLIGHT
+  o_visibility = direct;  // two lights: the direct light the lab's combination returned (what lab 15 grades)
+#else
   o_visibility = visibility;
+#endif
   o_position = vec4(v_world_position, 1.0);
   o_normal = vec4(n, 0.0);
 #endif
