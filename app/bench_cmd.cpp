@@ -24,6 +24,7 @@
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/platform.h"
+#include "renderer/soft_truth.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {
@@ -507,6 +508,69 @@ void write_pareto_png(const BenchPlots& plots, const fs::path& file) {
 
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
 
+// The soft truth's cost on every scene's frame (kWidth x kHeight, the scene's camera and sun): a sun of 1
+// and of 5 degrees, 16 x 16 samples at every pixel (Full) against EdgeRefined sampling, side by side, with
+// the hard oracle (no band) for scale, and how far EdgeRefined's truth is from Full's.
+constexpr int kSoftStrata = 16;
+nlohmann::json measure_soft_truth(Renderer& renderer, const std::vector<BenchScene>& bench_scenes) {
+  static const std::vector<ParamSpec> renderer_specs = renderer_param_specs();
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& s : bench_scenes) {
+    renderer.set_features({});
+    renderer.set_scene(s.scene);
+    ParamSet params(renderer_specs);
+    for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
+    params.set("view.debug_quad", 0.0);
+    FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
+    if (s.camera) request.camera = *s.camera;
+    request.gbuffer = true;
+    renderer.render(params, request);
+    const GBuffer gbuffer = renderer.read_gbuffer();
+    const Oracle oracle(s.scene);
+    OracleLight sun;
+    sun.to_light = renderer.to_light();
+    BandSpec no_band;
+    no_band.samples = 0;
+    const Truth hard = oracle.evaluate(gbuffer, sun, no_band);
+    for (const float degrees : {1.0f, 5.0f}) {
+      std::fprintf(stderr, "soft truth, %s, sun %.0f deg...\n", s.name.c_str(), static_cast<double>(degrees));
+      const float size = glm::radians(degrees);
+      const SoftTruth full = evaluate_soft(oracle, gbuffer, sun, size, kSoftStrata, SoftSampling::Full);
+      const SoftTruth edge = evaluate_soft(oracle, gbuffer, sun, size, kSoftStrata, SoftSampling::EdgeRefined);
+      long valid = 0, penumbra = 0, differ = 0;
+      double worst = 0.0, sum = 0.0;
+      for (std::size_t i = 0; i < full.visible.size(); ++i) {
+        if (!full.valid[i]) continue;
+        ++valid;
+        penumbra += full.visible[i] > 0.0f && full.visible[i] < 1.0f;
+        const double d = std::abs(static_cast<double>(edge.visible[i]) - full.visible[i]);
+        differ += d > 0.0;
+        worst = std::max(worst, d);
+        sum += d;
+      }
+      rows.push_back({{"scene", s.name}, {"sun_deg", degrees}, {"strata", kSoftStrata}, {"valid_pixels", valid},
+                      {"penumbra_pixels", penumbra}, {"hard_ms", 1e3 * hard.seconds}, {"full_ms", 1e3 * full.seconds},
+                      {"full_rays", full.rays}, {"edge_ms", 1e3 * edge.seconds}, {"edge_rays", edge.rays},
+                      {"edge_refined_pixels", edge.refined}, {"edge_differ_pixels", differ},
+                      {"edge_worst_abs_diff", worst},
+                      {"edge_mean_abs_diff", valid > 0 ? sum / static_cast<double>(valid) : 0.0}});
+    }
+  }
+  return rows;
+}
+
+void print_soft_truth(const nlohmann::json& rows) {
+  for (const auto& r : rows)
+    std::printf("soft truth %dx%d, %-15s sun %.0f deg: Full %7.0f ms (%5.1f M rays), EdgeRefined %6.0f ms = %.3fx "
+                "(%ld of %ld px in full, %ld penumbra), hard %4.0f ms; differ %ld px, worst %.4f, mean %.1e\n",
+                kWidth, kHeight, r["scene"].get<std::string>().c_str(), r["sun_deg"].get<double>(),
+                r["full_ms"].get<double>(), 1e-6 * r["full_rays"].get<double>(), r["edge_ms"].get<double>(),
+                r["edge_ms"].get<double>() / std::max(r["full_ms"].get<double>(), 1e-9),
+                r["edge_refined_pixels"].get<long>(), r["valid_pixels"].get<long>(), r["penumbra_pixels"].get<long>(),
+                r["hard_ms"].get<double>(), r["edge_differ_pixels"].get<long>(), r["edge_worst_abs_diff"].get<double>(),
+                r["edge_mean_abs_diff"].get<double>());
+}
+
 }  // namespace
 
 int run_bench(const BenchOptions& options) {
@@ -536,6 +600,16 @@ int run_bench(const BenchOptions& options) {
       print_frame_cost(frame_cost);
       return 0;
     }
+    if (options.soft_truth_only) {
+      nlohmann::json soft;
+      {
+        Renderer renderer;
+        soft = measure_soft_truth(renderer, bench_scenes);
+      }
+      write_text_atomic(fs::path(options.out_dir) / "soft_truth.json", soft.dump(2) + "\n");
+      print_soft_truth(soft);
+      return 0;
+    }
     const std::vector<int> sizes = options.quick ? std::vector<int>{512, 1024, 2048} : std::vector<int>{512, 1024, 2048, 4096};
     const int frames = options.quick ? 3 : 7;
     const auto techs = techniques(options.quick);
@@ -547,6 +621,7 @@ int run_bench(const BenchOptions& options) {
     std::vector<BlurTiming> blur_rows;
     std::vector<TechniquePasses> technique_rows;
     OracleCost oracle_cost;
+    nlohmann::json soft_truth = nlohmann::json::array();
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
@@ -603,6 +678,7 @@ int run_bench(const BenchOptions& options) {
       technique_rows = measure_technique_passes(renderer, kTechniqueMapSize, kTechniqueWidth, kTechniqueHeight,
                                                 options.quick ? 3 : 7);
       oracle_cost = measure_oracle(renderer, bench_scenes.front().scene, options.quick ? 3 : 7);
+      if (!options.quick) soft_truth = measure_soft_truth(renderer, bench_scenes);  // about 40 s here
     }
 
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
@@ -642,7 +718,8 @@ int run_bench(const BenchOptions& options) {
                              {"hidden_views", overlays},
                              {"blur_methods", blur_json(blur_rows)},
                              {"technique_passes", technique_passes_json(technique_rows)},
-                             {"oracle_cost", oracle_cost_json(oracle_cost)}};
+                             {"oracle_cost", oracle_cost_json(oracle_cost)},
+                             {"soft_truth_cost", soft_truth}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     write_pareto_png(plots, out / "pareto.png");
@@ -661,6 +738,7 @@ int run_bench(const BenchOptions& options) {
     print_blur_methods(blur_rows);
     print_technique_passes(technique_rows);
     print_oracle_cost(oracle_cost);
+    print_soft_truth(soft_truth);
     for (const auto& [name, plot] : plots.by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;

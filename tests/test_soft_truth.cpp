@@ -10,6 +10,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace shadowlab {
 namespace {
@@ -54,14 +56,14 @@ struct Errors {
 
 // A sun straight overhead of angular diameter `size`: at ground point x the ray to disk offset a (at
 // unit height) crosses the blocker's height at x + a kH, so the free part of the disk is a > -x / kH.
-Errors sun_errors(float size, int strata, int n, bool as_hard = false) {
+Errors sun_errors(float size, int strata, int n, bool as_hard = false, SoftSampling sampling = SoftSampling::EdgeRefined) {
   const Scene scene = half_plane_scene();
   const Oracle oracle(scene);
   const float r = std::tan(0.5f * size);
   const GBuffer g = receivers(n, -1.5f * kH * r, 1.5f * kH * r);
   OracleLight sun;
   sun.to_light = {0, 1, 0};
-  const SoftTruth t = evaluate_soft(oracle, g, sun, as_hard ? 0.0f : size, strata);
+  const SoftTruth t = evaluate_soft(oracle, g, sun, as_hard ? 0.0f : size, strata, sampling);
   Errors e;
   for (int i = 0; i < n; ++i) {
     const double x = g.position[static_cast<std::size_t>(i)].x;
@@ -180,6 +182,85 @@ TEST(SoftTruth, SizeZeroIsTheHardTruth) {
       shadowed += hard.valid[i] && !hard.lit[i];
     }
     EXPECT_GT(shadowed, 100);  // the scene does cast shadows on the grid
+  }
+}
+
+// The 120 x 120 ground grid under the default scene (a sphere, a box and a thin pillar over a floor).
+GBuffer ground_grid() {
+  GBuffer g;
+  g.width = 120;
+  g.height = 120;
+  for (int j = 0; j < 120; ++j)
+    for (int i = 0; i < 120; ++i) {
+      g.position.push_back({-6.0f + 0.1f * i + 0.05f, 0.0f, -6.0f + 0.1f * j + 0.05f});
+      g.normal.push_back({0, 1, 0});
+      g.covered.push_back(1);
+    }
+  return g;
+}
+
+// EdgeRefined gives the penumbra the very estimate Full sampling gives (the same samples), so where the
+// pilots see the edge nothing changes. On the closed forms' strips every receiver agrees bit for bit,
+// and the errors against the circular segment are the ones measured above.
+TEST(SoftTruth, EdgeRefinedIsFullSamplingAcrossAnEdge) {
+  const Scene scene = half_plane_scene();
+  const Oracle oracle(scene);
+  OracleLight sun;
+  OracleLight lamp;
+  lamp.positional = true;
+  lamp.position = {0.3f, 5.0f, 0.0f};
+  const float r = std::tan(0.5f * glm::radians(5.0f));
+  const GBuffer sun_strip = receivers(400, -3.0f * kH * r, 3.0f * kH * r);  // penumbra and as much again
+  const GBuffer lamp_strip = receivers(300, -1.2f, 0.8f);
+  for (const auto& [light, size, g] : {std::tuple{sun, glm::radians(5.0f), sun_strip}, std::tuple{lamp, 0.4f, lamp_strip}}) {
+    const SoftTruth full = evaluate_soft(oracle, g, light, size, 16, SoftSampling::Full);
+    const SoftTruth edge = evaluate_soft(oracle, g, light, size, 16, SoftSampling::EdgeRefined);
+    EXPECT_EQ(full.refined, g.position.size());
+    EXPECT_GT(edge.refined, 0u);
+    EXPECT_LT(edge.refined, g.position.size() * 3 / 4) << "the strips reach beyond the penumbra on both sides";
+    EXPECT_LT(edge.rays, full.rays * 3 / 4);
+    ASSERT_EQ(edge.valid, full.valid);
+    for (std::size_t i = 0; i < g.position.size(); ++i) ASSERT_EQ(edge.visible[i], full.visible[i]) << i;
+  }
+  const Errors e = sun_errors(glm::radians(5.0f), 16, 400, false, SoftSampling::Full);
+  const Errors refined = sun_errors(glm::radians(5.0f), 16, 400);
+  EXPECT_EQ(e.mean, refined.mean);
+  EXPECT_EQ(e.max, refined.max);
+}
+
+// On a scene of several casters the refinement samples in full only near the penumbrae, and every pixel
+// it leaves to the pilots is one Full sampling also finds wholly lit or wholly shadowed. Measured on the
+// 14,400 ground pixels (sun 2 and 8 degrees, lamp radius 0.25 and 1): 137, 674, 800 and 3,335 penumbra
+// pixels; 1,893, 2,404, 2,978 and 5,461 sampled in full; rays 0.20, 0.23, 0.27 and 0.45x Full's; no pixel
+// differs from Full. (With neighbours only 1 pixel away, the lamp of radius 1 left one pixel off by 1/256.)
+// The limits allow what a thin caster can hide from every pilot: a 0.1 % share of the pixels, by <= 0.01.
+TEST(SoftTruth, EdgeRefinedAgreesWithFullSamplingOnTheDefaultScene) {
+  const Scene scene = make_default_scene();
+  const Oracle oracle(scene);
+  const GBuffer g = ground_grid();
+  OracleLight sun;
+  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
+  OracleLight lamp;
+  lamp.positional = true;
+  lamp.position = {-2.0f, 6.0f, 1.5f};
+  for (const auto& [light, size] : {std::pair{sun, glm::radians(2.0f)}, std::pair{sun, glm::radians(8.0f)},
+                                    std::pair{lamp, 0.25f}, std::pair{lamp, 1.0f}}) {
+    const SoftTruth full = evaluate_soft(oracle, g, light, size, 16, SoftSampling::Full);
+    const SoftTruth edge = evaluate_soft(oracle, g, light, size, 16);
+    int differ = 0, penumbra = 0;
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < g.position.size(); ++i) {
+      differ += edge.visible[i] != full.visible[i];
+      worst = std::max(worst, std::abs(edge.visible[i] - full.visible[i]));
+      penumbra += full.visible[i] > 0.0f && full.visible[i] < 1.0f;
+    }
+    std::printf("%s size %.3f: %d penumbra px, refined %zu of %zu, rays %.2fx Full's, %d differ (worst %.3f)\n",
+                light.positional ? "lamp" : "sun", size, penumbra, edge.refined, g.position.size(),
+                static_cast<double>(edge.rays) / static_cast<double>(full.rays), differ, worst);
+    EXPECT_GT(penumbra, 100);
+    EXPECT_LE(differ, static_cast<int>(g.position.size() / 1000));
+    EXPECT_LE(worst, 0.01f);
+    EXPECT_LT(edge.rays, full.rays / 2);
   }
 }
 
