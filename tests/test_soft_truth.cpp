@@ -4,6 +4,8 @@
 // hard truth bit for bit.
 #include "renderer/soft_truth.h"
 
+#include "renderer/metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -149,15 +151,9 @@ TEST(SoftTruth, PositionalPenumbraOfAnEdgeIsTheCircularSegment) {
   EXPECT_LT(worst, 0.05);  // measured: 0.030
 }
 
-// Size 0 is today's hard light: the same rays as Oracle::evaluate, so the same answer at every pixel,
-// on a scene with curved and flat casters, for a sun and a lamp.
-TEST(SoftTruth, SizeZeroIsTheHardTruth) {
-  const Scene scene = make_default_scene();
-  const Oracle oracle(scene);
-  GBuffer g = receivers(1, 0, 0);
-  g.position.clear();
-  g.normal.clear();
-  g.covered.clear();
+// The 120 x 120 ground grid under the default scene (a sphere, a box and a thin pillar over a floor).
+GBuffer ground_grid() {
+  GBuffer g;
   g.width = 120;
   g.height = 120;
   for (int j = 0; j < 120; ++j)
@@ -166,6 +162,15 @@ TEST(SoftTruth, SizeZeroIsTheHardTruth) {
       g.normal.push_back({0, 1, 0});
       g.covered.push_back(1);
     }
+  return g;
+}
+
+// Size 0 is today's hard light: the same rays as Oracle::evaluate, so the same answer at every pixel,
+// on a scene with curved and flat casters, for a sun and a lamp.
+TEST(SoftTruth, SizeZeroIsTheHardTruth) {
+  const Scene scene = make_default_scene();
+  const Oracle oracle(scene);
+  const GBuffer g = ground_grid();
   OracleLight sun;
   sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
   OracleLight lamp;
@@ -183,20 +188,6 @@ TEST(SoftTruth, SizeZeroIsTheHardTruth) {
     }
     EXPECT_GT(shadowed, 100);  // the scene does cast shadows on the grid
   }
-}
-
-// The 120 x 120 ground grid under the default scene (a sphere, a box and a thin pillar over a floor).
-GBuffer ground_grid() {
-  GBuffer g;
-  g.width = 120;
-  g.height = 120;
-  for (int j = 0; j < 120; ++j)
-    for (int i = 0; i < 120; ++i) {
-      g.position.push_back({-6.0f + 0.1f * i + 0.05f, 0.0f, -6.0f + 0.1f * j + 0.05f});
-      g.normal.push_back({0, 1, 0});
-      g.covered.push_back(1);
-    }
-  return g;
 }
 
 // EdgeRefined gives the penumbra the very estimate Full sampling gives (the same samples), so where the
@@ -262,6 +253,76 @@ TEST(SoftTruth, EdgeRefinedAgreesWithFullSamplingOnTheDefaultScene) {
     EXPECT_LE(worst, 0.01f);
     EXPECT_LT(edge.rays, full.rays / 2);
   }
+}
+
+// For a light of size 0 the soft error is the hard error the checks and the benchmark use: compare()'s
+// mean over interior and edge pixels together, with NaN, negative and above-one values among them.
+TEST(SoftMetrics, SizeZeroIsTheHardError) {
+  const Scene scene = make_default_scene();
+  const Oracle oracle(scene);
+  const GBuffer g = ground_grid();
+  OracleLight sun;
+  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
+  sun.texel_world_size = 0.05f;
+  sun.image_x = {1, 0, 0};
+  sun.image_y = {0, 0, 1};
+  const Truth hard = oracle.evaluate(g, sun);
+  const SoftTruth soft = evaluate_soft(oracle, g, sun, 0.0f, 16);
+  std::vector<float> visibility(g.position.size());
+  for (std::size_t i = 0; i < visibility.size(); ++i) {
+    const float lit = hard.lit[i] ? 1.0f : 0.0f;
+    switch (i % 7) {
+      case 0: visibility[i] = std::nanf(""); break;
+      case 1: visibility[i] = 1.0f - lit; break;
+      case 2: visibility[i] = lit + 0.3f; break;
+      case 3: visibility[i] = lit - 0.2f; break;
+      case 4: visibility[i] = 0.5f; break;
+      default: visibility[i] = lit;
+    }
+  }
+  const Metrics m = compare(hard, visibility);
+  const SoftMetrics sm = compare_soft(soft, visibility);
+  ASSERT_GT(m.edge_pixels, 100u);
+  ASSERT_GT(m.interior_shadowed, 100u);
+  EXPECT_EQ(sm.valid_pixels, m.valid_pixels);
+  EXPECT_EQ(sm.penumbra_pixels, 0u);
+  const double interior = static_cast<double>(m.interior_lit + m.interior_shadowed);
+  const double edge = static_cast<double>(m.edge_pixels);
+  EXPECT_NEAR(sm.mae, (m.mae_interior * interior + m.mae_edge * edge) / (interior + edge), 1e-12);
+  EXPECT_NEAR(sm.too_dark + sm.too_light, sm.mae, 1e-12);
+}
+
+TEST(SoftMetrics, SplitsTooDarkFromTooLightAndColoursThem) {
+  SoftTruth t;
+  t.width = 3;
+  t.height = 2;
+  t.valid = {1, 1, 1, 1, 1, 0};
+  t.visible = {1.0f, 0.5f, 0.25f, 0.0f, 0.5f, 0.0f};
+  const std::vector<float> v = {1.0f, 0.25f, 0.5f, 0.1f, std::nanf(""), 0.7f};
+  const SoftMetrics m = compare_soft(t, v);
+  EXPECT_EQ(m.valid_pixels, 5u);
+  EXPECT_EQ(m.penumbra_pixels, 3u);
+  // Errors: 0, -0.25, +0.25, +0.1, and a NaN where the fraction is 0.5 counts as 0 (too dark by 0.5).
+  EXPECT_NEAR(m.too_dark, (0.25 + 0.5) / 5, 1e-9);
+  EXPECT_NEAR(m.too_light, (0.25 + 0.1) / 5, 1e-7);
+  EXPECT_NEAR(m.mae, 1.1 / 5, 1e-9);
+  EXPECT_NEAR(m.mae_penumbra, (0.25 + 0.25 + 0.5) / 3, 1e-9);
+  const auto image = soft_diff_image(t, v);
+  ASSERT_EQ(image.size(), 3u * 2u * 4u);
+  auto at = [&](int x, int y_from_bottom) { return &image[static_cast<std::size_t>(((1 - y_from_bottom) * 3 + x) * 4)]; };
+  EXPECT_EQ(at(0, 0)[0], kDiffLit[0]);  // exact and lit: the lit grey
+  EXPECT_EQ(at(1, 0)[0], kDiffAcne[0]);  // too dark by a full kSoftDiffFullError: red
+  EXPECT_EQ(at(1, 0)[1], kDiffAcne[1]);
+  EXPECT_EQ(at(2, 0)[2], kDiffLeak[2]);  // too light by 0.25: blue
+  EXPECT_GT(at(0, 1)[2], at(0, 1)[0]);   // too light by 0.1: toward blue, not all the way
+  EXPECT_LT(at(0, 1)[2], kDiffLeak[2]);
+  EXPECT_EQ(at(1, 1)[0], kDiffAcne[0]);  // NaN: the wrong answer, here too dark
+  EXPECT_EQ(at(2, 1)[0], 0);  // invalid: black
+  EXPECT_EQ(at(2, 1)[3], 255);
+  SoftTruth wrong = t;
+  wrong.visible.pop_back();
+  EXPECT_THROW(compare_soft(wrong, v), std::invalid_argument);
+  EXPECT_THROW(soft_diff_image(t, std::vector<float>(5)), std::invalid_argument);
 }
 
 TEST(SoftTruth, RefusesWhatItCannotMean) {
