@@ -57,6 +57,21 @@ struct BenchPoint {
   double cpu_ms = 0.0;                    // median CPU time of render()
   Metrics metrics;
   double error = 0.0;  // mean |visibility - truth| over all valid pixels
+  // The same frame graded against the truth of a sun with a size (kBenchSunDegrees): a technique that
+  // does not read the light's size draws the same image whatever it is.
+  std::vector<std::pair<float, SoftMetrics>> light_sizes;
+};
+
+// The suns with a size the benchmark grades every frame against, angular diameters in degrees: small
+// (twice the real sun's 0.53) and large (a lamp a metre wide 11 m away).
+constexpr float kBenchSunDegrees[] = {1.0f, 5.0f};
+constexpr int kSoftStrata = 16;  // their samples per pixel: 16 x 16 (renderer/soft_truth.h states its error)
+// Their truths on one scene's frame: every technique of a scene draws the same G-buffer under the same
+// sun, so they are made once per scene (and again should a technique's frame or light differ).
+struct SizedTruths {
+  GBuffer gbuffer;
+  OracleLight light;
+  std::vector<SoftTruth> truths;  // one per kBenchSunDegrees
 };
 
 constexpr int kWidth = 640, kHeight = 360;
@@ -115,7 +130,7 @@ std::vector<BenchScene> scenes(const std::string& scene_file) {
 }
 
 BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t, const BenchScene& s, int map_size,
-                   int frames) {
+                   int frames, SizedTruths& sized) {
   const Lab& lab = *t.lab;
   ParamSet params = lab_params(lab);
   // Every technique of a scene under the same light: the renderer's default direction, whatever the
@@ -151,8 +166,22 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   BandSpec band;
   band.fixed_screen_pixels = kBandPixels;
   OracleLight light = oracle_light(renderer);
-  const Truth truth = oracle.evaluate(renderer.read_gbuffer(), light, band);
-  point.metrics = compare(truth, renderer.read_visibility());
+  GBuffer gbuffer = renderer.read_gbuffer();
+  const std::vector<float> visibility = renderer.read_visibility();
+  const Truth truth = oracle.evaluate(gbuffer, light, band);
+  point.metrics = compare(truth, visibility);
+  if (!light.positional) {
+    if (sized.truths.empty() || sized.light.to_light != light.to_light || sized.gbuffer.covered != gbuffer.covered ||
+        sized.gbuffer.position != gbuffer.position || sized.gbuffer.normal != gbuffer.normal) {
+      sized.truths.clear();
+      for (const float degrees : kBenchSunDegrees)
+        sized.truths.push_back(evaluate_soft(oracle, gbuffer, light, glm::radians(degrees), kSoftStrata));
+      sized.gbuffer = std::move(gbuffer);
+      sized.light = light;
+    }
+    for (std::size_t k = 0; k < sized.truths.size(); ++k)
+      point.light_sizes.emplace_back(kBenchSunDegrees[k], compare_soft(sized.truths[k], visibility));
+  }
   const double interior = static_cast<double>(point.metrics.interior_lit + point.metrics.interior_shadowed);
   const double edge = static_cast<double>(point.metrics.edge_pixels);
   point.error = interior + edge > 0 ? (point.metrics.mae_interior * interior + point.metrics.mae_edge * edge) / (interior + edge) : 0.0;
@@ -487,14 +516,20 @@ OracleCost measure_oracle(Renderer& renderer, const Scene& scene, int repeats) {
   return measure_oracle_cost(scene, renderer.read_gbuffer(), directional, positional, repeats);
 }
 
-// The plot: one tile per scene, drawn by the code that draws it in the app's panel.
-void write_pareto_png(const BenchPlots& plots, const fs::path& file) {
+// The plot: one tile per scene, drawn by the code that draws it in the app's panel; `sized_lights`: the
+// tiles of the suns with a size instead (two per row: one scene's sizes side by side). False when there
+// is no such tile (a run recorded before light sizes): nothing written.
+bool write_pareto_png(const BenchPlots& plots, const fs::path& file, bool sized_lights = false) {
+  std::vector<std::string> names;
+  for (const auto& [name, plot] : plots.by_scene)
+    if (is_sized_light_plot(name) == sized_lights) names.push_back(name);
+  if (names.empty()) return false;
   const int plot_w = 640, plot_h = 420;
-  const int cols = 2, rows = static_cast<int>((plots.by_scene.size() + 1) / 2);
+  const int cols = 2, rows = static_cast<int>((names.size() + 1) / 2);
   ImGuiOffscreen imgui(cols * plot_w, rows * plot_h);
   const auto pixels = imgui.render([&] {
     int i = 0;
-    for (const auto& [name, plot] : plots.by_scene) {
+    for (const auto& name : names) {
       ImGui::SetNextWindowPos(ImVec2(static_cast<float>((i % cols) * plot_w), static_cast<float>((i / cols) * plot_h)));
       ImGui::SetNextWindowSize(ImVec2(static_cast<float>(plot_w), static_cast<float>(plot_h)));
       ImGui::Begin(("##plot" + name).c_str(), nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
@@ -504,6 +539,7 @@ void write_pareto_png(const BenchPlots& plots, const fs::path& file) {
     }
   });
   write_png(file, cols * plot_w, rows * plot_h, pixels);
+  return true;
 }
 
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
@@ -511,7 +547,6 @@ std::string csv_escape(const std::string& s) { return s.find(',') == std::string
 // The soft truth's cost on every scene's frame (kWidth x kHeight, the scene's camera and sun): a sun of 1
 // and of 5 degrees, 16 x 16 samples at every pixel (Full) against EdgeRefined sampling, side by side, with
 // the hard oracle (no band) for scale, and how far EdgeRefined's truth is from Full's.
-constexpr int kSoftStrata = 16;
 nlohmann::json measure_soft_truth(Renderer& renderer, const std::vector<BenchScene>& bench_scenes) {
   static const std::vector<ParamSpec> renderer_specs = renderer_param_specs();
   nlohmann::json rows = nlohmann::json::array();
@@ -532,7 +567,7 @@ nlohmann::json measure_soft_truth(Renderer& renderer, const std::vector<BenchSce
     BandSpec no_band;
     no_band.samples = 0;
     const Truth hard = oracle.evaluate(gbuffer, sun, no_band);
-    for (const float degrees : {1.0f, 5.0f}) {
+    for (const float degrees : kBenchSunDegrees) {
       std::fprintf(stderr, "soft truth, %s, sun %.0f deg...\n", s.name.c_str(), static_cast<double>(degrees));
       const float size = glm::radians(degrees);
       const SoftTruth full = evaluate_soft(oracle, gbuffer, sun, size, kSoftStrata, SoftSampling::Full);
@@ -587,7 +622,9 @@ int run_bench(const BenchOptions& options) {
 
     if (replot) {
       write_pareto_png(*replot, fs::path(options.out_dir) / "pareto.png");
-      std::printf("wrote %s/pareto.png from %s\n", options.out_dir.c_str(), options.replot.c_str());
+      const bool sized = write_pareto_png(*replot, fs::path(options.out_dir) / "pareto_light_size.png", true);
+      std::printf("wrote %s/pareto.png%s from %s\n", options.out_dir.c_str(), sized ? " and pareto_light_size.png" : "",
+                  options.replot.c_str());
       return 0;
     }
     if (options.frame_cost_only) {
@@ -633,6 +670,7 @@ int run_bench(const BenchOptions& options) {
       for (const auto& s : bench_scenes) {
         renderer.set_scene(s.scene);
         const Oracle oracle(s.scene);
+        SizedTruths sized;
         for (const auto& t : techs) {
           for (int size : t.entry.uses_map ? sizes : std::vector<int>{0}) {
             ++done;
@@ -644,7 +682,7 @@ int run_bench(const BenchOptions& options) {
               std::fprintf(stderr, "[%zu/%zu] %s %s %d (%.0f s)\n", done, total, s.name.c_str(), t.entry.name.c_str(), size, elapsed);
               next_logged = done + std::max<std::size_t>(1, total / 10);
             }
-            points.push_back(measure(renderer, oracle, t, s, size, frames));
+            points.push_back(measure(renderer, oracle, t, s, size, frames, sized));
           }
         }
       }
@@ -684,10 +722,18 @@ int run_bench(const BenchOptions& options) {
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
     // exact), built from the JSON points by the function the app's panel uses to show a bench.json.
     nlohmann::json json_points = nlohmann::json::array();
-    for (const auto& p : points)
+    for (const auto& p : points) {
+      nlohmann::json light_sizes = nlohmann::json::array();
+      for (const auto& [degrees, m] : p.light_sizes) {
+        nlohmann::json entry = to_json(m);
+        entry["sun_deg"] = degrees;
+        entry["error"] = m.mae;
+        light_sizes.push_back(entry);
+      }
       json_points.push_back({{"scene", p.scene}, {"technique", p.technique}, {"family", p.family},
                              {"map_size", p.map_size}, {"gpu_ms", p.gpu_ms}, {"cpu_ms", p.cpu_ms}, {"error", p.error},
-                             {"passes", p.pass_ms}, {"metrics", to_json(p.metrics)}});
+                             {"passes", p.pass_ms}, {"metrics", to_json(p.metrics)}, {"light_sizes", light_sizes}});
+    }
     const BenchPlots plots = bench_plots_from_json({{"points", json_points}});
 
     const fs::path out(options.out_dir);
@@ -698,6 +744,10 @@ int run_bench(const BenchOptions& options) {
       const BenchPoint& p = points[i];
       const bool pareto = plots.by_scene.at(p.scene)[index_in_scene[p.scene]++].pareto;
       json_points[i]["pareto"] = pareto;
+      for (auto& entry : json_points[i]["light_sizes"]) {
+        const std::string plot = sized_light_plot(p.scene, entry["sun_deg"].get<double>());
+        entry["pareto"] = plots.by_scene.at(plot)[index_in_scene[plot]++].pareto;
+      }
       std::string passes;
       for (const auto& [name, ms] : p.pass_ms) passes += (passes.empty() ? "" : " ") + name + "=" + std::to_string(ms);
       csv << p.scene << ',' << csv_escape(p.technique) << ',' << p.map_size << ',' << p.gpu_ms << ',' << p.cpu_ms << ','
@@ -723,6 +773,7 @@ int run_bench(const BenchOptions& options) {
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     write_pareto_png(plots, out / "pareto.png");
+    write_pareto_png(plots, out / "pareto_light_size.png", true);
     std::printf("%zu points in %.0f s; wrote %s/bench.csv, bench.json, pareto.png\n", points.size(), seconds,
                 options.out_dir.c_str());
     print_frame_cost(frame_cost);
