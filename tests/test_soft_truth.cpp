@@ -165,17 +165,26 @@ GBuffer ground_grid() {
   return g;
 }
 
+// A sun and a lamp over that grid, both casting the default scene's shadows onto it.
+OracleLight grid_sun() {
+  OracleLight sun;
+  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
+  return sun;
+}
+OracleLight grid_lamp() {
+  OracleLight lamp;
+  lamp.positional = true;
+  lamp.position = {-2.0f, 6.0f, 1.5f};
+  return lamp;
+}
+
 // Size 0 is today's hard light: the same rays as Oracle::evaluate, so the same answer at every pixel,
 // on a scene with curved and flat casters, for a sun and a lamp.
 TEST(SoftTruth, SizeZeroIsTheHardTruth) {
   const Scene scene = make_default_scene();
   const Oracle oracle(scene);
   const GBuffer g = ground_grid();
-  OracleLight sun;
-  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
-  OracleLight lamp;
-  lamp.positional = true;
-  lamp.position = {-2.0f, 6.0f, 1.5f};
+  const OracleLight sun = grid_sun(), lamp = grid_lamp();
   for (const OracleLight& light : {sun, lamp}) {
     const Truth hard = oracle.evaluate(g, light);
     const SoftTruth soft = evaluate_soft(oracle, g, light, 0.0f, 8);
@@ -229,11 +238,7 @@ TEST(SoftTruth, EdgeRefinedAgreesWithFullSamplingOnTheDefaultScene) {
   const Scene scene = make_default_scene();
   const Oracle oracle(scene);
   const GBuffer g = ground_grid();
-  OracleLight sun;
-  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
-  OracleLight lamp;
-  lamp.positional = true;
-  lamp.position = {-2.0f, 6.0f, 1.5f};
+  const OracleLight sun = grid_sun(), lamp = grid_lamp();
   for (const auto& [light, size] : {std::pair{sun, glm::radians(2.0f)}, std::pair{sun, glm::radians(8.0f)},
                                     std::pair{lamp, 0.25f}, std::pair{lamp, 1.0f}}) {
     const SoftTruth full = evaluate_soft(oracle, g, light, size, 16, SoftSampling::Full);
@@ -261,8 +266,7 @@ TEST(SoftMetrics, SizeZeroIsTheHardError) {
   const Scene scene = make_default_scene();
   const Oracle oracle(scene);
   const GBuffer g = ground_grid();
-  OracleLight sun;
-  sun.to_light = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
+  OracleLight sun = grid_sun();
   sun.texel_world_size = 0.05f;
   sun.image_x = {1, 0, 0};
   sun.image_y = {0, 0, 1};
