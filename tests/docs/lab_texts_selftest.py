@@ -52,8 +52,8 @@ def run(root):
 
 def copy_texts(tmp):
     """What the texts name: app/, labs/, renderer/, shaders/, docs/measured/, docs/*.json (the benchmark's recorded
-    runs), README.md, the
-    test sources whose constants a text quotes and the exam corpus whose answers the README counts."""
+    runs), README.md, the test sources whose constants a text quotes and the exam corpus whose answers the README
+    counts."""
     for folder in ("app", "labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
