@@ -49,6 +49,12 @@ struct BenchScene {
   std::optional<OrbitCamera> camera;                     // or a camera standing inside the scene
 };
 
+struct SizedPoint {
+  float sun_deg = 0.0f;
+  SoftMetrics metrics;
+  double gpu_ms = 0.0;  // the point's own, unless the technique reads the light's size (timed again)
+};
+
 struct BenchPoint {
   std::string technique, family, scene;
   int map_size = 0;
@@ -59,7 +65,7 @@ struct BenchPoint {
   double error = 0.0;  // mean |visibility - truth| over all valid pixels
   // The same frame graded against the truth of a sun with a size (kBenchSunDegrees): a technique that
   // does not read the light's size draws the same image whatever it is.
-  std::vector<std::pair<float, SoftMetrics>> light_sizes;
+  std::vector<SizedPoint> light_sizes;
 };
 
 // The suns with a size the benchmark grades every frame against, angular diameters in degrees: small
@@ -146,20 +152,24 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   if (s.camera) request.camera = *s.camera;
 
   BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
-  std::map<std::string, std::vector<double>> pass_ms;
-  std::vector<double> cpu_ms;
-  for (int frame = -1; frame < frames; ++frame) {  // frame -1 warms up (shader variants, allocations)
-    renderer.invalidate_shadow_map();               // time the whole pipeline, every pass
-    const FrameStats& stats = renderer.render(params, request);
-    if (frame < 0) continue;
-    for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
-    cpu_ms.push_back(stats.cpu_ms);
-  }
-  for (auto& [name, v] : pass_ms) {
-    point.pass_ms[name] = median(v);
-    point.gpu_ms += point.pass_ms[name];
-  }
-  point.cpu_ms = median(cpu_ms);
+  // Each pass's median time over `frames` frames (after a warm-up: shader variants, allocations), each
+  // forced to run the whole pipeline; returns the medians' sum.
+  auto time_passes = [&](const ParamSet& with, std::map<std::string, double>& medians, double* cpu) {
+    std::map<std::string, std::vector<double>> pass_ms;
+    std::vector<double> cpu_ms;
+    for (int frame = -1; frame < frames; ++frame) {
+      renderer.invalidate_shadow_map();
+      const FrameStats& stats = renderer.render(with, request);
+      if (frame < 0) continue;
+      for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
+      cpu_ms.push_back(stats.cpu_ms);
+    }
+    double total = 0.0;
+    for (auto& [name, v] : pass_ms) total += medians[name] = median(v);
+    if (cpu) *cpu = median(cpu_ms);
+    return total;
+  };
+  point.gpu_ms = time_passes(params, point.pass_ms, &point.cpu_ms);
   // The error, from one more frame with the G-buffer.
   request.gbuffer = true;
   renderer.render(params, request);
@@ -179,8 +189,23 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
       sized.gbuffer = std::move(gbuffer);
       sized.light = light;
     }
-    for (std::size_t k = 0; k < sized.truths.size(); ++k)
-      point.light_sizes.emplace_back(kBenchSunDegrees[k], compare_soft(sized.truths[k], visibility));
+    for (std::size_t k = 0; k < sized.truths.size(); ++k) {
+      SizedPoint at{kBenchSunDegrees[k], compare_soft(sized.truths[k], visibility), point.gpu_ms};
+      // A technique that reads the light's size (a penumbra estimate, a filter matched to the light)
+      // draws another image at each size: graded on that image, and timed again.
+      if (params.find("light.size")) {
+        ParamSet at_size = params;
+        at_size.set("light.size", kBenchSunDegrees[k]);
+        renderer.render(at_size, request);
+        const std::vector<float> sized_visibility = renderer.read_visibility();
+        if (sized_visibility != visibility) {
+          at.metrics = compare_soft(sized.truths[k], sized_visibility);
+          std::map<std::string, double> unused;
+          at.gpu_ms = time_passes(at_size, unused, nullptr);
+        }
+      }
+      point.light_sizes.push_back(at);
+    }
   }
   const double interior = static_cast<double>(point.metrics.interior_lit + point.metrics.interior_shadowed);
   const double edge = static_cast<double>(point.metrics.edge_pixels);
@@ -724,10 +749,11 @@ int run_bench(const BenchOptions& options) {
     nlohmann::json json_points = nlohmann::json::array();
     for (const auto& p : points) {
       nlohmann::json light_sizes = nlohmann::json::array();
-      for (const auto& [degrees, m] : p.light_sizes) {
-        nlohmann::json entry = to_json(m);
-        entry["sun_deg"] = degrees;
-        entry["error"] = m.mae;
+      for (const auto& sized : p.light_sizes) {
+        nlohmann::json entry = to_json(sized.metrics);
+        entry["sun_deg"] = sized.sun_deg;
+        entry["error"] = sized.metrics.mae;
+        entry["gpu_ms"] = sized.gpu_ms;
         light_sizes.push_back(entry);
       }
       json_points.push_back({{"scene", p.scene}, {"technique", p.technique}, {"family", p.family},

@@ -66,6 +66,7 @@ BenchPlots bench_plots_from_json(const nlohmann::json& report) {
     for (const auto& entry : sized) {
       PlotPoint at_size = point;
       at_size.error = number(entry, i, "error");
+      if (entry.contains("gpu_ms")) at_size.time_ms = number(entry, i, "gpu_ms");  // timed at that size
       plots.by_scene[sized_light_plot(scene, number(entry, i, "sun_deg"))].push_back(at_size);
     }
   }

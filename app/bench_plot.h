@@ -20,8 +20,9 @@ struct BenchPlots {
 };
 
 // From bench.json's "points" (scene, technique, family, map_size, gpu_ms, error); marks each scene's
-// front. A point's "light_sizes" (sun_deg, error: the same frame graded against the truth of a sun with
-// that angular diameter) go to plots of their own, named by sized_light_plot, each with its front.
+// front. A point's "light_sizes" (sun_deg, error: the frame graded against the truth of a sun with that
+// angular diameter; gpu_ms when the technique was timed again at that size) go to plots of their own,
+// named by sized_light_plot, each with its front.
 // Throws std::runtime_error naming the point and the field when one is missing or not a number.
 BenchPlots bench_plots_from_json(const nlohmann::json& report);
 

@@ -55,7 +55,7 @@ TEST(BenchPlots, FrontPerSceneLabelsAndGroups) {
 TEST(BenchPlots, EachLightSizeHasItsOwnPlotAndFront) {
   nlohmann::json hard = point("a", "hard", 1024, 5, 0.001), blurred = point("a", "vsm r4", 1024, 9, 0.004, "VSM");
   hard["light_sizes"] = {{{"sun_deg", 1.0}, {"error", 0.002}}, {{"sun_deg", 5.0}, {"error", 0.02}}};
-  blurred["light_sizes"] = {{{"sun_deg", 1.0}, {"error", 0.005}}, {{"sun_deg", 5.0}, {"error", 0.01}}};
+  blurred["light_sizes"] = {{{"sun_deg", 1.0}, {"error", 0.005}}, {{"sun_deg", 5.0}, {"error", 0.01}, {"gpu_ms", 11}}};
   const BenchPlots plots = bench_plots_from_json({{"points", {hard, blurred}}});
   ASSERT_EQ(plots.by_scene.size(), 3u);
   EXPECT_EQ(sized_light_plot("a", 5.0), "a, sun 5 deg");
@@ -69,6 +69,8 @@ TEST(BenchPlots, EachLightSizeHasItsOwnPlotAndFront) {
   ASSERT_EQ(wide.size(), 2u);
   EXPECT_DOUBLE_EQ(wide[0].error, 0.02);
   EXPECT_EQ(wide[1].label, "vsm r4 1024");
+  EXPECT_DOUBLE_EQ(wide[1].time_ms, 11.0);  // timed again at that size
+  EXPECT_DOUBLE_EQ(plots.by_scene.at("a, sun 1 deg")[1].time_ms, 9.0);
   EXPECT_TRUE(wide[0].pareto);
   EXPECT_TRUE(wide[1].pareto);
   nlohmann::json bad = hard;

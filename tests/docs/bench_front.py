@@ -74,11 +74,12 @@ def light_size_block(bench):
     for s in scenes:
         for d in suns:
             pts = [(p, e) for p in bench["points"] if p["scene"] == s for e in p.get("light_sizes", []) if e["sun_deg"] == d]
-            front = sorted((pe for pe in pts if pe[1]["pareto"]), key=lambda pe: pe[0]["gpu_ms"])
+            front = sorted((pe for pe in pts if pe[1]["pareto"]), key=lambda pe: pe[1].get("gpu_ms", pe[0]["gpu_ms"]))
             hard = [pe for pe in pts if pe[0]["technique"] == "hard" and pe[0]["map_size"] == 2048]
             sharp = (f"{err(hard[0][0]['error'])} -> {err(hard[0][1]['error'])} ({err(hard[0][1]['mae_penumbra'])})"
                      if hard else "not measured")
-            rows.append(f"| {s} | {d:g} deg | " + " - ".join(f"{label(p)} ({ms(p)}, {err(e['error'])})" for p, e in front)
+            rows.append(f"| {s} | {d:g} deg | " + " - ".join(f"{label(p)} ({ms(e if 'gpu_ms' in e else p)}, {err(e['error'])})"
+                                                           for p, e in front)
                         + f" | {sharp} |")
     return rows
 
