@@ -183,11 +183,9 @@ TEST_F(FlatNormalsTest, WrongGeometryShadersFailTheSameComparison) {
   };
   const Wrong wrongs[] = {
       {"vertex normals passed through", "v_face_normal = n;", "v_face_normal = normalize(g_normal[i]);"},
-      {"edges crossed the other way (reversed winding)",
-       "cross(g_position[1] - g_position[0], g_position[2] - g_position[0])",
-       "cross(g_position[2] - g_position[0], g_position[1] - g_position[0])"},
-      {"not normalised", "normalize(cross(g_position[1] - g_position[0], g_position[2] - g_position[0]))",
-       "cross(g_position[1] - g_position[0], g_position[2] - g_position[0])"},
+      // The exercise lab 9's text suggests: the edges swapped.
+      {"edges crossed the other way (reversed winding)", "cross(b - a, c - a)", "cross(c - a, b - a)"},
+      {"not normalised", "normalize(cross(b - a, c - a))", "cross(b - a, c - a)"},
   };
   for (const Wrong& w : wrongs) {
     const Captured c = capture(wrong_shader(dir, w.from, w.to), scene);

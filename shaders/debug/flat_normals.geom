@@ -12,7 +12,8 @@ uniform mat4 u_view_proj;
 out vec3 v_face_normal;  // world space, unit length, the same at the three vertices
 
 void main() {
-  vec3 n = normalize(cross(g_position[1] - g_position[0], g_position[2] - g_position[0]));
+  vec3 a = g_position[0], b = g_position[1], c = g_position[2];
+  vec3 n = normalize(cross(b - a, c - a));
   for (int i = 0; i < 3; ++i) {
     v_face_normal = n;
     gl_Position = u_view_proj * vec4(g_position[i], 1.0);
