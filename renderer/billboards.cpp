@@ -114,13 +114,15 @@ void BillboardPass::set_points(const std::vector<glm::vec3>& bases, const Placem
 
 void BillboardPass::draw_shadow_program(const PassContext& ctx, const glm::mat4& view_proj) {
   const BillboardSize size = billboard_size(ctx.params);
-  const GLuint id = shadow_.id();
-  glUseProgram(id);
-  Uniform(id, "u_light_view_proj").set(view_proj);
-  Uniform(id, "u_to_light").set(ctx.light.to_light);
-  Uniform(id, "u_eye").set(eye_of(ctx.camera_view));
-  Uniform(id, "u_size").set(glm::vec2(size.width, size.height));
-  Uniform(id, "u_cutoff").set(size.cutoff);
+  const ShadowUniforms& u = shadow_u_.get(shadow_, [](GLuint id) {
+    return ShadowUniforms{{id, "u_light_view_proj"}, {id, "u_to_light"}, {id, "u_eye"}, {id, "u_size"}, {id, "u_cutoff"}};
+  });
+  glUseProgram(shadow_.id());
+  u.view_proj.set(view_proj);
+  u.to_light.set(ctx.light.to_light);
+  u.eye.set(eye_of(ctx.camera_view));
+  u.size.set(glm::vec2(size.width, size.height));
+  u.cutoff.set(size.cutoff);
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
 }
@@ -140,13 +142,15 @@ void BillboardPass::draw_view(const PassContext& ctx, bool show_shadow_quads) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  const GLuint id = view_.id();
-  glUseProgram(id);
-  Uniform(id, "u_view_proj").set(ctx.camera_view_proj());
-  Uniform(id, "u_eye").set(eye_of(ctx.camera_view));
-  Uniform(id, "u_size").set(glm::vec2(size.width, size.height));
-  Uniform(id, "u_cutoff").set(size.cutoff);
-  Uniform(id, "u_ambient").set(ctx.params.get_float("view.ambient"));
+  const ViewUniforms& u = view_u_.get(view_, [](GLuint id) {
+    return ViewUniforms{{id, "u_view_proj"}, {id, "u_eye"}, {id, "u_size"}, {id, "u_cutoff"}, {id, "u_ambient"}};
+  });
+  glUseProgram(view_.id());
+  u.view_proj.set(ctx.camera_view_proj());
+  u.eye.set(eye_of(ctx.camera_view));
+  u.size.set(glm::vec2(size.width, size.height));
+  u.cutoff.set(size.cutoff);
+  u.ambient.set(ctx.params.get_float("view.ambient"));
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
   if (show_shadow_quads) draw_shadow_program(ctx, ctx.camera_view_proj());

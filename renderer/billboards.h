@@ -57,6 +57,15 @@ class BillboardPass {
  private:
   void draw_shadow_program(const PassContext& ctx, const glm::mat4& view_proj);
   ReloadableProgram shadow_, view_;
+  // Looked up once per program generation (they were looked up by name every frame).
+  struct ShadowUniforms {
+    Uniform view_proj, to_light, eye, size, cutoff;
+  };
+  struct ViewUniforms {
+    Uniform view_proj, eye, size, cutoff, ambient;
+  };
+  UniformCache<ShadowUniforms> shadow_u_;
+  UniformCache<ViewUniforms> view_u_;
   GlVertexArray vao_;
   GlBuffer points_;
   std::vector<glm::vec3> uploaded_;

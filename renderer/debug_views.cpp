@@ -7,14 +7,21 @@
 
 namespace shadowlab {
 
+ProgramDesc DebugViews::flat_normals_desc() {
+  return {"shaders/debug/normals.vert", "shaders/debug/flat_normals.geom", "shaders/debug/flat_normals.frag", {}, {}};
+}
+
 DebugViews::DebugViews()
-    : normals_({"shaders/debug/normals.vert", "shaders/debug/normals.geom", "shaders/debug/normals.frag", {}, {}}),
+    : flat_normals_(flat_normals_desc()),
+      normals_({"shaders/debug/normals.vert", "shaders/debug/normals.geom", "shaders/debug/normals.frag", {}, {}}),
       lines_({"shaders/debug/lines.vert", {}, "shaders/debug/lines.frag", {}, {}}) {
-  if (!normals_.rebuild() || !lines_.rebuild())
-    throw std::runtime_error("cannot build the debug views' shaders:\n" + normals_.error() + lines_.error());
+  if (!flat_normals_.rebuild() || !normals_.rebuild() || !lines_.rebuild())
+    throw std::runtime_error("cannot build the debug views' shaders:\n" + flat_normals_.error() + normals_.error() +
+                             lines_.error());
 }
 
 void DebugViews::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
+  f(flat_normals_);
   f(normals_);
   f(lines_);
   if (wireframe_volumes_) wireframe_volumes_->for_each_program(f);
@@ -33,6 +40,8 @@ std::vector<VolumeMeshReport> DebugViews::volume_report() const {
 void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   const ParamSet& params = ctx.params;
   shadow.draw_views(ctx, lit);
+  // The facets first, so the normals' lines are drawn over them.
+  if (params.get_bool("view.flat_normals")) ctx.timed("flat_normals_view", [&] { flat_normals(ctx, lit); });
   if (params.get_bool("view.normals")) ctx.timed("normals_view", [&] { normals(ctx, lit); });
   if (params.get_bool("view.volumes")) ctx.timed("volumes_view", [&] { volumes_wireframe(ctx, shadow, lit); });
   // A point light's six frusta fill all space: nothing to draw.
@@ -40,6 +49,30 @@ void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
     ctx.timed("light_volume_view", [&] { light_volume(ctx, lit); });
   if (shadow.shape().has_map && params.get_bool("view.debug_quad"))
     ctx.timed("debug_quad", [&] { debug_quads(ctx, shadow, lit); });
+}
+
+void DebugViews::flat_normals(PassContext& ctx, LitPass& lit) {
+  if (flat_normals_u_.generation != flat_normals_.generation())
+    flat_normals_u_ = {flat_normals_.generation(), Uniform(flat_normals_.id(), "u_view_proj")};
+  bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // over the picture; the G-buffer stays as drawn
+  // The same triangles as the lit pass, redrawn over it: pulled a little toward the eye so that they win
+  // the depth test against their own depths (another program need not compute bit-identical depths).
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.0f, -1.0f);
+  glUseProgram(flat_normals_.id());
+  flat_normals_u_.view_proj.set(ctx.camera_view_proj());
+  ctx.gpu_scene.bind();
+  for (const auto& range : ctx.gpu_scene.ranges()) {
+    ctx.gpu_scene.draw(range);
+    ++ctx.stats.draws;
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0.0f, 0.0f);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
 }
 
 void DebugViews::normals(PassContext& ctx, LitPass& lit) {

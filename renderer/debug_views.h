@@ -1,6 +1,6 @@
 // The debug views drawn over the lit picture, each a pass of its own that costs nothing while hidden:
-// the shadow technique's own views (the variance remap), normals and shadow volumes as lines (geometry
-// shaders), the light's volume as a wireframe, and the shadow map in the corner.
+// the shadow technique's own views (the variance remap), the triangles in their face normals' colours
+// (flat normals from a geometry shader), normals and shadow volumes as lines (geometry shaders), the light's volume as a wireframe, and the shadow map in the corner.
 #pragma once
 
 #include <memory>
@@ -15,7 +15,12 @@ class LitPass;
 
 class DebugViews {
  public:
-  DebugViews();  // builds the normals and lines programs; throws if they do not build
+  DebugViews();  // builds the flat normals, normals and lines programs; throws if they do not build
+
+  // The flat-normals view's program (shaders/debug/flat_normals.geom: a triangle in, the same triangle
+  // with its face normal out, as v_face_normal), exposed so tests can capture what its geometry shader
+  // emits (add ProgramDesc::feedback_varyings).
+  static ProgramDesc flat_normals_desc();
 
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
   // The includes the shadow-volume wireframe is built with; drops the volumes (rebuilt on use).
@@ -28,12 +33,17 @@ class DebugViews {
   std::vector<VolumeMeshReport> volume_report() const;
 
  private:
+  void flat_normals(PassContext& ctx, LitPass& lit);
   void normals(PassContext& ctx, LitPass& lit);
   void volumes_wireframe(PassContext& ctx, ShadowPass& shadow, LitPass& lit);
   void light_volume(PassContext& ctx, LitPass& lit);
   void debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit);
 
-  ReloadableProgram normals_, lines_;
+  ReloadableProgram flat_normals_, normals_, lines_;
+  struct FlatNormalsUniforms {
+    int generation = -1;
+    Uniform view_proj;
+  } flat_normals_u_;
   struct NormalsUniforms {
     int generation = -1;
     Uniform view_proj, length;

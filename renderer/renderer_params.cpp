@@ -48,6 +48,10 @@ std::vector<ParamSpec> renderer_param_specs() {
        "Wireframe of what the shadow map covers: the fitted ortho box of a directional light or the frustum of "
        "a spot light (a point light's six frusta fill all space: nothing to draw).", {}},
       // Geometry-shader debug views; they cost nothing while off.
+      {"view.flat_normals", "Show flat normals (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "A geometry shader takes each triangle and emits it again with its face normal (the cross product of "
+       "two edges) in place of the vertices' smooth normals; each triangle is drawn in that normal's colour "
+       "(x red, y green, z blue), so the facets of a smooth-shaded mesh show.", {}},
       {"view.normals", "Show normals (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,
        "A geometry shader turns every triangle into three lines: each vertex and its normal.", {}},
       {"view.volumes", "Show shadow volumes (GS)", ParamKind::Bool, 0.0, 0.0, 1.0,

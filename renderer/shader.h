@@ -8,6 +8,7 @@
 // old one only if it links, so a broken edit never stops a running lab.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -120,7 +121,9 @@ class ReloadableProgram {
 class Uniform {
  public:
   Uniform() = default;
-  Uniform(GLuint program, const char* name) : location_(glGetUniformLocation(program, name)) {}
+  Uniform(GLuint program, const char* name) : location_(glGetUniformLocation(program, name)) {
+    lookups_.fetch_add(1, std::memory_order_relaxed);
+  }
   explicit Uniform(GLint location) : location_(location) {}
   void set(float v) const { glUniform1f(location_, v); }
   void set(int v) const { glUniform1i(location_, v); }
@@ -129,9 +132,36 @@ class Uniform {
   void set(const glm::vec4& v) const { glUniform4f(location_, v.x, v.y, v.z, v.w); }
   void set(const glm::mat4& m) const { glUniformMatrix4fv(location_, 1, GL_FALSE, &m[0][0]); }
   bool present() const { return location_ >= 0; }
+  // Locations looked up by name so far, by every thread (glGetUniformLocation calls made here): tests
+  // count them per frame.
+  static long lookups() { return lookups_.load(std::memory_order_relaxed); }
 
  private:
   GLint location_ = -1;
+  static inline std::atomic<long> lookups_{0};
+};
+
+// The uniform locations of one ReloadableProgram, looked up again only when the program was swapped
+// (its generation changed: a live reload's new program may place its uniforms elsewhere). `Locations`
+// is a struct of Uniform members; `lookup(GLuint program)` returns it filled. Usage:
+//   struct ViewUniforms { Uniform view_proj, size; };
+//   UniformCache<ViewUniforms> view_u_;
+//   const ViewUniforms& u = view_u_.get(view_, [](GLuint id) { return ViewUniforms{{id, "u_view_proj"}, {id, "u_size"}}; });
+template <class Locations>
+class UniformCache {
+ public:
+  template <class Lookup>
+  const Locations& get(const ReloadableProgram& program, Lookup&& lookup) {
+    if (generation_ != program.generation()) {
+      locations_ = lookup(program.id());
+      generation_ = program.generation();
+    }
+    return locations_;
+  }
+
+ private:
+  int generation_ = -1;  // a program's generation is never negative: the first get looks up
+  Locations locations_{};
 };
 
 }  // namespace shadowlab

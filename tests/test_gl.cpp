@@ -404,6 +404,50 @@ TEST_F(RendererTest, StillFramesAllocateNothing) {
   EXPECT_GT(test::allocations() - before, 0);
 }
 
+// Lab 11's billboards look their uniforms up by name once per program (BillboardPass's UniformCache):
+// a still frame with the shadow quads shown looks up none; after a live reload of the shadow pass's
+// file (a new program, whose locations may differ) the next frame looks them up again, once, and draws
+// the same picture.
+TEST_F(RendererTest, BillboardUniformsAreLookedUpOncePerProgram) {
+  const Lab* lab = find_lab(11);
+  ASSERT_NE(lab, nullptr);
+  const fs::path dir = fs::temp_directory_path() / ("shadowlab-uniforms-" + std::to_string(std::random_device{}()));
+  fs::create_directories(dir);
+  const fs::path quad = dir / "shadow_quad.glsl";
+  fs::copy_file(data_dir() / lab->solution_files.at(0), quad);
+  Features hooks = lab->hooks(Impl::Solution);
+  hooks.includes["lab/billboard.glsl"] = quad.string();
+  Renderer r;
+  r.set_scene(scene);
+  ASSERT_TRUE(r.set_features(hooks)) << r.shader_error();
+  ParamSet p = lab_params(*lab);
+  p.set("view.debug_quad", 0.0);
+  p.apply_assignment("billboard.show_shadow_quads=1");
+  const FrameRequest req = request(false);
+  for (int f = 0; f < 3; ++f) r.render(p, req);
+  const auto picture = r.read_color();
+  auto lookups_per_frame = [&](int frames) {
+    const long before = Uniform::lookups();
+    for (int f = 0; f < frames; ++f) r.render(p, req);
+    return static_cast<double>(Uniform::lookups() - before) / frames;
+  };
+  const double still = lookups_per_frame(10);
+  // The shadow pass's file is saved again (a comment added): the renderer swaps in a new program.
+  { std::ofstream(quad, std::ios::app) << "\n// saved again\n"; }
+  fs::last_write_time(quad, fs::last_write_time(quad) + std::chrono::seconds(2));
+  ASSERT_TRUE(r.poll_shader_files());
+  const double reload = lookups_per_frame(1);
+  EXPECT_EQ(r.read_color(), picture);
+  const double after = lookups_per_frame(10);
+  std::printf("uniform lookups per frame (lab 11, shadow quads shown): still %.1f, the frame after a reload %.1f, "
+              "then %.1f\n", still, reload, after);
+  EXPECT_EQ(still, 0.0);
+  EXPECT_GE(reload, 5.0);  // the shadow program's five, at least (the others' too: every program was polled)
+  EXPECT_EQ(after, 0.0);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
 }  // namespace
 }  // namespace shadowlab
 
