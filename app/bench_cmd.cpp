@@ -151,7 +151,7 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
   if (s.camera) request.camera = *s.camera;
 
-  BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
+  BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0, {}};
   // Each pass's median time over `frames` frames (after a warm-up: shader variants, allocations), each
   // forced to run the whole pipeline; returns the medians' sum.
   auto time_passes = [&](const ParamSet& with, std::map<std::string, double>& medians, double* cpu) {
