@@ -76,7 +76,8 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
-       {}};
+       {},    // flash: below, for the FLASHLIGHT variant
+       {}};  // csm: below, per cascade
   for (int i = 0; i < kMaxCascades; ++i) {
     const std::string at = "[" + std::to_string(i) + "]";
     u.csm.tex[i] = Uniform(id, ("u_csm_tex" + at).c_str());

@@ -24,7 +24,8 @@ TimingMode interactive_timing(bool timers_work, bool pass_line_shown) {
 PassTimer::PassTimer()
     : timer_(GlQuery::create()), samples_(GlQuery::create()), software_rasterizer_(is_software_rasterizer()) {
   pool_.reserve(64);
-  free_.reserve(64);
+  free_timers_.reserve(64);
+  free_samples_.reserve(64);
   pending_.reserve(64);
 }
 
@@ -32,7 +33,7 @@ void PassTimer::set_mode(TimingMode mode) {
   if (mode == mode_) return;
   mode_ = mode;
   // Results timed another way are not mixed with the new mode's.
-  for (const auto& p : pending_) free_.push_back(p.query);
+  for (const auto& p : pending_) free_list(p.samples).push_back(p.query);
   pending_.clear();
 }
 
@@ -43,12 +44,13 @@ void PassTimer::record(const char* name, FrameStats& stats, GLuint64 query_ns, d
 }
 
 GLuint PassTimer::start_async(std::string_view name, bool samples, GLenum target) {
-  if (free_.empty()) {
+  std::vector<GLuint>& free = free_list(samples);
+  if (free.empty()) {
     pool_.push_back(GlQuery::create());
-    free_.push_back(pool_.back().id());
+    free.push_back(pool_.back().id());
   }
-  const GLuint query = free_.back();
-  free_.pop_back();
+  const GLuint query = free.back();
+  free.pop_back();
   pending_.push_back({query, name, frame_, samples});
   glBeginQuery(target, query);
   return query;
@@ -56,7 +58,7 @@ GLuint PassTimer::start_async(std::string_view name, bool samples, GLenum target
 
 void PassTimer::drop_frame(long frame) {
   auto end = pending_.begin();
-  while (end != pending_.end() && end->frame == frame) free_.push_back((end++)->query);
+  for (; end != pending_.end() && end->frame == frame; ++end) free_list(end->samples).push_back(end->query);
   pending_.erase(pending_.begin(), end);
 }
 

@@ -110,8 +110,13 @@ class PassTimer {
   bool software_rasterizer_ = false;  // llvmpipe and the like: the wall time is the pass's cost
   TimingMode mode_ = TimingMode::Exact;
   long frame_ = 0;
+  // A query object keeps the target it was first begun with (beginning it with another is
+  // GL_INVALID_OPERATION), so timers and sample counters are recycled through their own free lists.
+  std::vector<GLuint>& free_list(bool samples) { return samples ? free_samples_ : free_timers_; }
+
   std::vector<GlQuery> pool_;  // every query the ring has made; grows to its steady size, then stays
-  std::vector<GLuint> free_;
+  std::vector<GLuint> free_timers_;
+  std::vector<GLuint> free_samples_;
   std::vector<Pending> pending_;  // oldest first
 };
 

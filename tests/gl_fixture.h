@@ -20,6 +20,14 @@ class GlTest : public ::testing::Test {
     if (!context_) error_ = error;
   }
   void SetUp() override { ASSERT_TRUE(context_) << error_; }
+  // A test leaves no GL error behind: one left pending would fail whichever test next reads
+  // glGetError (which test that is depends on the order and the shard), so it fails here, named.
+  // MESA_DEBUG=1 prints the call that raised it.
+  void TearDown() override {
+    if (!context_) return;
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
+      ADD_FAILURE() << "this test left GL error 0x" << std::hex << e << " pending (MESA_DEBUG=1 names the call)";
+  }
   static inline std::unique_ptr<HeadlessContext> context_;
   static inline std::string error_;
 };
