@@ -87,8 +87,60 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
   return m;
 }
 
+namespace {
+void check_soft_sizes(const SoftTruth& soft, std::size_t count) {
+  if (static_cast<std::size_t>(soft.width) * static_cast<std::size_t>(soft.height) != count ||
+      soft.valid.size() != count || soft.visible.size() != count)
+    throw std::invalid_argument("metrics: the soft truth's " + std::to_string(soft.width) + "x" +
+                                std::to_string(soft.height) + " arrays do not match " + std::to_string(count) + " pixels");
+}
+}  // namespace
+
+Truth soften(const Truth& hard, const SoftTruth& soft) {
+  const std::size_t count = hard.valid.size();
+  check_soft_sizes(soft, count);
+  if (hard.lit.size() != count || hard.interior.size() != count)
+    throw std::invalid_argument("metrics: truth arrays do not match its size");
+  Truth t = hard;
+  for (std::size_t i = 0; i < count; ++i) {
+    t.valid[i] = hard.valid[i] && soft.valid[i];
+    const float f = soft.visible[i];
+    t.lit[i] = t.valid[i] && f >= 0.5f;
+    t.interior[i] = t.valid[i] && hard.interior[i] && (f == 0.0f || f == 1.0f);
+  }
+  t.seconds += soft.seconds;
+  t.rays += soft.rays;
+  return t;
+}
+
+void add_soft_metrics(Metrics& m, const SoftTruth& soft, const std::vector<float>& visibility) {
+  check_soft_sizes(soft, visibility.size());
+  double all = 0.0, pen = 0.0, dark = 0.0, light = 0.0;
+  std::uint64_t valid = 0, penumbra = 0;
+  for (std::size_t i = 0; i < visibility.size(); ++i) {
+    if (!soft.valid[i]) continue;
+    const double f = soft.visible[i];
+    const double v = std::isnan(visibility[i]) ? (f >= 0.5 ? 0.0 : 1.0) : static_cast<double>(visibility[i]);
+    const double e = std::abs(v - f);
+    ++valid;
+    all += e;
+    if (f > 0.0 && f < 1.0) {
+      ++penumbra;
+      pen += e;
+      dark += std::max(f - v, 0.0);
+      light += std::max(v - f, 0.0);
+    }
+  }
+  m.soft = true;
+  m.penumbra_pixels = penumbra;
+  m.penumbra_error = penumbra ? pen / static_cast<double>(penumbra) : 0.0;
+  m.penumbra_too_dark = penumbra ? dark / static_cast<double>(penumbra) : 0.0;
+  m.penumbra_too_light = penumbra ? light / static_cast<double>(penumbra) : 0.0;
+  m.soft_mean_error = valid ? all / static_cast<double>(valid) : 0.0;
+}
+
 nlohmann::json to_json(const Metrics& m) {
-  return nlohmann::json{
+  nlohmann::json j{
       {"acne_rate", m.acne_rate},
       {"leak_rate", m.leak_rate},
       {"acne_rate_all", m.acne_rate_all},
@@ -103,6 +155,14 @@ nlohmann::json to_json(const Metrics& m) {
       {"interior_shadowed", m.interior_shadowed},
       {"edge_pixels", m.edge_pixels},
   };
+  if (m.soft) {
+    j["penumbra_error"] = m.penumbra_error;
+    j["penumbra_too_dark"] = m.penumbra_too_dark;
+    j["penumbra_too_light"] = m.penumbra_too_light;
+    j["soft_mean_error"] = m.soft_mean_error;
+    j["penumbra_pixels"] = m.penumbra_pixels;
+  }
+  return j;
 }
 
 std::vector<std::uint8_t> diff_image(const Truth& truth, const std::vector<float>& visibility) {
