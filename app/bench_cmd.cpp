@@ -24,6 +24,7 @@
 #include "renderer/gltf_loader.h"
 #include "renderer/image_io.h"
 #include "renderer/platform.h"
+#include "renderer/soft_truth.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {
@@ -48,6 +49,12 @@ struct BenchScene {
   std::optional<OrbitCamera> camera;                     // or a camera standing inside the scene
 };
 
+struct SizedPoint {
+  float sun_deg = 0.0f;
+  SoftMetrics metrics;
+  double gpu_ms = 0.0;  // the point's own, unless the technique reads the light's size (timed again)
+};
+
 struct BenchPoint {
   std::string technique, family, scene;
   int map_size = 0;
@@ -56,6 +63,21 @@ struct BenchPoint {
   double cpu_ms = 0.0;                    // median CPU time of render()
   Metrics metrics;
   double error = 0.0;  // mean |visibility - truth| over all valid pixels
+  // The same frame graded against the truth of a sun with a size (kBenchSunDegrees): a technique that
+  // does not read the light's size draws the same image whatever it is.
+  std::vector<SizedPoint> light_sizes;
+};
+
+// The suns with a size the benchmark grades every frame against, angular diameters in degrees: small
+// (twice the real sun's 0.53) and large (a lamp a metre wide 11 m away).
+constexpr float kBenchSunDegrees[] = {1.0f, 5.0f};
+constexpr int kSoftStrata = 16;  // their samples per pixel: 16 x 16 (renderer/soft_truth.h states its error)
+// Their truths on one scene's frame: every technique of a scene draws the same G-buffer under the same
+// sun, so they are made once per scene (and again should a technique's frame or light differ).
+struct SizedTruths {
+  GBuffer gbuffer;
+  OracleLight light;
+  std::vector<SoftTruth> truths;  // one per kBenchSunDegrees
 };
 
 constexpr int kWidth = 640, kHeight = 360;
@@ -114,7 +136,7 @@ std::vector<BenchScene> scenes(const std::string& scene_file) {
 }
 
 BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t, const BenchScene& s, int map_size,
-                   int frames) {
+                   int frames, SizedTruths& sized) {
   const Lab& lab = *t.lab;
   ParamSet params = lab_params(lab);
   // Every technique of a scene under the same light: the renderer's default direction, whatever the
@@ -130,28 +152,61 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   if (s.camera) request.camera = *s.camera;
 
   BenchPoint point{t.entry.name, t.family, s.name, map_size, {}, 0.0, 0.0, {}, 0.0};
-  std::map<std::string, std::vector<double>> pass_ms;
-  std::vector<double> cpu_ms;
-  for (int frame = -1; frame < frames; ++frame) {  // frame -1 warms up (shader variants, allocations)
-    renderer.invalidate_shadow_map();               // time the whole pipeline, every pass
-    const FrameStats& stats = renderer.render(params, request);
-    if (frame < 0) continue;
-    for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
-    cpu_ms.push_back(stats.cpu_ms);
-  }
-  for (auto& [name, v] : pass_ms) {
-    point.pass_ms[name] = median(v);
-    point.gpu_ms += point.pass_ms[name];
-  }
-  point.cpu_ms = median(cpu_ms);
+  // Each pass's median time over `frames` frames (after a warm-up: shader variants, allocations), each
+  // forced to run the whole pipeline; returns the medians' sum.
+  auto time_passes = [&](const ParamSet& with, std::map<std::string, double>& medians, double* cpu) {
+    std::map<std::string, std::vector<double>> pass_ms;
+    std::vector<double> cpu_ms;
+    for (int frame = -1; frame < frames; ++frame) {
+      renderer.invalidate_shadow_map();
+      const FrameStats& stats = renderer.render(with, request);
+      if (frame < 0) continue;
+      for (const auto& p : stats.passes) pass_ms[std::string(p.name)].push_back(p.gpu_ms);
+      cpu_ms.push_back(stats.cpu_ms);
+    }
+    double total = 0.0;
+    for (auto& [name, v] : pass_ms) total += medians[name] = median(v);
+    if (cpu) *cpu = median(cpu_ms);
+    return total;
+  };
+  point.gpu_ms = time_passes(params, point.pass_ms, &point.cpu_ms);
   // The error, from one more frame with the G-buffer.
   request.gbuffer = true;
   renderer.render(params, request);
   BandSpec band;
   band.fixed_screen_pixels = kBandPixels;
   OracleLight light = oracle_light(renderer);
-  const Truth truth = oracle.evaluate(renderer.read_gbuffer(), light, band);
-  point.metrics = compare(truth, renderer.read_visibility());
+  GBuffer gbuffer = renderer.read_gbuffer();
+  const std::vector<float> visibility = renderer.read_visibility();
+  const Truth truth = oracle.evaluate(gbuffer, light, band);
+  point.metrics = compare(truth, visibility);
+  if (!light.positional) {
+    if (sized.truths.empty() || sized.light.to_light != light.to_light || sized.gbuffer.covered != gbuffer.covered ||
+        sized.gbuffer.position != gbuffer.position || sized.gbuffer.normal != gbuffer.normal) {
+      sized.truths.clear();
+      for (const float degrees : kBenchSunDegrees)
+        sized.truths.push_back(evaluate_soft(oracle, gbuffer, light, glm::radians(degrees), kSoftStrata));
+      sized.gbuffer = std::move(gbuffer);
+      sized.light = light;
+    }
+    for (std::size_t k = 0; k < sized.truths.size(); ++k) {
+      SizedPoint at{kBenchSunDegrees[k], compare_soft(sized.truths[k], visibility), point.gpu_ms};
+      // A technique that reads the light's size (a penumbra estimate, a filter matched to the light)
+      // draws another image at each size: graded on that image, and timed again.
+      if (params.find("light.size")) {
+        ParamSet at_size = params;
+        at_size.set("light.size", kBenchSunDegrees[k]);
+        renderer.render(at_size, request);
+        const std::vector<float> sized_visibility = renderer.read_visibility();
+        if (sized_visibility != visibility) {
+          at.metrics = compare_soft(sized.truths[k], sized_visibility);
+          std::map<std::string, double> unused;
+          at.gpu_ms = time_passes(at_size, unused, nullptr);
+        }
+      }
+      point.light_sizes.push_back(at);
+    }
+  }
   const double interior = static_cast<double>(point.metrics.interior_lit + point.metrics.interior_shadowed);
   const double edge = static_cast<double>(point.metrics.edge_pixels);
   point.error = interior + edge > 0 ? (point.metrics.mae_interior * interior + point.metrics.mae_edge * edge) / (interior + edge) : 0.0;
@@ -486,14 +541,20 @@ OracleCost measure_oracle(Renderer& renderer, const Scene& scene, int repeats) {
   return measure_oracle_cost(scene, renderer.read_gbuffer(), directional, positional, repeats);
 }
 
-// The plot: one tile per scene, drawn by the code that draws it in the app's panel.
-void write_pareto_png(const BenchPlots& plots, const fs::path& file) {
+// The plot: one tile per scene, drawn by the code that draws it in the app's panel; `sized_lights`: the
+// tiles of the suns with a size instead (two per row: one scene's sizes side by side). False when there
+// is no such tile (a run recorded before light sizes): nothing written.
+bool write_pareto_png(const BenchPlots& plots, const fs::path& file, bool sized_lights = false) {
+  std::vector<std::string> names;
+  for (const auto& [name, plot] : plots.by_scene)
+    if (is_sized_light_plot(name) == sized_lights) names.push_back(name);
+  if (names.empty()) return false;
   const int plot_w = 640, plot_h = 420;
-  const int cols = 2, rows = static_cast<int>((plots.by_scene.size() + 1) / 2);
+  const int cols = 2, rows = static_cast<int>((names.size() + 1) / 2);
   ImGuiOffscreen imgui(cols * plot_w, rows * plot_h);
   const auto pixels = imgui.render([&] {
     int i = 0;
-    for (const auto& [name, plot] : plots.by_scene) {
+    for (const auto& name : names) {
       ImGui::SetNextWindowPos(ImVec2(static_cast<float>((i % cols) * plot_w), static_cast<float>((i / cols) * plot_h)));
       ImGui::SetNextWindowSize(ImVec2(static_cast<float>(plot_w), static_cast<float>(plot_h)));
       ImGui::Begin(("##plot" + name).c_str(), nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
@@ -503,9 +564,72 @@ void write_pareto_png(const BenchPlots& plots, const fs::path& file) {
     }
   });
   write_png(file, cols * plot_w, rows * plot_h, pixels);
+  return true;
 }
 
 std::string csv_escape(const std::string& s) { return s.find(',') == std::string::npos ? s : "\"" + s + "\""; }
+
+// The soft truth's cost on every scene's frame (kWidth x kHeight, the scene's camera and sun): a sun of 1
+// and of 5 degrees, 16 x 16 samples at every pixel (Full) against EdgeRefined sampling, side by side, with
+// the hard oracle (no band) for scale, and how far EdgeRefined's truth is from Full's.
+nlohmann::json measure_soft_truth(Renderer& renderer, const std::vector<BenchScene>& bench_scenes) {
+  static const std::vector<ParamSpec> renderer_specs = renderer_param_specs();
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& s : bench_scenes) {
+    renderer.set_features({});
+    renderer.set_scene(s.scene);
+    ParamSet params(renderer_specs);
+    for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
+    params.set("view.debug_quad", 0.0);
+    FrameRequest request = bench_request(s.view ? *s.view : s.scene.bounds());
+    if (s.camera) request.camera = *s.camera;
+    request.gbuffer = true;
+    renderer.render(params, request);
+    const GBuffer gbuffer = renderer.read_gbuffer();
+    const Oracle oracle(s.scene);
+    OracleLight sun;
+    sun.to_light = renderer.to_light();
+    BandSpec no_band;
+    no_band.samples = 0;
+    const Truth hard = oracle.evaluate(gbuffer, sun, no_band);
+    for (const float degrees : kBenchSunDegrees) {
+      std::fprintf(stderr, "soft truth, %s, sun %.0f deg...\n", s.name.c_str(), static_cast<double>(degrees));
+      const float size = glm::radians(degrees);
+      const SoftTruth full = evaluate_soft(oracle, gbuffer, sun, size, kSoftStrata, SoftSampling::Full);
+      const SoftTruth edge = evaluate_soft(oracle, gbuffer, sun, size, kSoftStrata, SoftSampling::EdgeRefined);
+      long valid = 0, penumbra = 0, differ = 0;
+      double worst = 0.0, sum = 0.0;
+      for (std::size_t i = 0; i < full.visible.size(); ++i) {
+        if (!full.valid[i]) continue;
+        ++valid;
+        penumbra += full.visible[i] > 0.0f && full.visible[i] < 1.0f;
+        const double d = std::abs(static_cast<double>(edge.visible[i]) - full.visible[i]);
+        differ += d > 0.0;
+        worst = std::max(worst, d);
+        sum += d;
+      }
+      rows.push_back({{"scene", s.name}, {"sun_deg", degrees}, {"strata", kSoftStrata}, {"valid_pixels", valid},
+                      {"penumbra_pixels", penumbra}, {"hard_ms", 1e3 * hard.seconds}, {"full_ms", 1e3 * full.seconds},
+                      {"full_rays", full.rays}, {"edge_ms", 1e3 * edge.seconds}, {"edge_rays", edge.rays},
+                      {"edge_refined_pixels", edge.refined}, {"edge_differ_pixels", differ},
+                      {"edge_worst_abs_diff", worst},
+                      {"edge_mean_abs_diff", valid > 0 ? sum / static_cast<double>(valid) : 0.0}});
+    }
+  }
+  return rows;
+}
+
+void print_soft_truth(const nlohmann::json& rows) {
+  for (const auto& r : rows)
+    std::printf("soft truth %dx%d, %-15s sun %.0f deg: Full %7.0f ms (%5.1f M rays), EdgeRefined %6.0f ms = %.3fx "
+                "(%ld of %ld px in full, %ld penumbra), hard %4.0f ms; differ %ld px, worst %.4f, mean %.1e\n",
+                kWidth, kHeight, r["scene"].get<std::string>().c_str(), r["sun_deg"].get<double>(),
+                r["full_ms"].get<double>(), 1e-6 * r["full_rays"].get<double>(), r["edge_ms"].get<double>(),
+                r["edge_ms"].get<double>() / std::max(r["full_ms"].get<double>(), 1e-9),
+                r["edge_refined_pixels"].get<long>(), r["valid_pixels"].get<long>(), r["penumbra_pixels"].get<long>(),
+                r["hard_ms"].get<double>(), r["edge_differ_pixels"].get<long>(), r["edge_worst_abs_diff"].get<double>(),
+                r["edge_mean_abs_diff"].get<double>());
+}
 
 }  // namespace
 
@@ -523,7 +647,9 @@ int run_bench(const BenchOptions& options) {
 
     if (replot) {
       write_pareto_png(*replot, fs::path(options.out_dir) / "pareto.png");
-      std::printf("wrote %s/pareto.png from %s\n", options.out_dir.c_str(), options.replot.c_str());
+      const bool sized = write_pareto_png(*replot, fs::path(options.out_dir) / "pareto_light_size.png", true);
+      std::printf("wrote %s/pareto.png%s from %s\n", options.out_dir.c_str(), sized ? " and pareto_light_size.png" : "",
+                  options.replot.c_str());
       return 0;
     }
     if (options.frame_cost_only) {
@@ -534,6 +660,16 @@ int run_bench(const BenchOptions& options) {
       }
       write_text_atomic(fs::path(options.out_dir) / "frame_cost.json", frame_cost.dump(2) + "\n");
       print_frame_cost(frame_cost);
+      return 0;
+    }
+    if (options.soft_truth_only) {
+      nlohmann::json soft;
+      {
+        Renderer renderer;
+        soft = measure_soft_truth(renderer, bench_scenes);
+      }
+      write_text_atomic(fs::path(options.out_dir) / "soft_truth.json", soft.dump(2) + "\n");
+      print_soft_truth(soft);
       return 0;
     }
     const std::vector<int> sizes = options.quick ? std::vector<int>{512, 1024, 2048} : std::vector<int>{512, 1024, 2048, 4096};
@@ -547,6 +683,7 @@ int run_bench(const BenchOptions& options) {
     std::vector<BlurTiming> blur_rows;
     std::vector<TechniquePasses> technique_rows;
     OracleCost oracle_cost;
+    nlohmann::json soft_truth = nlohmann::json::array();
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
@@ -558,6 +695,7 @@ int run_bench(const BenchOptions& options) {
       for (const auto& s : bench_scenes) {
         renderer.set_scene(s.scene);
         const Oracle oracle(s.scene);
+        SizedTruths sized;
         for (const auto& t : techs) {
           for (int size : t.entry.uses_map ? sizes : std::vector<int>{0}) {
             ++done;
@@ -569,7 +707,7 @@ int run_bench(const BenchOptions& options) {
               std::fprintf(stderr, "[%zu/%zu] %s %s %d (%.0f s)\n", done, total, s.name.c_str(), t.entry.name.c_str(), size, elapsed);
               next_logged = done + std::max<std::size_t>(1, total / 10);
             }
-            points.push_back(measure(renderer, oracle, t, s, size, frames));
+            points.push_back(measure(renderer, oracle, t, s, size, frames, sized));
           }
         }
       }
@@ -603,15 +741,25 @@ int run_bench(const BenchOptions& options) {
       technique_rows = measure_technique_passes(renderer, kTechniqueMapSize, kTechniqueWidth, kTechniqueHeight,
                                                 options.quick ? 3 : 7);
       oracle_cost = measure_oracle(renderer, bench_scenes.front().scene, options.quick ? 3 : 7);
+      if (!options.quick) soft_truth = measure_soft_truth(renderer, bench_scenes);  // about 40 s here
     }
 
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
     // exact), built from the JSON points by the function the app's panel uses to show a bench.json.
     nlohmann::json json_points = nlohmann::json::array();
-    for (const auto& p : points)
+    for (const auto& p : points) {
+      nlohmann::json light_sizes = nlohmann::json::array();
+      for (const auto& sized : p.light_sizes) {
+        nlohmann::json entry = to_json(sized.metrics);
+        entry["sun_deg"] = sized.sun_deg;
+        entry["error"] = sized.metrics.mae;
+        entry["gpu_ms"] = sized.gpu_ms;
+        light_sizes.push_back(entry);
+      }
       json_points.push_back({{"scene", p.scene}, {"technique", p.technique}, {"family", p.family},
                              {"map_size", p.map_size}, {"gpu_ms", p.gpu_ms}, {"cpu_ms", p.cpu_ms}, {"error", p.error},
-                             {"passes", p.pass_ms}, {"metrics", to_json(p.metrics)}});
+                             {"passes", p.pass_ms}, {"metrics", to_json(p.metrics)}, {"light_sizes", light_sizes}});
+    }
     const BenchPlots plots = bench_plots_from_json({{"points", json_points}});
 
     const fs::path out(options.out_dir);
@@ -622,6 +770,10 @@ int run_bench(const BenchOptions& options) {
       const BenchPoint& p = points[i];
       const bool pareto = plots.by_scene.at(p.scene)[index_in_scene[p.scene]++].pareto;
       json_points[i]["pareto"] = pareto;
+      for (auto& entry : json_points[i]["light_sizes"]) {
+        const std::string plot = sized_light_plot(p.scene, entry["sun_deg"].get<double>());
+        entry["pareto"] = plots.by_scene.at(plot)[index_in_scene[plot]++].pareto;
+      }
       std::string passes;
       for (const auto& [name, ms] : p.pass_ms) passes += (passes.empty() ? "" : " ") + name + "=" + std::to_string(ms);
       csv << p.scene << ',' << csv_escape(p.technique) << ',' << p.map_size << ',' << p.gpu_ms << ',' << p.cpu_ms << ','
@@ -642,10 +794,12 @@ int run_bench(const BenchOptions& options) {
                              {"hidden_views", overlays},
                              {"blur_methods", blur_json(blur_rows)},
                              {"technique_passes", technique_passes_json(technique_rows)},
-                             {"oracle_cost", oracle_cost_json(oracle_cost)}};
+                             {"oracle_cost", oracle_cost_json(oracle_cost)},
+                             {"soft_truth_cost", soft_truth}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     write_pareto_png(plots, out / "pareto.png");
+    write_pareto_png(plots, out / "pareto_light_size.png", true);
     std::printf("%zu points in %.0f s; wrote %s/bench.csv, bench.json, pareto.png\n", points.size(), seconds,
                 options.out_dir.c_str());
     print_frame_cost(frame_cost);
@@ -661,6 +815,7 @@ int run_bench(const BenchOptions& options) {
     print_blur_methods(blur_rows);
     print_technique_passes(technique_rows);
     print_oracle_cost(oracle_cost);
+    print_soft_truth(soft_truth);
     for (const auto& [name, plot] : plots.by_scene) {
       std::printf("front, %s:", name.c_str());
       std::vector<PlotPoint> front;

@@ -1,6 +1,7 @@
 #include "app/bench_plot.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include <imgui.h>
@@ -33,6 +34,14 @@ std::string text(const nlohmann::json& point, std::size_t i, const char* name) {
 
 }  // namespace
 
+std::string sized_light_plot(const std::string& scene, double sun_deg) {
+  char degrees[32];
+  std::snprintf(degrees, sizeof degrees, "%g", sun_deg);
+  return scene + ", sun " + degrees + " deg";
+}
+
+bool is_sized_light_plot(const std::string& name) { return name.find(", sun ") != std::string::npos; }
+
 BenchPlots bench_plots_from_json(const nlohmann::json& report) {
   if (!report.is_object() || !report.contains("points") || !report.at("points").is_array())
     throw std::runtime_error("no \"points\" array (is this a shadowlab bench.json?)");
@@ -50,6 +59,16 @@ BenchPlots bench_plots_from_json(const nlohmann::json& report) {
     point.error = number(p, i, "error");
     point.group = static_cast<int>(group - plots.families.begin());
     plots.by_scene[scene].push_back(point);
+    // The same frame graded against the truth of a sun with a size: a plot of its own per size.
+    if (!p.contains("light_sizes")) continue;
+    const auto& sized = p.at("light_sizes");
+    if (!sized.is_array()) throw std::runtime_error("point " + std::to_string(i) + ": \"light_sizes\" is not an array");
+    for (const auto& entry : sized) {
+      PlotPoint at_size = point;
+      at_size.error = number(entry, i, "error");
+      if (entry.contains("gpu_ms")) at_size.time_ms = number(entry, i, "gpu_ms");  // timed at that size
+      plots.by_scene[sized_light_plot(scene, number(entry, i, "sun_deg"))].push_back(at_size);
+    }
   }
   for (auto& [name, plot] : plots.by_scene) mark_pareto_front(plot);
   return plots;

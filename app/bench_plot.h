@@ -20,8 +20,15 @@ struct BenchPlots {
 };
 
 // From bench.json's "points" (scene, technique, family, map_size, gpu_ms, error); marks each scene's
-// front. Throws std::runtime_error naming the point and the field when one is missing or not a number.
+// front. A point's "light_sizes" (sun_deg, error: the frame graded against the truth of a sun with that
+// angular diameter; gpu_ms when the technique was timed again at that size) go to plots of their own,
+// named by sized_light_plot, each with its front.
+// Throws std::runtime_error naming the point and the field when one is missing or not a number.
 BenchPlots bench_plots_from_json(const nlohmann::json& report);
+
+// "default, sun 5 deg": the plot of a scene's points graded against a sun of that size.
+std::string sized_light_plot(const std::string& scene, double sun_deg);
+bool is_sized_light_plot(const std::string& name);
 
 // Reads a bench.json; throws one line naming the file and the problem (missing, not JSON, no points).
 BenchPlots load_bench_plots(const std::filesystem::path& file);

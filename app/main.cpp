@@ -139,6 +139,9 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
   bench_cmd->add_flag("--frame-cost", bench.frame_cost_only,
                       "Only the frame-cost figures: each lab's frame against its lit pass, lab 6 against the bare two-pass baseline");
+  bench_cmd->add_flag("--soft-truth", bench.soft_truth_only,
+                      "Only the soft truth's cost: every scene's frame, a sun of 1 and 5 degrees, 16x16 samples at every "
+                      "pixel against edge-refined sampling, and how far apart they are");
   bench_cmd->add_flag("--placement", bench.placement_only,
                       "Only the placement figures: every technique's error at offsets 1e3..1e7 and scales 1e-4..1e5 "
                       "against the origin's, and the frame cost with the local origin against without it");

@@ -29,6 +29,24 @@ float sanitize(float v, bool truly_lit) {
   return std::clamp(v, 0.0f, 1.0f);
 }
 
+void check_sizes(const SoftTruth& truth, const std::vector<float>& visibility) {
+  if (truth.width < 0 || truth.height < 0) throw std::invalid_argument("metrics: negative soft truth size");
+  const std::size_t count = static_cast<std::size_t>(truth.width) * static_cast<std::size_t>(truth.height);
+  if (truth.valid.size() != count || truth.visible.size() != count)
+    throw std::invalid_argument("metrics: soft truth arrays do not match its " + std::to_string(truth.width) + "x" +
+                                std::to_string(truth.height) + " size");
+  if (visibility.size() != count)
+    throw std::invalid_argument("metrics: " + std::to_string(visibility.size()) + " visibility values for " +
+                                std::to_string(count) + " pixels");
+}
+
+// The signed error against a visible fraction: visibility - fraction, a NaN as the farther of 0 and 1.
+double soft_signed_error(float visibility, float fraction) {
+  const double f = fraction;
+  if (std::isnan(visibility)) return f >= 0.5 ? -f : 1.0 - f;
+  return static_cast<double>(visibility) - f;
+}
+
 double ratio(std::uint64_t num, std::uint64_t den) {
   return den == 0 ? 0.0 : static_cast<double>(num) / static_cast<double>(den);
 }
@@ -187,6 +205,64 @@ std::vector<std::uint8_t> diff_image(const Truth& truth, const std::vector<float
       px[0] = c[0];
       px[1] = c[1];
       px[2] = c[2];
+    }
+  }
+  return image;
+}
+
+SoftMetrics compare_soft(const SoftTruth& truth, const std::vector<float>& visibility) {
+  check_sizes(truth, visibility);
+  SoftMetrics m;
+  double dark = 0.0, light = 0.0, penumbra = 0.0;
+  for (std::size_t i = 0; i < visibility.size(); ++i) {
+    if (!truth.valid[i]) continue;
+    ++m.valid_pixels;
+    const double e = soft_signed_error(visibility[i], truth.visible[i]);
+    (e < 0.0 ? dark : light) += std::abs(e);
+    if (truth.visible[i] > 0.0f && truth.visible[i] < 1.0f) {
+      ++m.penumbra_pixels;
+      penumbra += std::abs(e);
+    }
+  }
+  if (m.valid_pixels > 0) {
+    const auto n = static_cast<double>(m.valid_pixels);
+    m.too_dark = dark / n;
+    m.too_light = light / n;
+    m.mae = (dark + light) / n;
+  }
+  m.mae_penumbra = m.penumbra_pixels == 0 ? 0.0 : penumbra / static_cast<double>(m.penumbra_pixels);
+  return m;
+}
+
+nlohmann::json to_json(const SoftMetrics& m) {
+  return nlohmann::json{{"mae", m.mae},
+                        {"too_dark", m.too_dark},
+                        {"too_light", m.too_light},
+                        {"mae_penumbra", m.mae_penumbra},
+                        {"valid_pixels", m.valid_pixels},
+                        {"penumbra_pixels", m.penumbra_pixels}};
+}
+
+std::vector<std::uint8_t> soft_diff_image(const SoftTruth& truth, const std::vector<float>& visibility) {
+  check_sizes(truth, visibility);
+  const std::size_t width = static_cast<std::size_t>(truth.width);
+  const std::size_t height = static_cast<std::size_t>(truth.height);
+  std::vector<std::uint8_t> image(width * height * 4, 0);
+  for (std::size_t y = 0; y < height; ++y) {
+    std::uint8_t* out_row = image.data() + (height - 1 - y) * width * 4;  // the truth's row 0 is the bottom
+    for (std::size_t x = 0; x < width; ++x) {
+      const std::size_t i = y * width + x;
+      std::uint8_t* px = out_row + x * 4;
+      px[3] = 255;
+      if (!truth.valid[i]) continue;  // black
+      const float f = std::clamp(truth.visible[i], 0.0f, 1.0f);
+      const double e = soft_signed_error(visibility[i], truth.visible[i]);
+      const DiffColor& toward = e < 0.0 ? kDiffAcne : kDiffLeak;
+      const float t = static_cast<float>(std::min(1.0, std::abs(e) / kSoftDiffFullError));
+      for (int k = 0; k < 3; ++k) {
+        const float grey = static_cast<float>(kDiffShadowed[k]) + f * static_cast<float>(kDiffLit[k] - kDiffShadowed[k]);
+        px[k] = static_cast<std::uint8_t>(std::lround(grey + t * (static_cast<float>(toward[k]) - grey)));
+      }
     }
   }
   return image;

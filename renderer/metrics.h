@@ -80,4 +80,28 @@ inline constexpr DiffColor kDiffAcne{255, 0, 0};
 inline constexpr DiffColor kDiffLeak{0, 160, 255};
 inline constexpr DiffColor kDiffEdgeTint{255, 220, 0};
 
+// Against a light with a size (renderer/soft_truth.h) the truth is a fraction, and so is the error. Over
+// valid pixels: the mean |visibility - visible fraction| (`mae`), split into what is drawn too dark
+// (mean max(0, fraction - visibility)) and too light (mean max(0, visibility - fraction)), so mae =
+// too_dark + too_light; and the mean over the penumbra alone (0 < fraction < 1). Visibility is taken as
+// it is (outside [0, 1] is an error too); a NaN counts as the farther of 0 and 1. For a light of size 0
+// mae is compare()'s error over all valid pixels (interior and edge band together; tested). Throws
+// std::invalid_argument when the sizes do not match.
+struct SoftMetrics {
+  double mae = 0.0;
+  double too_dark = 0.0;
+  double too_light = 0.0;
+  double mae_penumbra = 0.0;
+  std::uint64_t valid_pixels = 0;
+  std::uint64_t penumbra_pixels = 0;
+};
+SoftMetrics compare_soft(const SoftTruth& truth, const std::vector<float>& visibility);
+nlohmann::json to_json(const SoftMetrics& m);
+
+// RGBA8, row 0 at the top: the truth's fraction as a grey between kDiffShadowed and kDiffLit, turned
+// toward kDiffAcne where drawn too dark and toward kDiffLeak where drawn too light, fully at an error of
+// kSoftDiffFullError or more; invalid pixels black. Agrees with compare_soft pixel by pixel.
+inline constexpr float kSoftDiffFullError = 0.25f;
+std::vector<std::uint8_t> soft_diff_image(const SoftTruth& truth, const std::vector<float>& visibility);
+
 }  // namespace shadowlab

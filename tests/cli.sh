@@ -471,7 +471,7 @@ PY
     "$bin" bench --quick --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err" || fail "bench failed: $(tail -3 "$tmp/err")"
     elapsed=$(( $(date +%s) - start ))
     [ "$elapsed" -lt 180 ] || fail "bench --quick took ${elapsed} s (limit 180)"
-    for f in bench.csv bench.json pareto.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
+    for f in bench.csv bench.json pareto.png pareto_light_size.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
     # stderr is a file here, not a terminal: progress lines end in newlines, never carriage returns.
     grep -q $'\r' "$tmp/err" && fail "carriage returns in a log"
     grep -q '^\[[0-9]*/[0-9]*\] ' "$tmp/err" || fail "no progress lines: $(head -5 "$tmp/err")"
@@ -498,6 +498,14 @@ t = j["technique_passes"]  # every technique pass by pass
 assert len(t) == 14 and all(r["total_ms"] > 0 and "lit" in r["passes"] for r in t), t
 o = j["oracle_cost"]
 assert o["build_ms"] > 0 and len(o["runs"]) == 4 and all(r["rays"] > 0 for r in o["runs"]), o
+for p in j["points"]:  # every frame graded against the suns with a size too, on the same pixels
+    sizes = p["light_sizes"]
+    assert [e["sun_deg"] for e in sizes] == [1, 5], p
+    assert all(0 <= e["error"] <= 1 and e["valid_pixels"] == p["metrics"]["valid_pixels"] for e in sizes), p
+    assert sizes[1]["penumbra_pixels"] > sizes[0]["penumbra_pixels"] > 0, p
+for scene in {p["scene"] for p in j["points"]}:
+    for k in (0, 1):
+        assert any(p["light_sizes"][k]["pareto"] for p in j["points"] if p["scene"] == scene), (scene, k)
 PY
     echo "bench --quick: ${elapsed} s"
     ;;

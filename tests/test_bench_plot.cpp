@@ -50,6 +50,41 @@ TEST(BenchPlots, FrontPerSceneLabelsAndGroups) {
   EXPECT_TRUE(plots.by_scene.at("b")[1].pareto);
 }
 
+// The same frames graded against suns with a size: a plot per scene and size, with a front of its own
+// (here the blurred map, slower, joins it where the penumbra is wide), and the point-light plot unchanged.
+TEST(BenchPlots, EachLightSizeHasItsOwnPlotAndFront) {
+  nlohmann::json hard = point("a", "hard", 1024, 5, 0.001), blurred = point("a", "vsm r4", 1024, 9, 0.004, "VSM");
+  hard["light_sizes"] = {{{"sun_deg", 1.0}, {"error", 0.002}}, {{"sun_deg", 5.0}, {"error", 0.02}}};
+  blurred["light_sizes"] = {{{"sun_deg", 1.0}, {"error", 0.005}}, {{"sun_deg", 5.0}, {"error", 0.01}, {"gpu_ms", 11}}};
+  const BenchPlots plots = bench_plots_from_json({{"points", {hard, blurred}}});
+  ASSERT_EQ(plots.by_scene.size(), 3u);
+  EXPECT_EQ(sized_light_plot("a", 5.0), "a, sun 5 deg");
+  EXPECT_TRUE(is_sized_light_plot("a, sun 5 deg"));
+  EXPECT_FALSE(is_sized_light_plot("a"));
+  const auto& point_sun = plots.by_scene.at("a");
+  EXPECT_TRUE(point_sun[0].pareto);
+  EXPECT_FALSE(point_sun[1].pareto);
+  EXPECT_FALSE(plots.by_scene.at("a, sun 1 deg")[1].pareto);
+  const auto& wide = plots.by_scene.at("a, sun 5 deg");
+  ASSERT_EQ(wide.size(), 2u);
+  EXPECT_DOUBLE_EQ(wide[0].error, 0.02);
+  EXPECT_EQ(wide[1].label, "vsm r4 1024");
+  EXPECT_DOUBLE_EQ(wide[1].time_ms, 11.0);  // timed again at that size
+  EXPECT_DOUBLE_EQ(plots.by_scene.at("a, sun 1 deg")[1].time_ms, 9.0);
+  EXPECT_TRUE(wide[0].pareto);
+  EXPECT_TRUE(wide[1].pareto);
+  nlohmann::json bad = hard;
+  bad["light_sizes"] = {{{"sun_deg", 1.0}}};
+  try {
+    bench_plots_from_json({{"points", {bad}}});
+    FAIL() << "a light size without its error was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("point 0 has no \"error\""), std::string::npos) << e.what();
+  }
+  bad["light_sizes"] = 3;
+  EXPECT_THROW(bench_plots_from_json({{"points", {bad}}}), std::runtime_error);
+}
+
 TEST(BenchPlots, MissingOrWrongFieldsNameThePoint) {
   nlohmann::json bad = point("a", "hard", 512, 5, 0.003);
   bad.erase("error");

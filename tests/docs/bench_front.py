@@ -3,8 +3,11 @@
 
     bench_front.py [ROOT] [--write]
 
-Two blocks of README.md are generated, each between its markers:
+Three blocks of README.md are generated, each between its markers:
   <!-- bench:front --> ... <!-- /bench:front -->    the Pareto front per scene, fastest first;
+  <!-- bench:light_size --> ... <!-- /bench:light_size -->  the same frames graded against suns with a size:
+                                                    the front per scene and sun, and what the sharpest
+                                                    one-map shadow errs there against its error at size 0;
   <!-- bench:beyond --> ... <!-- /bench:beyond -->  per scene, where cascades (lab 12), EVSM (lab 13) and
                                                     MSM (lab 14) beat the techniques before them, and where not.
 Without --write: exit 0 when README.md says what docs/bench.json says, 1 (and the expected block) when
@@ -59,6 +62,25 @@ def front_block(bench):
     for s in scenes:
         front = sorted((p for p in bench["points"] if p["scene"] == s and p["pareto"]), key=lambda p: p["gpu_ms"])
         rows.append(f"| {s} | " + " - ".join(f"{label(p)} ({ms(p)}, {err(p['error'])})" for p in front) + " |")
+    return rows
+
+
+def light_size_block(bench):
+    rows = ["| scene | sun | front: technique and map size (ms per frame, error), fastest first | "
+            "hard 2048: error against a point sun -> against this sun (over the penumbra) |",
+            "|---|---|---|---|"]
+    scenes = sorted({p["scene"] for p in bench["points"]})
+    suns = sorted({e["sun_deg"] for p in bench["points"] for e in p.get("light_sizes", [])})
+    for s in scenes:
+        for d in suns:
+            pts = [(p, e) for p in bench["points"] if p["scene"] == s for e in p.get("light_sizes", []) if e["sun_deg"] == d]
+            front = sorted((pe for pe in pts if pe[1]["pareto"]), key=lambda pe: pe[1].get("gpu_ms", pe[0]["gpu_ms"]))
+            hard = [pe for pe in pts if pe[0]["technique"] == "hard" and pe[0]["map_size"] == 2048]
+            sharp = (f"{err(hard[0][0]['error'])} -> {err(hard[0][1]['error'])} ({err(hard[0][1]['mae_penumbra'])})"
+                     if hard else "not measured")
+            rows.append(f"| {s} | {d:g} deg | " + " - ".join(f"{label(p)} ({ms(e if 'gpu_ms' in e else p)}, {err(e['error'])})"
+                                                           for p, e in front)
+                        + f" | {sharp} |")
     return rows
 
 
@@ -136,6 +158,8 @@ def main():
     readme_path = ROOT / "README.md"
     readme = readme_path.read_text(encoding="utf-8")
     blocks = {"front": front_block(bench), "beyond": beyond_block(bench)}
+    if any("light_sizes" in p for p in bench["points"]):  # runs recorded before light sizes have none
+        blocks["light_size"] = light_size_block(bench)
     status = 0
     for name, rows in blocks.items():
         pattern = re.compile(r"(<!-- bench:" + name + r" -->\n)(.*?)(<!-- /bench:" + name + r" -->)", re.DOTALL)

@@ -51,8 +51,9 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: app/, labs/, renderer/, shaders/, docs/measured/, docs/bench.json, README.md, the
-    test sources whose constants a text quotes and the exam corpus whose answers the README counts."""
+    """What the texts name: app/, labs/, renderer/, shaders/, docs/measured/, docs/*.json (the benchmark's recorded
+    runs), README.md, the test sources whose constants a text quotes and the exam corpus whose answers the README
+    counts."""
     for folder in ("app", "labs", "renderer", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
@@ -60,7 +61,8 @@ def copy_texts(tmp):
         shutil.copy(source, pathlib.Path(tmp) / "tests" / source.name)
     shutil.copytree(ROOT / "tests" / "answers", pathlib.Path(tmp) / "tests" / "answers")
     shutil.copy(ROOT / "README.md", pathlib.Path(tmp) / "README.md")
-    shutil.copy(ROOT / "docs" / "bench.json", pathlib.Path(tmp) / "docs" / "bench.json")
+    for run in (ROOT / "docs").glob("*.json"):
+        shutil.copy(run, pathlib.Path(tmp) / "docs" / run.name)
 
 
 def main():
