@@ -362,7 +362,9 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Fe
     const auto final_path = out_dir / (name + "_final.png");
     const auto diff_path = out_dir / (name + "_diff.png");
     write_png(final_path, width, height, renderer.read_color());
-    write_png(diff_path, width, height, diff_image(m.truth, m.visibility));
+    // A sized light: the soft diff (the fraction in grey, turned red where drawn too dark, blue too light).
+    write_png(diff_path, width, height,
+              size > 0.0f ? soft_diff_image(m.soft, m.visibility) : diff_image(m.truth, m.visibility));
     images.push_back(final_path.string());
     images.push_back(diff_path.string());
   }

@@ -132,29 +132,13 @@ Truth soften(const Truth& hard, const SoftTruth& soft) {
 }
 
 void add_soft_metrics(Metrics& m, const SoftTruth& soft, const std::vector<float>& visibility) {
-  check_soft_sizes(soft, visibility.size());
-  double all = 0.0, pen = 0.0, dark = 0.0, light = 0.0;
-  std::uint64_t valid = 0, penumbra = 0;
-  for (std::size_t i = 0; i < visibility.size(); ++i) {
-    if (!soft.valid[i]) continue;
-    const double f = soft.visible[i];
-    const double v = std::isnan(visibility[i]) ? (f >= 0.5 ? 0.0 : 1.0) : static_cast<double>(visibility[i]);
-    const double e = std::abs(v - f);
-    ++valid;
-    all += e;
-    if (f > 0.0 && f < 1.0) {
-      ++penumbra;
-      pen += e;
-      dark += std::max(f - v, 0.0);
-      light += std::max(v - f, 0.0);
-    }
-  }
+  const SoftMetrics s = compare_soft(soft, visibility);
   m.soft = true;
-  m.penumbra_pixels = penumbra;
-  m.penumbra_error = penumbra ? pen / static_cast<double>(penumbra) : 0.0;
-  m.penumbra_too_dark = penumbra ? dark / static_cast<double>(penumbra) : 0.0;
-  m.penumbra_too_light = penumbra ? light / static_cast<double>(penumbra) : 0.0;
-  m.soft_mean_error = valid ? all / static_cast<double>(valid) : 0.0;
+  m.penumbra_pixels = s.penumbra_pixels;
+  m.penumbra_error = s.mae_penumbra;
+  m.soft_too_dark = s.too_dark;
+  m.soft_too_light = s.too_light;
+  m.soft_mean_error = s.mae;
 }
 
 nlohmann::json to_json(const Metrics& m) {
@@ -175,8 +159,8 @@ nlohmann::json to_json(const Metrics& m) {
   };
   if (m.soft) {
     j["penumbra_error"] = m.penumbra_error;
-    j["penumbra_too_dark"] = m.penumbra_too_dark;
-    j["penumbra_too_light"] = m.penumbra_too_light;
+    j["soft_too_dark"] = m.soft_too_dark;
+    j["soft_too_light"] = m.soft_too_light;
     j["soft_mean_error"] = m.soft_mean_error;
     j["penumbra_pixels"] = m.penumbra_pixels;
   }

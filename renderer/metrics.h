@@ -34,15 +34,15 @@ struct Metrics {
   std::uint64_t interior_lit = 0;
   std::uint64_t interior_shadowed = 0;
   std::uint64_t edge_pixels = 0;
-  // Against a light with a size (add_soft_metrics; `soft` false and the rest 0 for a hard light): over the
-  // penumbra, the valid pixels that see part of the light (0 < fraction < 1), the mean |visibility -
-  // fraction| and its two sides, drawn too dark (mean max(fraction - v, 0)) and too light (mean
-  // max(v - fraction, 0)); and mean |visibility - fraction| over every valid pixel.
+  // Against a light with a size (add_soft_metrics, from compare_soft below; `soft` false and the rest 0
+  // for a hard light): the mean |visibility - fraction| over the penumbra (the valid pixels that see
+  // part of the light, 0 < fraction < 1), and over every valid pixel, with its two sides (too dark, too
+  // light).
   bool soft = false;
   double penumbra_error = 0.0;
-  double penumbra_too_dark = 0.0;
-  double penumbra_too_light = 0.0;
   double soft_mean_error = 0.0;
+  double soft_too_dark = 0.0;
+  double soft_too_light = 0.0;
   std::uint64_t penumbra_pixels = 0;
 };
 
@@ -58,8 +58,7 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility);
 // interior rates and errors grade the fully lit region and the umbra; the penumbra joins the edge band.
 // `valid` keeps the pixels valid in both. Throws std::invalid_argument when the sizes differ.
 Truth soften(const Truth& hard, const SoftTruth& soft);
-// Sets m.soft and the penumbra figures of `visibility` against the soft truth (a NaN counts as the
-// farthest answer, 0 or 1). Throws std::invalid_argument when the sizes differ.
+// Sets m.soft and the soft figures of `visibility` against the soft truth (compare_soft's).
 void add_soft_metrics(Metrics& m, const SoftTruth& soft, const std::vector<float>& visibility);
 
 // The soft figures appear only when m.soft is set.

@@ -40,8 +40,8 @@ TEST(SoftMetrics, PenumbraErrorAndItsSides) {
   EXPECT_TRUE(m.soft);
   EXPECT_EQ(m.penumbra_pixels, 2u);
   EXPECT_DOUBLE_EQ(m.penumbra_error, 0.25);
-  EXPECT_DOUBLE_EQ(m.penumbra_too_dark, 0.125);
-  EXPECT_DOUBLE_EQ(m.penumbra_too_light, 0.125);
+  EXPECT_DOUBLE_EQ(m.soft_too_dark, 0.25 / 4.0);  // over the four valid pixels
+  EXPECT_DOUBLE_EQ(m.soft_too_light, 0.25 / 4.0);
   EXPECT_DOUBLE_EQ(m.soft_mean_error, 0.5 / 4.0);  // the invalid pixel does not count
   // The fractions themselves: no error at all.
   Metrics exact;
@@ -56,7 +56,7 @@ TEST(SoftMetrics, NanIsTheFarthestAnswer) {
   add_soft_metrics(m, five_soft(), {1.0f, 0.0f, nan, nan, 0.0f});
   // 0.25 is taken as 1 (off by 0.75), 0.75 as 0 (off by 0.75).
   EXPECT_DOUBLE_EQ(m.penumbra_error, 0.75);
-  EXPECT_DOUBLE_EQ(m.penumbra_too_light, 0.375);
+  EXPECT_DOUBLE_EQ(m.soft_too_light, 0.75 / 4.0);
 }
 
 TEST(SoftMetrics, SoftenKeepsOnlyLitAndUmbraInterior) {
