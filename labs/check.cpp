@@ -84,6 +84,9 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
   if (name == "shadow_error")
     return {format("shadowed surfaces get %.2f %% of the light on average (leaks, peter-panning)", 100 * v),
             "lower the bias or check the depth comparison; a shadowed surface must come out 0."};
+  if (name == "penumbra_error")
+    return {format("the penumbra is off by %.3f on average from the share of the light each point sees", v),
+            "the soft edge must widen with the light's size and the blocker-to-receiver distance, and narrow to hard as the light shrinks."};
   if (name == "graded_pixels")
     return {format("the view has %.0f lit or shadowed pixels away from shadow edges", v),
             "not measurable: the scene shows too little shadow to grade anything. Grade on a scene with shadows."};
@@ -171,7 +174,19 @@ void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metric
   result.criteria.push_back({tag + ".lit_error", m.lit_error, Criterion::kAtMost, limits.lit_error, limits.why, limits.lit_advice});
   result.criteria.push_back(
       {tag + ".shadow_error", m.shadow_error, Criterion::kAtMost, limits.shadow_error, limits.why, limits.shadow_advice});
+  if (m.soft)
+    result.criteria.push_back({tag + ".penumbra_error", m.penumbra_error, Criterion::kAtMost, limits.penumbra_error,
+                               soft_truth_why(limits.penumbra_error), limits.penumbra_advice});
   require_measurable(result, tag, m);
+}
+
+std::string soft_truth_why(double limit) {
+  char s[256];
+  std::snprintf(s, sizeof s,
+                "mean error over the penumbra <= %.3g against the soft truth (%d x %d samples of the light's disk per "
+                "pixel; its own error: mean %.4f, worst pixel %.3f)",
+                limit, kSoftTruthStrata, kSoftTruthStrata, kSoftTruthMeanError, kSoftTruthWorstError);
+  return s;
 }
 
 void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m) {
@@ -321,18 +336,25 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Fe
     return a.radius_texels == b.radius_texels && a.samples == b.samples && a.fixed_screen_pixels == b.fixed_screen_pixels &&
            a.grazing_n_dot_l == b.grazing_n_dot_l;
   };
+  // A light with a size is graded against the visible fraction of its disk (soft_truth.h).
+  const float size = renderer.light_size();
   if (truth_oracle) {
     m.truth = truth_oracle->evaluate(gbuffer, light, band);
+    if (size > 0.0f) m.soft = evaluate_soft(*truth_oracle, gbuffer, light, size, kSoftTruthStrata);
   } else if (last_.scene_generation == scene_generation_ && same_light(last_.light, light) && same_band(last_.band, band) &&
-      last_.gbuffer.width == gbuffer.width && last_.gbuffer.height == gbuffer.height &&
+      last_.size == size && last_.gbuffer.width == gbuffer.width && last_.gbuffer.height == gbuffer.height &&
       last_.gbuffer.covered == gbuffer.covered && last_.gbuffer.position == gbuffer.position &&
       last_.gbuffer.normal == gbuffer.normal) {
     m.truth = last_.truth;
+    m.soft = last_.soft;
   } else {
     m.truth = oracle().evaluate(gbuffer, light, band);
-    last_ = {scene_generation_, gbuffer, light, band, m.truth};
+    if (size > 0.0f) m.soft = evaluate_soft(oracle(), gbuffer, light, size, kSoftTruthStrata);
+    last_ = {scene_generation_, gbuffer, light, band, m.truth, size, m.soft};
   }
+  if (size > 0.0f) m.truth = soften(m.truth, m.soft);
   m.metrics = compare(m.truth, m.visibility);
+  if (size > 0.0f) add_soft_metrics(m.metrics, m.soft, m.visibility);
   const auto t2 = clock::now();
   m.render_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   m.oracle_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
@@ -340,7 +362,9 @@ CheckContext::Measurement CheckContext::measure(const ParamSet& params, const Fe
     const auto final_path = out_dir / (name + "_final.png");
     const auto diff_path = out_dir / (name + "_diff.png");
     write_png(final_path, width, height, renderer.read_color());
-    write_png(diff_path, width, height, diff_image(m.truth, m.visibility));
+    // A sized light: the soft diff (the fraction in grey, turned red where drawn too dark, blue too light).
+    write_png(diff_path, width, height,
+              size > 0.0f ? soft_diff_image(m.soft, m.visibility) : diff_image(m.truth, m.visibility));
     images.push_back(final_path.string());
     images.push_back(diff_path.string());
   }

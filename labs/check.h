@@ -75,6 +75,14 @@ inline BandSpec grading_band() {
   return band;
 }
 
+// The soft truth the checks grade a light with a size against (light.size > 0): evaluate_soft with
+// 16 x 16 stratified samples of the light's disk per pixel. Its own error, measured against closed forms
+// by tests/test_soft_truth.cpp (the disk's circular segment behind a straight edge): mean 0.0031, worst
+// single pixel 0.019 -- an order below the penumbra limit graded with (kPenumbraErrorLimit).
+inline constexpr int kSoftTruthStrata = 16;
+inline constexpr double kSoftTruthMeanError = 0.0031;
+inline constexpr double kSoftTruthWorstError = 0.019;
+
 // What a lab's check gets: a renderer in a headless context, the scene, the oracle for it, and the files
 // being graded.
 class CheckContext {
@@ -117,7 +125,10 @@ class CheckContext {
 
   struct Measurement {
     Metrics metrics;
+    // With light.size > 0, the hard truth softened (metrics.h's soften: the penumbra joins the edge
+    // band) and metrics with the penumbra figures (Metrics::soft) against `soft`, the visible fractions.
     Truth truth;
+    SoftTruth soft;
     std::vector<float> visibility;
     double render_ms = 0.0;
     double oracle_ms = 0.0;
@@ -150,6 +161,8 @@ class CheckContext {
     OracleLight light;
     BandSpec band;
     Truth truth;
+    float size = 0.0f;
+    SoftTruth soft;
   };
   LastTruth last_;
 };
@@ -158,6 +171,10 @@ class CheckContext {
 // anything: below it a check fails as "not measurable" (a scene with nothing to shadow, a degenerate
 // triangle) rather than pass on no evidence. At 960 x 540 the labs' scenes give 20,000-300,000 of each.
 inline constexpr double kMinGradedPixels = 500;
+
+// The mean error allowed over the penumbra of a sized light (the soft truth's own mean error is 0.0031,
+// its worst pixel 0.019). Measured: see INSTRUCTOR notes of the soft-shadow lab and test_check_soft.
+inline constexpr double kPenumbraErrorLimit = 0.05;
 
 // The limits of a hard (0 or 1) shadow against the truth, over interior pixels: the continuous errors
 // (mean darkening of lit pixels, mean light in shadowed ones), so a partly darkened answer fails too.
@@ -168,10 +185,17 @@ struct HardLimits {
   // What the student should change when each fails (empty: the metric's usual advice).
   std::string lit_advice = {};
   std::string shadow_advice = {};
+  // Only with a sized light (Metrics::soft): the mean |visibility - visible fraction| over the penumbra.
+  double penumbra_error = kPenumbraErrorLimit;
+  std::string penumbra_advice = {};
 };
 // Adds `<tag>.lit_error`, `<tag>.shadow_error` and `<tag>.graded_pixels` (not measurable below
-// kMinGradedPixels) to the result, and the measurement's metrics under result.metrics[tag].
+// kMinGradedPixels) to the result, and the measurement's metrics under result.metrics[tag]. Against a
+// sized light (m.soft) the interior is the fully lit region and the umbra, and `<tag>.penumbra_error`
+// grades the penumbra.
 void grade_hard_shadow(CheckResult& result, const std::string& tag, const Metrics& m, const HardLimits& limits = {});
+// Where the penumbra limit comes from, for a criterion's `why`.
+std::string soft_truth_why(double limit);
 // Only the "not measurable" criterion, for measurements graded otherwise.
 void require_measurable(CheckResult& result, const std::string& tag, const Metrics& m);
 

@@ -8,6 +8,7 @@ void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optio
                         const Placement& placement) {
   type = pinned ? *pinned : light_type(params);
   to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
+  size = params.find("light.size") ? params.get_float("light.size") : 0.0f;
   if (type == LightType::Directional) {
     view = fit ? fit(bounds, to_light) : fit_light_ortho(bounds, to_light);
     return;
@@ -29,6 +30,8 @@ void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optio
     view.projection = cube.projection;
   }
 }
+
+float FrameLight::soft_truth_size() const { return type == LightType::Directional ? glm::radians(size) : size; }
 
 glm::vec4 FrameLight::vector4() const {
   return type == LightType::Directional ? glm::vec4(to_light, 0.0f) : glm::vec4(position, 1.0f);

@@ -27,6 +27,12 @@ struct FrameLight {
   glm::vec3 scene_position{0.0f};  // the same in the scene's frame (light.position_* as given)
   glm::vec3 spot_direction{0, -1, 0};
   float spot_cone_deg = 45.0f;
+  // light.size as given: a directional light's angular diameter in degrees, a spot or point light's
+  // radius in the scene's world units (0: a point, hard shadows).
+  float size = 0.0f;
+  // The size as renderer/soft_truth.h's evaluate_soft takes it (radians for a directional light, the
+  // scene frame's units for a positional one).
+  float soft_truth_size() const;
   LightView view;        // the shadow map's view and projection (a point light: face 0's, for display)
   CubeLightViews cube;   // a point light's six faces
 

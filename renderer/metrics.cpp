@@ -105,8 +105,44 @@ Metrics compare(const Truth& truth, const std::vector<float>& visibility) {
   return m;
 }
 
+namespace {
+void check_soft_sizes(const SoftTruth& soft, std::size_t count) {
+  if (static_cast<std::size_t>(soft.width) * static_cast<std::size_t>(soft.height) != count ||
+      soft.valid.size() != count || soft.visible.size() != count)
+    throw std::invalid_argument("metrics: the soft truth's " + std::to_string(soft.width) + "x" +
+                                std::to_string(soft.height) + " arrays do not match " + std::to_string(count) + " pixels");
+}
+}  // namespace
+
+Truth soften(const Truth& hard, const SoftTruth& soft) {
+  const std::size_t count = hard.valid.size();
+  check_soft_sizes(soft, count);
+  if (hard.lit.size() != count || hard.interior.size() != count)
+    throw std::invalid_argument("metrics: truth arrays do not match its size");
+  Truth t = hard;
+  for (std::size_t i = 0; i < count; ++i) {
+    t.valid[i] = hard.valid[i] && soft.valid[i];
+    const float f = soft.visible[i];
+    t.lit[i] = t.valid[i] && f >= 0.5f;
+    t.interior[i] = t.valid[i] && hard.interior[i] && (f == 0.0f || f == 1.0f);
+  }
+  t.seconds += soft.seconds;
+  t.rays += soft.rays;
+  return t;
+}
+
+void add_soft_metrics(Metrics& m, const SoftTruth& soft, const std::vector<float>& visibility) {
+  const SoftMetrics s = compare_soft(soft, visibility);
+  m.soft = true;
+  m.penumbra_pixels = s.penumbra_pixels;
+  m.penumbra_error = s.mae_penumbra;
+  m.soft_too_dark = s.too_dark;
+  m.soft_too_light = s.too_light;
+  m.soft_mean_error = s.mae;
+}
+
 nlohmann::json to_json(const Metrics& m) {
-  return nlohmann::json{
+  nlohmann::json j{
       {"acne_rate", m.acne_rate},
       {"leak_rate", m.leak_rate},
       {"acne_rate_all", m.acne_rate_all},
@@ -121,6 +157,14 @@ nlohmann::json to_json(const Metrics& m) {
       {"interior_shadowed", m.interior_shadowed},
       {"edge_pixels", m.edge_pixels},
   };
+  if (m.soft) {
+    j["penumbra_error"] = m.penumbra_error;
+    j["soft_too_dark"] = m.soft_too_dark;
+    j["soft_too_light"] = m.soft_too_light;
+    j["soft_mean_error"] = m.soft_mean_error;
+    j["penumbra_pixels"] = m.penumbra_pixels;
+  }
+  return j;
 }
 
 std::vector<std::uint8_t> diff_image(const Truth& truth, const std::vector<float>& visibility) {

@@ -34,6 +34,16 @@ struct Metrics {
   std::uint64_t interior_lit = 0;
   std::uint64_t interior_shadowed = 0;
   std::uint64_t edge_pixels = 0;
+  // Against a light with a size (add_soft_metrics, from compare_soft below; `soft` false and the rest 0
+  // for a hard light): the mean |visibility - fraction| over the penumbra (the valid pixels that see
+  // part of the light, 0 < fraction < 1), and over every valid pixel, with its two sides (too dark, too
+  // light).
+  bool soft = false;
+  double penumbra_error = 0.0;
+  double soft_mean_error = 0.0;
+  double soft_too_dark = 0.0;
+  double soft_too_light = 0.0;
+  std::uint64_t penumbra_pixels = 0;
 };
 
 // visibility: one value per pixel in [0, 1], same layout as the truth.
@@ -43,6 +53,15 @@ struct Metrics {
 // std::invalid_argument when the sizes do not match. compare() and diff_image() agree pixel by pixel.
 Metrics compare(const Truth& truth, const std::vector<float>& visibility);
 
+// The hard truth graded against a light with a size: `lit` becomes the soft truth's fraction >= 0.5 and
+// only pixels that see all of the light or none of it (fraction exactly 1 or 0) stay interior, so the
+// interior rates and errors grade the fully lit region and the umbra; the penumbra joins the edge band.
+// `valid` keeps the pixels valid in both. Throws std::invalid_argument when the sizes differ.
+Truth soften(const Truth& hard, const SoftTruth& soft);
+// Sets m.soft and the soft figures of `visibility` against the soft truth (compare_soft's).
+void add_soft_metrics(Metrics& m, const SoftTruth& soft, const std::vector<float>& visibility);
+
+// The soft figures appear only when m.soft is set.
 nlohmann::json to_json(const Metrics& m);
 
 // RGBA8, row 0 at the top (ready for PNG): agreeing pixels in grey (lit light, shadowed dark), acne in

@@ -212,6 +212,9 @@ class Renderer {
   glm::vec3 light_position() const { return light_.scene_position; }  // the scene's frame
   glm::vec3 spot_direction() const { return light_.spot_direction; }
   float spot_cone_deg() const { return light_.spot_cone_deg; }
+  // light.size of the last frame in evaluate_soft's units (radians for a directional light, the scene
+  // frame's units for a spot or point light's radius); 0 for a hard light.
+  float light_size() const { return light_.soft_truth_size(); }
   const CubeLightViews& cube_views() const { return light_.cube; }
   // The shadow volumes' adjacency report per shadow-casting mesh (empty unless shadow volumes or their
   // wireframe view were drawn).

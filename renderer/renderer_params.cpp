@@ -16,6 +16,11 @@ std::vector<ParamSpec> renderer_param_specs() {
        "Direction of the light around the vertical axis.", {}, shadow},
       {"light.elevation", "Light elevation (deg)", ParamKind::Float, 50.0, 1.0, 90.0,
        "Height of the light above the ground plane: low values give long shadows and grazing angles (acne).", {}, shadow},
+      {"light.size", "Light size", ParamKind::Float, 0.0, 0.0, 10.0,
+       "The light as a disk, as real lights are: a directional light's (the sun's) angular diameter in degrees, "
+       "a spot or point light's radius in world units. 0 is a point (or a single direction): hard shadows. A "
+       "sized light casts an umbra, which sees none of it, and a penumbra, which sees part; the checks then "
+       "grade against the fraction of the disk each point sees.", {}},
       {"shadow.map_size", "Shadow map size", ParamKind::Choice, 2.0, 0.0, 4.0,
        "Texels per side of the shadow map: more texels, finer shadow edges, more memory and time.",
        {"256", "512", "1024", "2048", "4096"}, shadow | kInvalidatesTargets},
