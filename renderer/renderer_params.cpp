@@ -144,6 +144,13 @@ std::vector<ParamSpec> pcf_param_specs() {
       {"pcf.hardware", "Hardware comparison", ParamKind::Bool, 0.0, 0.0, 1.0,
        "Read through a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE, linear): every tap becomes a bilinear "
        "2 x 2 PCF for free.", {}, kInvalidatesPrograms},
+      // Percentage-closer soft shadows (shaders/shadow/pcss.glsl): read by the lit pass as uniforms.
+      {"pcss.blocker_samples", "PCSS blocker search taps", ParamKind::Int, 6.0, 2.0, 16.0,
+       "Taps per side of PCSS's blocker search: the depths in front of the point, averaged over the region of "
+       "the map from which the light's disk can be hidden, give the blockers' mean distance.", {}},
+      {"pcss.filter_samples", "PCSS filter taps", ParamKind::Int, 8.0, 2.0, 16.0,
+       "Taps per side of PCSS's variable-width PCF (each a hardware 2 x 2 comparison), spread over the "
+       "estimated penumbra: fewer taps, visible steps in wide penumbrae.", {}},
   };
 }
 
