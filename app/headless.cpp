@@ -1,6 +1,8 @@
 #include "app/headless.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -185,6 +187,14 @@ int run_render(const RenderOptions& options) {
       Renderer renderer;
       if (!renderer.set_features(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
+      PenumbraPanelState penumbra;
+      std::unique_ptr<Oracle> oracle;
+      if (options.panel && options.penumbra) {
+        oracle = std::make_unique<Oracle>(renderer.scene());
+        penumbra.open = true;
+        penumbra.last = measure_penumbra(renderer, params, camera, *oracle, std::min(options.width, 640),
+                                         std::max(1, options.height * std::min(options.width, 640) / options.width));
+      }
       FrameRequest request;
       request.camera = camera;
       request.width = options.width;
@@ -220,6 +230,10 @@ int run_render(const RenderOptions& options) {
         if (bench_plots) {
           model.bench = &bench;
           model.bench_plots = &*bench_plots;
+        }
+        if (penumbra.open) {
+          model.penumbra = &penumbra;
+          model.penumbra_key = penumbra_view_key(params, camera);
         }
         color = offscreen.render(
             [&] {

@@ -26,6 +26,7 @@ struct RenderOptions {
   bool panel = false;
   bool panel_check = false;
   std::string bench_file;  // with panel: the Speed against error window on this bench.json
+  bool penumbra = false;   // with panel: the Penumbra error window, measured on this frame
   float ui_scale = 1.0f;   // with panel: the text and widget scale (2: as on a 200 % monitor)
 };
 

@@ -106,6 +106,9 @@ int main(int argc, char** argv) {
   CLI::Option* panel_flag =
       render_cmd->add_flag("--panel", render.panel, "Draw the window's panel over final.png (documentation screenshots)");
   render_cmd->add_flag("--check", render.panel_check, "With --panel: run the lab's Check first and show its result");
+  render_cmd->add_flag("--penumbra", render.penumbra,
+                       "With --panel: also show the Penumbra error window, this frame against the exact soft shadow of light.size")
+      ->needs(panel_flag);
   render_cmd->add_option("--bench", render.bench_file, "With --panel: also show the Speed against error window on this bench.json")
       ->needs(panel_flag);
   render_cmd->add_flag("--buffers", render.buffers,

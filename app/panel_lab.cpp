@@ -271,6 +271,11 @@ PanelActions draw_lab_panel(PanelModel& m) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Error against frame time for every technique and map size, from a bench.json");
   }
+  if (m.penumbra) {
+    ImGui::Checkbox("Penumbra error (exact soft shadow)", &m.penumbra->open);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("This view against the shadow of a light with a size (light.size): too dark, too light");
+  }
   if (m.interactive) {
     if (ImGui::Button("Screenshot (F12)")) a.screenshot = true;
     ImGui::SameLine();
@@ -280,6 +285,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
   if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
   ImGui::End();
   if (m.bench) a.load_bench = draw_bench_window(m.bench_plots, *m.bench, m.interactive);
+  if (m.penumbra) a.measure_penumbra = draw_penumbra_window(*m.penumbra, m.penumbra_key, m.interactive);
   return a;
 }
 

@@ -9,6 +9,7 @@
 
 #include "app/bench_plot.h"
 #include "app/markdown.h"
+#include "app/penumbra_view.h"
 #include "app/ui_fonts.h"
 #include "labs/check.h"
 #include "labs/lab.h"
@@ -69,6 +70,8 @@ struct PanelModel {
   SettingsSession* settings = nullptr;
   BenchPanelState* bench = nullptr;       // null: no Speed against error window
   const BenchPlots* bench_plots = nullptr;  // what it shows (null: nothing loaded)
+  PenumbraPanelState* penumbra = nullptr;   // null: no Penumbra error window
+  std::string penumbra_key;                 // penumbra_view_key of the view now
   bool interactive = true;  // false: headless pictures (no buttons that would do nothing)
 };
 
@@ -81,6 +84,7 @@ struct PanelActions {
   bool fullscreen = false;
   bool compare_changed = false;  // the split view's other side must be rebuilt
   bool load_bench = false;       // load BenchPanelState::path into the Speed against error window
+  bool measure_penumbra = false;  // measure this view against the exact penumbra (PenumbraPanelState)
   std::optional<float> text_size;  // the user moved the text size control (1 = 100 %)
   std::string copied_link;         // a link in the lab text was clicked (its target is on the clipboard)
 };

@@ -3,6 +3,7 @@
 // app/camera_input.cpp, and scripted input for tests app/input_script.cpp; this file wires them up.
 #include "app/window.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -184,6 +185,9 @@ struct App {
   std::vector<std::string> dropped;     // files dropped on the window, opened at the next frame
   BenchPanelState bench;                // the Speed against error window
   std::optional<BenchPlots> bench_plots;
+  PenumbraPanelState penumbra;           // the Penumbra error window
+  bool penumbra_requested = false;       // its Measure button, done before the next view is drawn
+  std::unique_ptr<Oracle> oracle;        // the renderer's scene, for the Penumbra error window; made when first asked
 
   void open_lab(const Lab& next) {
     if (lab) settings.leave_lab(lab->number, params);
@@ -204,6 +208,20 @@ struct App {
     std::string error;
     if (!split.rebuild(*lab, impl, compare, renderer->scene(), &error)) status = "right side: shader error: " + error;
   }
+  // Measures the view against the exact penumbra (at most 640 pixels wide, the window's aspect).
+  void measure_penumbra(int width, int height) {
+    try {
+      if (!oracle) oracle = std::make_unique<Oracle>(renderer->scene());
+      const int w = std::min(width, 640);
+      const int h = std::max(1, height * w / std::max(width, 1));
+      penumbra.last = shadowlab::measure_penumbra(*renderer, params, camera, *oracle, w, h);
+      penumbra.uploaded = false;
+      penumbra.error.clear();
+      status = "penumbra measured in " + std::to_string(static_cast<int>(penumbra.last->seconds * 1000.0)) + " ms";
+    } catch (const std::exception& e) {
+      penumbra.error = shortened(printable(e.what(), kFullErrorBytes), kPanelErrorBytes);
+    }
+  }
   // Loads bench.path; a file that cannot be read keeps what was shown and says why.
   void load_bench() {
     try {
@@ -220,6 +238,7 @@ struct App {
       const Scene scene = load_gltf(path, {}, &warnings);
       renderer->set_scene(scene);
       split.set_scene(scene);
+      oracle.reset();
       camera = frame_scene_camera(scene, params);  // the model and its shadow, on the ground it may get
       check_result.reset();
       scene_error.clear();
@@ -350,6 +369,8 @@ void draw_panel(App& app) {
   model.settings = &app.settings;
   model.bench = &app.bench;
   model.bench_plots = app.bench_plots ? &*app.bench_plots : nullptr;
+  model.penumbra = &app.penumbra;
+  model.penumbra_key = app.penumbra.open ? penumbra_view_key(app.params, app.camera) : std::string();
   const bool bench_was_open = app.bench.open;
   const PanelActions actions = draw_lab_panel(model);
   app.resize_panel = false;
@@ -365,6 +386,7 @@ void draw_panel(App& app) {
   }
   if (actions.compare_changed) app.rebuild_split();
   if (actions.check) app.check_requested = true;
+  if (actions.measure_penumbra) app.penumbra_requested = true;
   if (actions.screenshot) app.screenshot_requested = true;
   if (actions.fullscreen) toggle_fullscreen(app);
 }
@@ -487,6 +509,10 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     if (!app.panel_hidden) draw_panel(app);
     else draw_hidden_hint(app);
     if (script.take_check_request()) app.check_requested = true;
+    if (app.penumbra_requested) {
+      app.measure_penumbra(width, height);
+      app.penumbra_requested = false;
+    }
     if (app.check_requested) {
       std::string error;
       if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), &error)) app.status = error;

@@ -676,6 +676,24 @@ print("panel region differs:", inside, "view region:", outside, "red pixels:", r
 assert inside > 0.3 and outside < 0.02 and red > 100
 PY
     ;;
+  render_penumbra)  # the Penumbra error window over the frame: measured against the exact soft shadow
+    png_reader
+    "$bin" render --lab 0 --impl solution --panel --set light.size=3 --out "$tmp/plain" --width 1280 --height 720 >/dev/null \
+      || fail "render --panel failed"
+    "$bin" render --lab 0 --impl solution --panel --penumbra --set light.size=3 --out "$tmp/pen" --width 1280 --height 720 \
+      >/dev/null || fail "render --panel --penumbra failed"
+    python3 - "$tmp" <<'PY' || fail "no Penumbra error window over the frame"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+_, _, plain = load(f"{sys.argv[1]}/plain/final.png")
+_, _, pen = load(f"{sys.argv[1]}/pen/final.png")
+window = differing(plain, pen, 760, 80, 1260, 500)  # where the window opens: right of the panel
+print("penumbra window region differs:", window)
+assert window > 0.5
+PY
+    expect_error "--penumbra requires --panel" "$bin" render --lab 0 --penumbra --out "$tmp/never"
+    ;;
   render_bench_plot)  # the Speed against error window drawn over the frame from a bench.json; bad files refused
     png_reader
     python3 - "$tmp/b.json" <<'PY'
