@@ -14,8 +14,12 @@ GLenum depth_internal_format(const std::string& name) {
   return GL_DEPTH_COMPONENT24;
 }
 
-// PCF's kernel radius ((N - 1) / 2) and whether each tap compares in hardware.
-int pcf_radius(const ParamSet& params) { return std::stoi(technique_choice(params, "pcf.kernel")) / 2; }
+// PCF's kernel radius ((N - 1) / 2): pcf.kernel's, or the one matched to the light (pcf.match_light,
+// `matched` >= 0); and whether each tap compares in hardware.
+int pcf_radius(const ParamSet& params, int matched) {
+  if (matched >= 0 && technique_param(params, "pcf.match_light") != 0.0) return matched;
+  return std::stoi(technique_choice(params, "pcf.kernel")) / 2;
+}
 bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.hardware") != 0.0; }
 
 }  // namespace
@@ -91,7 +95,7 @@ void DepthMapPass::draw_depth(PassContext& ctx) {
 }
 
 void DepthMapPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  u.pcf_radius.set(pcf_radius(params));
+  u.pcf_radius.set(pcf_radius(params, matched_radius_));
   u.pcf_hardware.set(pcf_hardware(params) ? 1 : 0);
   if (u.shadow_map_compare.present()) {
     // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
@@ -111,7 +115,7 @@ void DepthMapPass::lit_constants(const ParamSet& params, LitConstants& out) cons
   // kernel is nine unrolled taps of one kind, as a hand-written shader for it would be.
   out.resize(2);
   out[0].first = "u_pcf_radius";
-  out[0].second = std::to_string(pcf_radius(params));
+  out[0].second = std::to_string(pcf_radius(params, matched_radius_));
   out[1].first = "u_pcf_hardware";
   out[1].second = pcf_hardware(params) ? "1" : "0";
 }

@@ -1,5 +1,6 @@
 #include "renderer/frame_light.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -32,6 +33,17 @@ void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optio
 }
 
 float FrameLight::soft_truth_size() const { return type == LightType::Directional ? glm::radians(size) : size; }
+
+int FrameLight::matched_filter_radius(float distance, int map_size) const {
+  if (type != LightType::Directional || !(size > 0.0f) || !(distance > 0.0f) || map_size <= 0) return -1;
+  // The ortho box's texels: x and y may differ (a box fitted to the scene), the mean is matched.
+  const glm::mat4& p = view.projection;
+  if (p[0][0] == 0.0f || p[1][1] == 0.0f) return -1;
+  const float texel = 0.5f * (2.0f / std::abs(p[0][0]) + 2.0f / std::abs(p[1][1])) / static_cast<float>(map_size);
+  const float width = 2.0f * distance * std::tan(0.5f * glm::radians(size));
+  const float radius = std::round((width / texel - 1.0f) * 0.5f);
+  return static_cast<int>(std::clamp(radius, 0.0f, static_cast<float>(kMaxMatchedFilterRadius)));
+}
 
 glm::vec4 FrameLight::vector4() const {
   return type == LightType::Directional ? glm::vec4(to_light, 0.0f) : glm::vec4(position, 1.0f);

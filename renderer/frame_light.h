@@ -44,6 +44,16 @@ struct FrameLight {
   void update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit,
               const Placement& placement = {});
 
+  // A fixed filter matched to this light's size (pcf.match_light, vsm.match_light): the radius r, in
+  // texels of a map `map_size` wide, of the kernel (2r + 1 texels across) that spans the penumbra a
+  // blocker `distance` (local units) above its receiver casts: 2 distance tan(size / 2) across, for a
+  // sun. Right at that distance only: nearer contacts get too wide a penumbra, farther ones too narrow
+  // (what PCSS measures per pixel instead). -1 where there is nothing to match: no size, or a spot or
+  // point light (their texels have no single world size). At most kMaxMatchedFilterRadius (25 x 25 taps:
+  // PCF's loops are unrolled when its radius is compiled in).
+  static constexpr int kMaxMatchedFilterRadius = 12;
+  int matched_filter_radius(float distance, int map_size) const;
+
   // xyz the position (w = 1) or the direction toward the light (w = 0).
   glm::vec4 vector4() const;
   // The angle one texel of a map `map_size` wide spans at the map's centre: a spot's 2 tan(cone) / size,

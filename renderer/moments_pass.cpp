@@ -132,10 +132,33 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   glDisable(GL_CULL_FACE);
 }
 
+namespace {
+
+// The Gaussian over the moments: vsm.blur_radius and vsm.blur_sigma, or with vsm.match_light (and a
+// light to match, `matched` >= 0) the radius of a box as wide as the penumbra and that box's spread.
+struct MomentsBlur {
+  int radius = 0;
+  float sigma = 1.0f;
+};
+MomentsBlur moments_blur(const ParamSet& params, int matched) {
+  if (matched >= 0 && vsm_param(params, "vsm.match_light") != 0.0)
+    return {matched, std::max(0.25f, static_cast<float>(2 * matched + 1) / std::sqrt(12.0f))};
+  return {static_cast<int>(vsm_param(params, "vsm.blur_radius")), static_cast<float>(vsm_param(params, "vsm.blur_sigma"))};
+}
+
+}  // namespace
+
 bool MomentsPass::ensure_targets(const ParamSet& params) {
-  const bool blur = static_cast<int>(vsm_param(params, "vsm.blur_radius")) > 0;
+  const bool blur = moments_blur(params, matched_radius_).radius > 0;
   set_warp_exponent(evsm_exponent(params));
   return ensure_targets(std::stoi(params.get_choice("shadow.map_size")), vsm_choice(params, "vsm.format"), blur);
+}
+
+void MomentsPass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
+  // A blur matched to the light follows light.size (and the light's box), which the map's declared
+  // inputs do not include.
+  out.clear();
+  if (vsm_param(ctx.params, "vsm.match_light") != 0.0) out.push_back(static_cast<float>(matched_radius_));
 }
 
 void MomentsPass::draw_map(PassContext& ctx) {
@@ -149,9 +172,8 @@ void MomentsPass::draw_map(PassContext& ctx) {
   ++ctx.stats.moments_passes;
   // 2. The Gaussian over the moments. Radius 0 runs none (and ensure_targets allocated no ping-pong
   // texture).
-  const int radius = static_cast<int>(vsm_param(ctx.params, "vsm.blur_radius"));
-  const auto sigma = static_cast<float>(vsm_param(ctx.params, "vsm.blur_sigma"));
-  if (radius > 0) blur_map(ctx, radius, sigma, blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
+  const MomentsBlur b = moments_blur(ctx.params, matched_radius_);
+  if (b.radius > 0) blur_map(ctx, b.radius, b.sigma, blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
   // Half floats run out of precision on large depth ranges: measure it so that it can be shown.
   // (Of depths only: warped moments have another background and scale.)
   ctx.stats.moments_negative_variance =

@@ -94,6 +94,7 @@ class MomentsPass final : public ShadowPass {
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   // vsm.format, and the ping-pong texture while vsm.blur_radius > 0.
   bool ensure_targets(const ParamSet& params) override;
+  void frame_inputs(PassContext& ctx, std::vector<float>& out) override;
   // The moments, then the blur (vsm.blur_radius, vsm.blur_sigma, vsm.blur_method); with RG16F the
   // share of texels whose variance cancelled (FrameStats::moments_negative_variance).
   void draw_map(PassContext& ctx) override;

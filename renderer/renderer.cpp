@@ -13,6 +13,7 @@
 #include "renderer/lit_pass.h"
 #include "renderer/moments_pass.h"
 #include "renderer/shadow_volume_pass.h"
+#include "renderer/vsm_params.h"
 
 namespace shadowlab {
 
@@ -139,6 +140,16 @@ bool Renderer::set_features(const Features& features) {
 }
 
 namespace {
+// The radius of a filter matched to the light (pcf.match_light or vsm.match_light, whichever the
+// parameters switch on), for the shadow pass; -1 when neither is on or there is nothing to match.
+int matched_filter_radius(const ParamSet& params, const FrameLight& light, double scale) {
+  const bool pcf = technique_param(params, "pcf.match_light") != 0.0;
+  const bool vsm = vsm_param(params, "vsm.match_light") != 0.0;
+  if (!pcf && !vsm) return -1;
+  const double distance = pcf ? technique_param(params, "pcf.match_distance") : vsm_param(params, "vsm.match_distance");
+  return light.matched_filter_radius(static_cast<float>(distance * scale), std::stoi(params.get_choice("shadow.map_size")));
+}
+
 // Programs built from the same files report the same text: each text is said once.
 void append_once(std::string& out, const std::string& text) {
   if (!text.empty() && out.find(text) == std::string::npos) out += text;
@@ -260,6 +271,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape& shape = shadow.shape();
+  shadow.set_matched_radius(matched_filter_radius(params, light_, placement_.scale));
   if (shadow.ensure_targets(params)) ++targets_generation_;
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);

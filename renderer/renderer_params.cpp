@@ -110,6 +110,13 @@ std::vector<ParamSpec> vsm_param_specs() {
        "c in w = exp(c z), z in [0, 1]. Clamped to the format's range: 42 for RG32F (2c = 84 < ln(FLT_MAX) = 88.7, "
        "room for the slope term), 5 for RG16F (2c = 10 < ln(65504 / 2) = 10.4). Larger c: less bleeding.",
        {}, moments},
+      {"vsm.match_light", "Blur matched to the light", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "With light.size above 0 (a sun): instead of vsm.blur_radius and vsm.blur_sigma, a Gaussian as wide as "
+       "the penumbra that a blocker vsm.match_distance above its receiver casts, 2 d tan(size / 2): the radius "
+       "of a box that wide (up to 12 texels) and the box's own spread, sigma = (2r + 1) / sqrt(12). Right at "
+       "that distance only, as PCF's matched kernel.", {}, moments | kInvalidatesTargets},
+      {"vsm.match_distance", "Matched blocker height", ParamKind::Float, 1.0, 0.05, 10.0,
+       "The blocker-to-receiver distance (world units) that vsm.match_light sizes the blur for.", {}, moments},
       {"vsm.msm_moment_bias", "MSM moment bias (alpha)", ParamKind::Float, 3e-5, 1e-7, 1e-2,
        "Moment shadow maps: the share of a uniform distribution's moments mixed into the filtered ones, so the "
        "4x4 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
@@ -144,6 +151,14 @@ std::vector<ParamSpec> pcf_param_specs() {
       {"pcf.hardware", "Hardware comparison", ParamKind::Bool, 0.0, 0.0, 1.0,
        "Read through a sampler2DShadow (GL_COMPARE_REF_TO_TEXTURE, linear): every tap becomes a bilinear "
        "2 x 2 PCF for free.", {}, kInvalidatesPrograms},
+      {"pcf.match_light", "Kernel matched to the light", ParamKind::Bool, 0.0, 0.0, 1.0,
+       "With light.size above 0 (a sun): instead of pcf.kernel, a kernel as wide as the penumbra that a blocker "
+       "pcf.match_distance above its receiver casts, 2 d tan(size / 2) (up to 25 x 25 texels). Right at that "
+       "distance only: where a blocker touches its receiver the penumbra drawn is too wide, under a tall one too "
+       "narrow (PCSS measures the distance per pixel instead).", {}, kInvalidatesPrograms},
+      {"pcf.match_distance", "Matched blocker height", ParamKind::Float, 1.0, 0.05, 10.0,
+       "The blocker-to-receiver distance (world units) that pcf.match_light sizes the kernel for.", {},
+       kInvalidatesPrograms},
       // Percentage-closer soft shadows (shaders/shadow/pcss.glsl): read by the lit pass as uniforms.
       {"pcss.blocker_samples", "PCSS blocker search taps", ParamKind::Int, 6.0, 2.0, 16.0,
        "Taps per side of PCSS's blocker search: the depths in front of the point, averaged over the region of "

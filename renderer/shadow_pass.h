@@ -170,12 +170,20 @@ class ShadowPass {
   virtual void draw_views(PassContext&, LitPass&) {}
   virtual void draw_debug_quads(const DebugQuadArea&) {}
 
+  // A filter matched to the light's size (pcf.match_light, vsm.match_light; FrameLight::
+  // matched_filter_radius): the radius in texels the technique uses instead of its parameter's, or -1
+  // (the parameter decides). The renderer sets it every frame before ensure_targets.
+  void set_matched_radius(int radius) { matched_radius_ = radius; }
+
   // Texels per side of the map (0 before its targets exist, and for techniques without one).
   virtual int size() const = 0;
   // The depths the map's depth test kept, bottom row first (empty with size 0 when there are none).
   virtual std::vector<float> read_depth(int* size) const;
   // The map as a picture (what the debug quad shows), RGBA8 top row first.
   virtual std::vector<std::uint8_t> image(int* size) const = 0;
+
+ protected:
+  int matched_radius_ = -1;
 };
 
 // The ALPHA_MASK variant of a shadow pass's program. Alpha-tested (glTF MASK) casters drawn through it

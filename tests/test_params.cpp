@@ -84,8 +84,10 @@ TEST(Params, TargetBitImpliesTheShadowMapBit) {
     }
     if (spec.invalidates & kInvalidatesPrograms) programs.push_back(spec.key);
   }
-  EXPECT_EQ(with_targets, 5) << "shadow.map_size, shadow.depth_format, vsm.format, vsm.blur_radius, light.type";
-  EXPECT_EQ(programs, (std::vector<std::string>{"light.type", "pcf.kernel", "pcf.hardware"}));
+  EXPECT_EQ(with_targets, 6) << "shadow.map_size, shadow.depth_format, vsm.format, vsm.blur_radius, vsm.match_light, "
+                                "light.type";
+  EXPECT_EQ(programs, (std::vector<std::string>{"light.type", "pcf.kernel", "pcf.hardware", "pcf.match_light",
+                                                "pcf.match_distance"}));
 }
 
 TEST(Params, ValuesInvalidatingListsTheDeclaredInputsInOrder) {

@@ -176,7 +176,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
   lab.params =
-      vsm_param_specs({"vsm.format", "vsm.min_variance", "vsm.bleed_delta", "vsm.blur_radius", "vsm.blur_sigma"});
+      vsm_param_specs({"vsm.format", "vsm.min_variance", "vsm.bleed_delta", "vsm.blur_radius", "vsm.blur_sigma",
+                       "vsm.match_light", "vsm.match_distance"});
   for (auto& spec : lab.params) {
     if (spec.key == "vsm.blur_radius") spec.default_value = 4.0;
     if (spec.key == "vsm.blur_sigma") spec.default_value = 2.0;
@@ -192,6 +193,9 @@ Lab SHADOWLAB_LAB_MAKER() {
        {{"vsm.blur_radius", "2"}, {"vsm.blur_sigma", "8"}}},
       {"tuned", "The lab's defaults, radius 4 and sigma 2: soft edges, little bleeding.",
        {{"vsm.blur_radius", "4"}, {"vsm.blur_sigma", "2"}}},
+      {"matched to the sun",
+       "A sun 3 degrees wide and a blur as wide as the penumbra 1 unit under a blocker (radius and sigma follow).",
+       {{"light.size", "3"}, {"vsm.match_light", "true"}, {"vsm.match_distance", "1"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;
@@ -200,6 +204,8 @@ Lab SHADOWLAB_LAB_MAKER() {
     return hooks;
   };
   lab.check = check_moment_blur;
+  // Against a sun with a size: the blur matched to it (at size 0 the lab's radius 4, sigma 2).
+  lab.bench.push_back({"vsm matched", "VSM", {{"vsm.match_light", "true"}}, true, false});
   return lab;
 }
 

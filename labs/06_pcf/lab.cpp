@@ -239,12 +239,16 @@ Lab SHADOWLAB_LAB_MAKER() {
   slope.default_value = 2.0;
   size.default_value = 1.0;  // 512^2: texels several pixels wide on screen, where filtering shows
   lab.params = {bias, slope, size};
-  for (auto& spec : technique_param_specs({"pcf.kernel", "pcf.hardware"})) lab.params.push_back(spec);
+  for (auto& spec : technique_param_specs({"pcf.kernel", "pcf.hardware", "pcf.match_light", "pcf.match_distance"}))
+    lab.params.push_back(spec);
   lab.presets = {
       {"single tap", "1 x 1: the hard, jagged edge of lab 0.", {{"pcf.kernel", "1"}, {"pcf.hardware", "false"}}},
       {"lecture", "3 x 3, as in the lecture.", {{"pcf.kernel", "3"}, {"pcf.hardware", "false"}}},
       {"wide", "9 x 9: wide soft edges, 81 taps per pixel.", {{"pcf.kernel", "9"}, {"pcf.hardware", "false"}}},
       {"hardware 2x2", "One sampler2DShadow tap: bilinear 2 x 2 PCF for free.", {{"pcf.kernel", "1"}, {"pcf.hardware", "true"}}},
+      {"matched to the sun",
+       "A 3-degree sun, the kernel as wide as its penumbra 1 unit under a blocker: right there only (Penumbra error).",
+       {{"light.size", "3"}, {"pcf.match_light", "true"}, {"pcf.match_distance", "1"}, {"pcf.hardware", "false"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};
   lab.make_hooks = visibility_lab_hooks();
@@ -252,6 +256,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (const auto& spec : lab.params)  // one technique per kernel size
     if (spec.key == "pcf.kernel")
       for (const auto& choice : spec.choices) lab.bench.push_back({"pcf " + choice, "PCF", {{"pcf.kernel", choice}}});
+  // Against a sun with a size: the kernel matched to it (a single tap at size 0).
+  lab.bench.push_back({"pcf matched", "PCF", {{"pcf.kernel", "1"}, {"pcf.match_light", "true"}}});
   return lab;
 }
 
