@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "renderer/image_io.h"
+#include "renderer/technique_params.h"
 
 namespace shadowlab {
 
@@ -73,6 +74,9 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_shadow_map_compare"),
        Uniform(id, "u_pcf_radius"),
        Uniform(id, "u_pcf_hardware"),
+       Uniform(id, "u_light_size"),
+       Uniform(id, "u_pcss_blocker_samples"),
+       Uniform(id, "u_pcss_filter_samples"),
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
@@ -372,6 +376,11 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
   u.texel_angle.set(light.texel_angle(std::max(shadow.size(), 1)));
+  // A sized light as given (light.size: a directional light's angular diameter in degrees, a positional
+  // light's radius), and PCSS's samples per side (blocker search, filter); no shadow test but PCSS reads them.
+  u.light_size.set(light.size);
+  u.pcss_blocker_samples.set(static_cast<int>(technique_param(params, "pcss.blocker_samples")));
+  u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
   if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
     const FrameLight& f = *ctx.flashlight;
     const glm::mat4& fp = f.view.projection;

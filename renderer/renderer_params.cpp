@@ -159,6 +159,13 @@ std::vector<ParamSpec> pcf_param_specs() {
       {"pcf.match_distance", "Matched blocker height", ParamKind::Float, 1.0, 0.05, 10.0,
        "The blocker-to-receiver distance (world units) that pcf.match_light sizes the kernel for.", {},
        kInvalidatesPrograms},
+      // Percentage-closer soft shadows (shaders/shadow/pcss.glsl): read by the lit pass as uniforms.
+      {"pcss.blocker_samples", "PCSS blocker search taps", ParamKind::Int, 6.0, 2.0, 16.0,
+       "Taps per side of PCSS's blocker search: the depths in front of the point, averaged over the region of "
+       "the map from which the light's disk can be hidden, give the blockers' mean distance.", {}},
+      {"pcss.filter_samples", "PCSS filter taps", ParamKind::Int, 8.0, 2.0, 16.0,
+       "Taps per side of PCSS's variable-width PCF (each a hardware 2 x 2 comparison), spread over the "
+       "estimated penumbra: fewer taps, visible steps in wide penumbrae.", {}},
   };
 }
 

@@ -71,5 +71,44 @@ TEST_F(SoftCheckTest, AHardShadowFailsTheSoftTruthsPenumbra) {
   EXPECT_FALSE(sized.passed());
 }
 
+// Lab 16's PCSS (shaders/shadow/pcss.glsl) with light.size 0 is the hard test (shaders/shadow/hard.glsl)
+// pixel for pixel, at the lab's parameters; with a sized sun it is not (so the comparison can fail).
+TEST_F(SoftCheckTest, PcssAtSizeZeroIsTheHardTestPixelForPixel) {
+  Renderer renderer;
+  const Scene scene = make_default_scene();
+  const Lab& lab = *find_lab(16);
+  ParamSet params = lab_params(lab);
+  params.set("view.debug_quad", 0.0);
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(scene.bounds(), 30.0f, 35.0f);
+  request.width = 320;
+  request.height = 180;
+  request.gbuffer = true;
+  const Features pcss = lab.hooks(Impl::Solution);
+  Features hard = pcss;
+  hard.includes.erase("lab/visibility.glsl");  // the renderer's default: shaders/shadow/hard.glsl
+  auto draw = [&](const Features& f, double size) {
+    EXPECT_TRUE(renderer.set_features(f)) << renderer.shader_error();
+    renderer.set_scene(scene);
+    ParamSet p = params;
+    p.set("light.size", size);
+    renderer.render(p, request);
+    return renderer.read_visibility();
+  };
+  const std::vector<float> hard0 = draw(hard, 0.0), pcss0 = draw(pcss, 0.0), pcss4 = draw(pcss, 4.0);
+  ASSERT_EQ(hard0.size(), pcss0.size());
+  int lit = 0, differ0 = 0, differ4 = 0;  // (0 is also the background's visibility: lit pixels are counted)
+  for (std::size_t i = 0; i < hard0.size(); ++i) {
+    lit += hard0[i] == 1.0f;
+    differ0 += hard0[i] != pcss0[i];
+    differ4 += hard0[i] != pcss4[i];
+  }
+  EXPECT_GT(lit, 1000);
+  EXPECT_EQ(differ0, 0);
+  EXPECT_GT(differ4, 100);  // the shadows' edges at 320 x 180: 319 pixels measured
+  std::printf("  lab 16, %d lit pixels: PCSS at size 0 differs from the hard test at %d, at 4 deg at %d\n", lit,
+              differ0, differ4);
+}
+
 }  // namespace
 }  // namespace shadowlab
