@@ -77,6 +77,8 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_light_size"),
        Uniform(id, "u_pcss_blocker_samples"),
        Uniform(id, "u_pcss_filter_samples"),
+       Uniform(id, "u_pcss_view"),
+       Uniform(id, "u_pcss_view_range"),
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
@@ -381,6 +383,8 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.light_size.set(light.size);
   u.pcss_blocker_samples.set(static_cast<int>(technique_param(params, "pcss.blocker_samples")));
   u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
+  u.pcss_view.set(static_cast<int>(technique_param(params, "pcss.view")));
+  u.pcss_view_range.set(static_cast<float>(technique_param(params, "pcss.view_range")));
   if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
     const FrameLight& f = *ctx.flashlight;
     const glm::mat4& fp = f.view.projection;

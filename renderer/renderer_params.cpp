@@ -166,6 +166,17 @@ std::vector<ParamSpec> pcf_param_specs() {
       {"pcss.filter_samples", "PCSS filter taps", ParamKind::Int, 8.0, 2.0, 16.0,
        "Taps per side of PCSS's variable-width PCF (each a hardware 2 x 2 comparison), spread over the "
        "estimated penumbra: fewer taps, visible steps in wide penumbrae.", {}},
+      {"pcss.view", "PCSS debug view", ParamKind::Choice, 0.0, 0.0, 2.0,
+       "What the view shows in place of the shading. blocker distance: the blockers' mean distance above the "
+       "point, dark blue (0) to yellow (pcss.view_range); kernel width: the filter's diameter in map texels on a log "
+       "scale, log2(1 + texels) / log2(129): dark blue (0), purple (4), orange (16) to yellow (the cap, 128), pure "
+       "red where the cap cuts it. Light grey: the search "
+       "found no blocker (fully lit); dark grey: the surface faces away from the light. The red channel is "
+       "the value's share of its range.",
+       {"shadow", "blocker distance", "kernel width"}},
+      {"pcss.view_range", "PCSS view range", ParamKind::Float, 4.0, 0.05, 100.0,
+       "The blocker distance (world units) that pcss.view = blocker distance shows yellow.", {}, kInvalidatesNothing,
+       true},
   };
 }
 

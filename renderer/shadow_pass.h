@@ -44,6 +44,7 @@ struct LitUniforms {
   Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
   Uniform shadow_map_compare, pcf_radius, pcf_hardware;
   Uniform light_size, pcss_blocker_samples, pcss_filter_samples;  // a sized light; PCSS's taps (shaders/shadow/pcss.glsl)
+  Uniform pcss_view, pcss_view_range;  // PCSS's debug view (pcss.view)
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
   struct Flashlight {  // the FLASHLIGHT variant's (shaders/shadow/flashlight.glsl)

@@ -100,6 +100,11 @@ void main() {
   o_color = vec4(encode(linear) - encode(ambient), 0.0);
 #else
   o_color = vec4(encode(linear), alpha);
+#ifdef TECHNIQUE_VIEW
+  // A shadow test's own debug view (e.g. shaders/shadow/pcss.glsl's pcss.view): what it found, as colour.
+  vec3 seen;
+  if (technique_view(n_dot_l > 0.0, seen)) o_color = vec4(seen, 1.0);
+#endif
 #endif
 #ifdef WRITE_GBUFFER
 #ifdef FLASHLIGHT

@@ -179,12 +179,16 @@ Lab SHADOWLAB_LAB_MAKER() {
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;
   lab.params = {size, bias, slope};
-  for (auto& spec : technique_param_specs({"pcss.blocker_samples", "pcss.filter_samples"})) lab.params.push_back(spec);
+  for (auto& spec : technique_param_specs({"pcss.blocker_samples", "pcss.filter_samples", "pcss.view", "pcss.view_range"})) lab.params.push_back(spec);
   lab.presets = {
       {"sun", "The sun's own size, about half a degree: a narrow penumbra.", {{"light.size", "0.5"}}},
       {"wide penumbra", "A 10-degree sun: wide penumbrae, widest where the blocker is far above the ground.",
        {{"light.size", "10"}}},
       {"point light", "Size 0: PCSS is the hard shadow of lab 0.", {{"light.size", "0"}}},
+      {"see the blockers", "The debug view of the blocker search: each shadowed point coloured by the blockers' "
+       "mean distance above it (dark blue near, yellow at 4 units).", {{"pcss.view", "blocker distance"}}},
+      {"see the kernel", "The debug view of your estimate: the filter's width in map texels, wider as the blocker "
+       "rises; red where it would pass the 128-texel cap.", {{"pcss.view", "kernel width"}, {"light.size", "10"}}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {

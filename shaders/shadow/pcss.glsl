@@ -19,6 +19,15 @@ uniform int u_pcss_filter_samples;   // taps per side of the filter
 // The kernel's half width is capped at this many texels (a wide kernel of a few taps only shows steps).
 const float PCSS_MAX_RADIUS_TEXELS = 64.0;
 
+// The debug view (pcss.view: 0 the shading, 1 the blockers' mean distance, 2 the filter's width): what
+// shadow_visibility found for this pixel, shown by technique_view() in place of the lit colour.
+#define TECHNIQUE_VIEW
+uniform int u_pcss_view;
+uniform float u_pcss_view_range;  // the blocker distance shown yellow (world units)
+float pcss_seen_distance = -1.0;  // the blockers' mean distance above the point; -1: no blocker found
+float pcss_seen_width = 0.0;      // the filter's diameter, map texels (the wider axis)
+bool pcss_seen_capped = false;    // the cap (PCSS_MAX_RADIUS_TEXELS) cut the kernel
+
 // Row i of u_light_tex_matrix (world -> map texture space): its length is 1 / (the ortho box's world
 // extent along that axis).
 vec3 pcss_row(int i) { return vec3(u_light_tex_matrix[0][i], u_light_tex_matrix[1][i], u_light_tex_matrix[2][i]); }
@@ -27,7 +36,12 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   vec3 s = shadow_coords(world_position);
   if (outside_shadow_map(s)) return 1.0;
   float bias = shadow_bias(n_dot_l);
-  if (u_light_size <= 0.0) return s.z - bias > texture(u_shadow_map, s.xy).r ? 0.0 : 1.0;  // a point: hard
+  if (u_light_size <= 0.0) {  // a point: the hard test (its blocker's distance kept for the view)
+    float stored = texture(u_shadow_map, s.xy).r;
+    if (s.z - bias <= stored) return 1.0;
+    pcss_seen_distance = (s.z - stored) / length(pcss_row(2));
+    return 0.0;
+  }
 
   vec3 rx = pcss_row(0), ry = pcss_row(1), rz = pcss_row(2);
   vec2 world_per_uv = vec2(1.0 / length(rx), 1.0 / length(ry));
@@ -58,10 +72,14 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
   }
   if (blockers == 0.0) return 1.0;  // nothing in front: the whole disk is seen
   float blocker_depth = blocker_sum / blockers * world_per_depth;
+  pcss_seen_distance = receiver_depth - blocker_depth;
 
   // 2. The penumbra's width on the receiver (world units), as a kernel radius in texture units.
   float width = penumbra_width(receiver_depth, blocker_depth, u_light_size);
-  vec2 radius = clamp(0.5 * width / world_per_uv, vec2(0.0), texel * PCSS_MAX_RADIUS_TEXELS);
+  vec2 wanted = 0.5 * width / world_per_uv;
+  vec2 radius = clamp(wanted, vec2(0.0), texel * PCSS_MAX_RADIUS_TEXELS);
+  pcss_seen_width = 2.0 * max(radius.x / texel.x, radius.y / texel.y);
+  pcss_seen_capped = any(greaterThan(wanted, texel * PCSS_MAX_RADIUS_TEXELS));
 
   // 3. PCF over a disk of that diameter, the sun's own shape: behind a blocker parallel to the receiver
   // the share of the disk's taps that are lit is the share of the sun the point sees. (A square kernel
@@ -78,4 +96,26 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
     }
   }
   return lit / taps;
+}
+
+// The debug view's colour for this pixel, after shadow_visibility ran (lit: whether it did, the surface
+// facing the light). False with pcss.view 0. A value t in [0, 1] is (t, t^2, 0.6 (1 - t)): dark blue to
+// yellow, t itself in the red channel (tests/test_soft_check.cpp reads it back).
+bool technique_view(bool lit, out vec3 color) {
+  color = vec3(0.0);
+  if (u_pcss_view == 0) return false;
+  if (!lit) {
+    color = vec3(0.15);
+  } else if (pcss_seen_distance < 0.0) {
+    color = vec3(0.7);
+  } else if (u_pcss_view == 2 && pcss_seen_capped) {
+    color = vec3(1.0, 0.0, 0.0);
+  } else {
+    // The width on a log scale, 0 to the cap: 1, 4, 16 and 64 texels at 0.14, 0.33, 0.58 and 0.86.
+    float t = u_pcss_view == 1 ? pcss_seen_distance / u_pcss_view_range
+                               : log2(1.0 + pcss_seen_width) / log2(1.0 + 2.0 * PCSS_MAX_RADIUS_TEXELS);
+    t = clamp(t, 0.0, 1.0);
+    color = vec3(t, t * t, 0.6 * (1.0 - t));
+  }
+  return true;
 }
