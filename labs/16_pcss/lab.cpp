@@ -186,7 +186,7 @@ Lab SHADOWLAB_LAB_MAKER() {
        {{"light.size", "10"}}},
       {"point light", "Size 0: PCSS is the hard shadow of lab 0.", {{"light.size", "0"}}},
       {"see the blockers", "The debug view of the blocker search: each shadowed point coloured by the blockers' "
-       "mean distance above it (dark blue near, yellow at 4 units).", {{"pcss.view", "blocker distance"}}},
+       "mean distance above it (dark blue near, yellow at the PCSS view range).", {{"pcss.view", "blocker distance"}}},
       {"see the kernel", "The debug view of your estimate: the filter's width in map texels, wider as the blocker "
        "rises; red where it would pass the 128-texel cap.", {{"pcss.view", "kernel width"}, {"light.size", "10"}}},
   };
