@@ -1,11 +1,13 @@
 #include "labs/cpp_exercise.h"
 
 #include <algorithm>
+#include <csignal>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "labs/sandbox.h"
 #include "renderer/shader.h"
 
 namespace shadowlab {
@@ -13,6 +15,10 @@ namespace shadowlab {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr const char* kSourceDir = SHADOWLAB_EXERCISE_SOURCE_DIR;  // where the lab's headers are
+constexpr std::uint64_t kMaxSourceBytes = 1 << 20;
+constexpr std::uint64_t kLogBytes = 4 << 20;  // what the running exercise may print, at most
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -43,6 +49,7 @@ std::string student_view(std::string log, const CppExerciseSpec& spec, const fs:
   replace_all(log, spec.source.string(), spec.display_name);
   replace_all(log, (work / "").string(), "");
   replace_all(log, (data_dir() / "").string(), "");
+  replace_all(log, std::string(kSourceDir) + "/", "");
   auto lines = lines_of(log);
   std::string out;
   for (std::size_t i = 0; i < lines.size() && i < max_lines; ++i) out += lines[i] + "\n";
@@ -89,14 +96,159 @@ void expect_success(const platform::ChildOutcome& o, const std::string& what, co
                     const CppExerciseSpec& spec, const fs::path& work) {
   using Kind = platform::ChildOutcome::Kind;
   if (o.kind == Kind::NotStarted) throw std::runtime_error(what + ": " + o.error);
-  if (o.kind == Kind::TimedOut)
+  if (o.kind == Kind::TimedOut || (o.kind == Kind::Signalled && o.signal == SIGXCPU))
     throw ExerciseError("timed_out", spec.display_name + ": " + what + " took longer than " +
                                          std::to_string(static_cast<int>(spec.compile_seconds)) + " s");
   if (o.kind == Kind::Exited && o.exit_code == 0) return;
   const std::string words = student_view(read_file(log), spec, work);
   if (o.kind == Kind::Signalled)
-    throw std::runtime_error(what + " of " + spec.display_name + " died: " + o.signal_name + "\n" + words);
+    throw ExerciseError("compile_error", spec.display_name + ": " + what + " was stopped: " + o.signal_name +
+                                             (words.empty() ? "" : "\n" + words));
   throw ExerciseError("compile_error", words.empty() ? spec.display_name + ": " + what + " failed" : words);
+}
+
+// The student's file as bytes, refused when it or a folder on its way is a link (it could name any
+// file the grader may read) or when it is too big to be an exercise.
+std::string read_submitted(const CppExerciseSpec& spec) {
+  const std::string source = spec.source.generic_string(), name = fs::path(spec.display_name).generic_string();
+  const bool named = source.size() > name.size() && source.compare(source.size() - name.size(), name.size(), name) == 0;
+  fs::path at = named ? fs::path(source.substr(0, source.size() - name.size())) : spec.source.parent_path();
+  fs::path inside;
+  for (const auto& part : named ? fs::path(name) : spec.source.filename()) {
+    at /= part;
+    inside /= part;
+    if (fs::is_symlink(at))
+      throw ExerciseError("compile_error", spec.display_name + ": error: " + inside.generic_string() +
+                                               " is a link; submit the file itself");
+  }
+  if (!fs::is_regular_file(spec.source))
+    throw ExerciseError("compile_error", spec.display_name + ": not in the submission");
+  if (fs::file_size(spec.source) > kMaxSourceBytes)
+    throw ExerciseError("compile_error", spec.display_name + ": error: larger than " +
+                                             std::to_string(kMaxSourceBytes >> 10) + " KB; an exercise is a few KB");
+  return read_file(spec.source);
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out << bytes;
+  if (!out.flush()) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+// The grader's side of a build: the compiler and the files of ours the sandboxes may see.
+struct Tools {
+  std::string compiler;       // the real file (the sandbox has no /etc/alternatives to follow links through)
+  fs::path pch, host, core;   // the lab's precompiled headers, its host library, the renderer's CPU library
+  std::vector<fs::path> headers;  // every project header the lab's headers include (the PCH's dependencies)
+  platform::ChildLimits limits;
+
+  explicit Tools(const CppExerciseSpec& spec) {
+    std::error_code ec;
+    compiler = fs::canonical(SHADOWLAB_CXX, ec).string();
+    if (ec || compiler.rfind("/usr/", 0) != 0)
+      throw std::runtime_error(std::string(SHADOWLAB_CXX) + ": the compiler must be the system's (under /usr), which "
+                               "is all a grading sandbox holds");
+    const fs::path dir = SHADOWLAB_EXERCISE_HOST_DIR;
+    pch = dir / (spec.host + ".h");
+    host = dir / ("libshadowlab_exercise_host_" + spec.host + ".a");
+    core = SHADOWLAB_CORE_LIBRARY;
+    if (!fs::exists(host) || !fs::exists(pch.string() + ".d"))
+      throw std::runtime_error(host.string() + ": the lab's exercise host is not built (scripts/build)");
+    headers = project_headers(pch.string() + ".d");
+    headers.push_back(pch);
+    if (fs::exists(pch.string() + ".gch")) headers.push_back(pch.string() + ".gch");
+    limits = {spec.compile_seconds, 4ull << 30, spec.compile_seconds, 256ull << 20};
+  }
+
+  // The files under the project's folder that the precompiled headers were made from (a make rule:
+  // "target: dep dep \\ ..." with spaces in names escaped).
+  static std::vector<fs::path> project_headers(const fs::path& depfile) {
+    std::vector<fs::path> found;
+    const std::string text = read_file(depfile), root = std::string(kSourceDir) + "/";
+    std::string word;
+    auto take = [&] {
+      if (word.rfind(root, 0) == 0 && fs::is_regular_file(word)) found.emplace_back(word);
+      word.clear();
+    };
+    for (std::size_t i = text.find(':') + 1; i < text.size(); ++i) {
+      if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == ' ') word += text[++i];
+      else if (text[i] == '\\' || std::isspace(static_cast<unsigned char>(text[i]))) take();
+      else word += text[i];
+    }
+    take();
+    return found;
+  }
+
+  platform::SandboxSpec toolchain(std::vector<platform::SandboxMount> mounts) const {
+    platform::SandboxSpec spec;
+    spec.system_toolchain = true;
+    spec.filter = platform::SyscallFilter::Toolchain;
+    spec.mounts = std::move(mounts);
+    return spec;
+  }
+};
+
+void run_tool(const platform::SandboxSpec& sandbox, const std::vector<std::string>& argv, const std::string& what,
+              const fs::path& log, const Tools& tools, const CppExerciseSpec& spec, const fs::path& work) {
+  const platform::SandboxCommand command(sandbox, argv);
+  expect_success(platform::inner_outcome(platform::run_child(command.argv(), tools.limits, log, {}, command.inherited())),
+                 what, log, spec, work);
+}
+
+// What a tool printed about the student's object or the host library, which the sandbox holds
+// read-only at /out and /grader.
+std::string list_object(const std::vector<std::string>& argv, const std::string& what, const Tools& tools,
+                        const CppExerciseSpec& spec, const fs::path& work) {
+  const fs::path log = work / "list.log";
+  run_tool(tools.toolchain({{work / "out", "/out"}, {tools.host, "/grader/libhost.a"}}), argv, what, log, tools, spec, work);
+  return read_file(log);
+}
+
+// Calls into the grader's code other than the functions the lab offers (the solution is not one).
+void refuse_calls(const std::string& undefined, const CppExerciseSpec& spec) {
+  std::set<std::string> refused;
+  for (const auto& line : lines_of(undefined)) {
+    const auto at = line.find("shadowlab::");
+    if (at == std::string::npos) continue;
+    const std::string name = line.substr(at, line.find('(', at) - at);
+    if (std::find(spec.offered.begin(), spec.offered.end(), name) == spec.offered.end()) refused.insert(name);
+  }
+  if (refused.empty()) return;
+  std::string names, offered;
+  for (const auto& n : refused) names += (names.empty() ? "" : ", ") + n;
+  for (const auto& n : spec.offered) offered += (offered.empty() ? "" : ", ") + n;
+  throw ExerciseError("compile_error", spec.display_name + ": error: calls " + names +
+                                           ", which this exercise may not use; it may call " + offered);
+}
+
+// A line of `nm`: "0000000000000000 T name" -> {'T', "name"}; {0, ""} for anything else.
+std::pair<char, std::string> nm_symbol(const std::string& line) {
+  std::istringstream in(line);
+  std::string address, type, name;
+  if (!(in >> address >> type >> name) || type.size() != 1) return {0, ""};
+  return {type[0], name};
+}
+
+// Definitions that would take the place of the grader's or the system's own functions: any C name
+// (main, read, seccomp_load...), and what the lab's host library itself defines (not the inline
+// functions both compile from the same headers, nor the compiler's own symbols such as
+// DW.ref.__gxx_personality_v0, which no identifier can name).
+void refuse_definitions(const std::string& defined, const std::string& host_defined, const CppExerciseSpec& spec) {
+  std::set<std::string> host;
+  for (const auto& line : lines_of(host_defined))
+    if (const auto [type, name] = nm_symbol(line); std::string("TDBRG").find(type) != std::string::npos) host.insert(name);
+  static const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+  std::set<std::string> refused;
+  for (const auto& line : lines_of(defined))
+    if (const auto [type, name] = nm_symbol(line);
+        type && std::regex_match(name, identifier) && (name.rfind("_Z", 0) != 0 || host.count(name)))
+      refused.insert(name);
+  if (refused.empty()) return;
+  std::string names;
+  for (const auto& n : refused) names += (names.empty() ? "" : ", ") + n;
+  throw ExerciseError("compile_error", spec.display_name + ": error: defines " + names +
+                                           ", which the grader or the system provides; an exercise defines only "
+                                           "the functions its TODO asks for and C++ helpers of its own");
 }
 
 }  // namespace
@@ -119,72 +271,68 @@ CppExercise::~CppExercise() {
 }
 
 void CppExercise::build() {
-  if (!fs::is_regular_file(spec_.source))
-    throw std::runtime_error(spec_.display_name + ": not in the submission (" + spec_.source.string() + ")");
-  screen_source(read_file(spec_.source), spec_);
-  const platform::ChildLimits tool_limits{spec_.compile_seconds, 4ull << 30};
+  const std::string text = read_submitted(spec_);
+  if (spec_.screen) screen_source(text, spec_);
+  if (const std::string& why = platform::sandbox_unavailable(); !why.empty())
+    throw std::runtime_error(spec_.display_name + " is not graded: " + why);
+  const Tools tools(spec_);
+  // The sandboxes see the student's file as a copy in our work folder, at its place in the project.
+  const fs::path copy = work_ / "exercise.cpp", out = work_ / "out";
+  write_bytes(copy, text);
+  fs::create_directory(out);
 
-  // 1. Compile the student's file alone, with the grader's headers (quoted includes only) and flags.
-  const fs::path object = work_ / "exercise.o", compile_log = work_ / "compile.log";
-  std::vector<std::string> compile = {SHADOWLAB_CXX, "-fno-diagnostics-color",
-                                      "-fmax-errors=10"};
+  // 1. Compile it alone, with the lab's headers (precompiled) and nothing else of ours.
+  std::vector<std::string> compile = {tools.compiler, "-fno-diagnostics-color", "-fmax-errors=10"};
   std::istringstream flags(SHADOWLAB_EXERCISE_CXX_FLAGS);
   for (std::string f; flags >> f;) compile.push_back(f);
-  const fs::path pch = fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / (spec_.host + ".h");
-  if (fs::exists(pch.string() + ".gch")) {  // the lab's headers precompiled (labs/CMakeLists.txt)
-    compile.push_back("-include");
-    compile.push_back(pch.string());
-  }
-  for (const std::string& f : {std::string("-iquote"), data_dir().string(), std::string("-c"), spec_.source.string(),
-                               std::string("-o"), object.string()})
-    compile.push_back(f);
-  expect_success(platform::run_child(compile, tool_limits, compile_log), "compiling", compile_log, spec_, work_);
+  if (fs::exists(tools.pch.string() + ".gch")) compile.insert(compile.end(), {"-include", tools.pch.string()});
+  compile.insert(compile.end(), {"-iquote", kSourceDir, "-c", spec_.display_name, "-o", "/out/exercise.o"});
+  platform::SandboxSpec in_project = tools.toolchain({{out, "/out", true}});
+  for (const auto& header : tools.headers) in_project.mounts.push_back({header, header.string()});
+  in_project.mounts.push_back({copy, (fs::path(kSourceDir) / spec_.display_name).string()});
+  in_project.chdir = kSourceDir;
+  run_tool(in_project, compile, "compiling", work_ / "compile.log", tools, spec_, work_);
 
-  // 2. What the object calls and runs: only the offered functions of the grader, nothing before main.
-  const fs::path symbols_log = work_ / "nm.log", sections_log = work_ / "objdump.log";
-  expect_success(platform::run_child({"nm", "-C", "--undefined-only", object.string()}, tool_limits, symbols_log),
-                 "listing the symbols", symbols_log, spec_, work_);
-  std::set<std::string> refused;
-  for (const auto& line : lines_of(read_file(symbols_log))) {
-    const auto at = line.find("shadowlab::");
-    if (at == std::string::npos) continue;
-    const std::string name = line.substr(at, line.find('(', at) - at);
-    if (std::find(spec_.offered.begin(), spec_.offered.end(), name) == spec_.offered.end()) refused.insert(name);
+  // 2. What the object calls, defines and runs before main: friendly early messages (the sandbox is
+  // the defence).
+  if (spec_.screen) {
+    refuse_calls(list_object({"nm", "-C", "--undefined-only", "/out/exercise.o"}, "listing the symbols", tools, spec_, work_),
+                 spec_);
+    const std::string host = list_object({"nm", "--defined-only", "--extern-only", "/grader/libhost.a"},
+                                         "listing the host's symbols", tools, spec_, work_);
+    refuse_definitions(list_object({"nm", "--defined-only", "--extern-only", "/out/exercise.o"}, "listing the symbols",
+                                   tools, spec_, work_),
+                       host, spec_);
+    static const std::regex init_re(R"(\s(\.init_array|\.preinit_array|\.ctors)\S*\s)");
+    if (std::regex_search(list_object({"objdump", "-h", "/out/exercise.o"}, "listing the sections", tools, spec_, work_),
+                          init_re))
+      throw ExerciseError("compile_error", spec_.display_name +
+                                               ": error: code that runs before the exercise is called (a global object "
+                                               "with a constructor, or a constructor attribute): move it into the function");
   }
-  if (!refused.empty()) {
-    std::string names, offered;
-    for (const auto& n : refused) names += (names.empty() ? "" : ", ") + n;
-    for (const auto& n : spec_.offered) offered += (offered.empty() ? "" : ", ") + n;
-    throw ExerciseError("compile_error", spec_.display_name + ": error: calls " + names +
-                                             ", which this exercise may not use; it may call " + offered);
-  }
-  expect_success(platform::run_child({"objdump", "-h", object.string()}, tool_limits, sections_log),
-                 "listing the sections", sections_log, spec_, work_);
-  static const std::regex init_re(R"(\s(\.init_array|\.preinit_array|\.ctors)\S*\s)");
-  if (std::regex_search(read_file(sections_log), init_re))
-    throw ExerciseError("compile_error", spec_.display_name +
-                                             ": error: code that runs before the exercise is called (a global object "
-                                             "with a constructor, or a constructor attribute): move it into the function");
 
-  // 3. Link with the lab's host (its main and the protocol) and the renderer's CPU library.
-  const fs::path program = work_ / "exercise", link_log = work_ / "link.log";
-  const fs::path host = fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / ("libshadowlab_exercise_host_" + spec_.host + ".a");
-  if (!fs::exists(host)) throw std::runtime_error(host.string() + ": the lab's exercise host is not built (scripts/build)");
-  expect_success(platform::run_child({SHADOWLAB_CXX, object.string(), host.string(), SHADOWLAB_CORE_LIBRARY,
-                                      "-lseccomp", "-o", program.string()},
-                                     tool_limits, link_log),
-                 "linking", link_log, spec_, work_);
+  // 3. Link it, statically, with the lab's host (its main and the protocol) and the renderer's CPU
+  // library: the program then needs nothing but itself to run.
+  run_tool(tools.toolchain({{out, "/out", true}, {tools.host, "/grader/libhost.a"}, {tools.core, "/grader/libcore.a"}}),
+           {tools.compiler, "-static", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp", "-o",
+            "/out/exercise"},
+           "linking", work_ / "link.log", tools, spec_, work_);
 
-  // 4. Start it: it waits for calls.
+  // 4. Start it in a sandbox holding only the program, under the computing-only filter: it waits for calls.
+  platform::SandboxSpec alone;
+  alone.mounts = {{out / "exercise", "/exercise"}};
+  alone.filter = platform::SyscallFilter::Computing;
+  const platform::SandboxCommand run(alone, {"/exercise"});
   std::string error;
-  if (!child_.start({program.string()}, {0.0, 1ull << 30}, work_ / "run.log", error)) throw std::runtime_error(error);
+  const platform::ChildLimits limits{0.0, 1ull << 30, 0.0, kLogBytes};
+  if (!child_.start(run.argv(), limits, work_ / "run.log", error, run.inherited())) throw std::runtime_error(error);
 }
 
 void CppExercise::call_raw(const void* request, std::size_t request_size, void* reply, std::size_t reply_size) {
   using Io = platform::PipeChild::Io;
   const Io io = child_.call(request, request_size, reply, reply_size, spec_.call_seconds);
   if (io == Io::Ok) return;
-  const platform::ChildOutcome o = child_.finish();
+  const platform::ChildOutcome o = platform::inner_outcome(child_.finish());
   if (io == Io::TimedOut)
     throw ExerciseError("timed_out", spec_.display_name + ": the exercise did not return within " +
                                          std::to_string(static_cast<int>(spec_.call_seconds)) + " s (an endless loop?)");

@@ -1,13 +1,18 @@
 // A student's C++ exercise graded from their own file (lab 2's exercise.cpp from a submission): the
-// file is compiled and linked with the lab's host (labs/cpp_exercise_host.h) into a small program of
-// its own, which the check then calls over a socket. The student's code never runs inside the grader:
-// a crash, an endless loop or a forged result stays in that program, which may only compute.
+// file is compiled and linked with the lab's host (labs/cpp_exercise_host.h) into a small static program
+// of its own, which the check then calls over a socket. The student's code never runs inside the grader.
 //
-// Building refuses, as a compile error naming the student's file: compiler errors (with the student's
-// file:line), includes other than the lab's offered headers and the system's, inline assembly, code
-// that runs before main (global objects with constructors), and calls into the grader's code other
-// than the functions the lab offers (the solution is not one of them). Compiling and linking each have
-// a time limit. Calling has one too: a call that does not return in time is an endless loop.
+// The defence is the operating system's (labs/sandbox.h): compiling, inspecting and linking run in
+// bubblewrap sandboxes that hold the system's /usr, the lab's headers and a copy of the student's file,
+// nothing else of ours (no solution or renderer sources, no --out, no home, no /etc); the program runs
+// in one that holds only itself, under a seccomp filter installed before it starts (it may only
+// compute), as nobody, with no network, in a PID namespace that dies with the grader, and under CPU,
+// memory and output-size limits. Where no sandbox can be made, the exercise is not built at all.
+//
+// Before that, friendly refusals with a message naming the student's file (`screen`): includes other
+// than the lab's offered headers and the system's, inline assembly, definitions of the grader's or the
+// system's functions (main, a C function), code that runs before main, calls into the grader's code
+// other than the functions the lab offers. Compiling and linking each have a time limit; so does a call.
 //
 // The local student flow is unchanged: without a submission, lab 2 grades the exercise compiled into
 // the binary (edit, rebuild, Check).
@@ -42,6 +47,9 @@ struct CppExerciseSpec {
   std::vector<std::string> offered;  // the grader's functions it may call ("shadowlab::orthonormal_basis")
   double compile_seconds = 60.0;     // each of compiling and linking
   double call_seconds = 10.0;        // one call, or one batch of calls
+  // The early, friendly refusals (includes, inline assembly, calls and definitions the lab does not
+  // allow, code before main). The sandbox holds without them; tests turn them off to prove it.
+  bool screen = true;
 };
 
 class CppExercise {

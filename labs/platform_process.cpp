@@ -52,8 +52,10 @@ struct ExecPlan {
   std::string program;
   std::vector<std::string> args, env_strings;
   std::vector<char*> argv, envp;
+  std::vector<int> inherit;  // descriptors the program keeps (their close-on-exec flag cleared in the child)
 
-  ExecPlan(const std::vector<std::string>& a, const std::map<std::string, std::string>& env) : args(a) {
+  ExecPlan(const std::vector<std::string>& a, const std::map<std::string, std::string>& env, std::vector<int> keep)
+      : args(a), inherit(std::move(keep)) {
     program = resolve_program(args.at(0));
     std::map<std::string, std::string> merged;
     for (char** e = environ; e && *e; ++e) {
@@ -87,6 +89,11 @@ struct ExecPlan {
     struct rlimit cpu = {soft, soft + 5};
     ::setrlimit(RLIMIT_CPU, &cpu);
   }
+  if (limits.file_size_bytes > 0) {
+    struct rlimit fsize = {limits.file_size_bytes, limits.file_size_bytes};
+    ::setrlimit(RLIMIT_FSIZE, &fsize);
+  }
+  for (int fd : plan.inherit) ::fcntl(fd, F_SETFD, 0);
   ::execve(plan.program.c_str(), plan.argv.data(), plan.envp.data());
   const int e = errno;
   [[maybe_unused]] auto n = ::write(report, &e, sizeof e);
@@ -190,6 +197,7 @@ std::string describe_signal(int signal) {
       {SIGTERM, "SIGTERM", "terminated"},
       {SIGSYS, "SIGSYS", "a system call grading does not allow: the exercise may only compute"},
       {SIGXCPU, "SIGXCPU", "CPU time limit reached"},
+      {SIGXFSZ, "SIGXFSZ", "file size limit reached: it wrote too much (its printed output counts)"},
   };
   for (const auto& n : names)
     if (n.signal == signal) return std::string(n.name) + " (" + n.meaning + ")";
@@ -198,9 +206,9 @@ std::string describe_signal(int signal) {
 }
 
 ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits& limits, const fs::path& log_file,
-                       const std::map<std::string, std::string>& env) {
+                       const std::map<std::string, std::string>& env, const std::vector<int>& inherit) {
   ChildOutcome outcome;
-  const ExecPlan plan(argv, env);
+  const ExecPlan plan(argv, env, inherit);
   const int log = log_file.empty() ? -1 : ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (!log_file.empty() && log < 0) {
     outcome.error = log_file.string() + ": cannot write the log: " + std::strerror(errno);
@@ -219,8 +227,8 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits& 
 PipeChild::~PipeChild() { finish(); }
 
 bool PipeChild::start(const std::vector<std::string>& argv, const ChildLimits& limits, const fs::path& stderr_file,
-                      std::string& error) {
-  const ExecPlan plan(argv, {});
+                      std::string& error, const std::vector<int>& inherit) {
+  const ExecPlan plan(argv, {}, inherit);
   // One socket pair carries both directions; send() with MSG_NOSIGNAL means a child that died does not
   // kill us with SIGPIPE.
   int fds[2];
@@ -353,7 +361,7 @@ std::string needs_linux(const std::string& what) {
 }  // namespace
 
 ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&,
-                       const std::map<std::string, std::string>&) {
+                       const std::map<std::string, std::string>&, const std::vector<int>&) {
   ChildOutcome outcome;
   outcome.error = needs_linux(argv.empty() ? "run" : argv.front());
   return outcome;
@@ -361,7 +369,8 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits&,
 
 PipeChild::~PipeChild() = default;
 
-bool PipeChild::start(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&, std::string& error) {
+bool PipeChild::start(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&, std::string& error,
+                      const std::vector<int>&) {
   error = needs_linux(argv.empty() ? "start" : argv.front());
   return false;
 }

@@ -23,6 +23,8 @@ struct ChildLimits {
   std::uint64_t address_space_bytes = 0;   // 0: none. Allocations beyond it fail (RLIMIT_AS).
   double cpu_seconds = 0.0;                // 0: none. CPU time of the process, all its threads: SIGXCPU at the
                                            // limit, SIGKILL 5 s later (RLIMIT_CPU). The same whatever the load.
+  std::uint64_t file_size_bytes = 0;       // 0: none. No file it writes (its log included) grows beyond it:
+                                           // SIGXFSZ (RLIMIT_FSIZE).
 };
 
 struct ChildOutcome {
@@ -43,9 +45,11 @@ struct ChildOutcome {
 // PR_SET_PDEATHSIG), so a grading run killed from outside leaves no orphans.
 // Elsewhere: Windows CreateProcess in a Job object (JOB_OBJECT_LIMIT_PROCESS_MEMORY,
 // JOB_OBJECT_LIMIT_KILL_ON_JOB_CLOSE, TerminateJobObject at the deadline); macOS the same POSIX calls
-// (RLIMIT_AS is not enforced there: the memory limit becomes advisory).
+// (RLIMIT_AS is not enforced there: the memory limit becomes advisory). `inherit`: descriptors of ours
+// (opened close-on-exec) that the program gets under the same numbers (a sandbox's filter).
 ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits& limits,
-                       const std::filesystem::path& log_file, const std::map<std::string, std::string>& env = {});
+                       const std::filesystem::path& log_file, const std::map<std::string, std::string>& env = {},
+                       const std::vector<int>& inherit = {});
 
 // A child whose stdin and stdout are pipes to us (a student's compiled exercise answering calls).
 // Its stderr goes to `stderr_file`. Elsewhere: CreatePipe + CreateProcess with redirected handles.
@@ -58,7 +62,7 @@ class PipeChild {
 
   // False with `error` set when the program cannot be started.
   bool start(const std::vector<std::string>& argv, const ChildLimits& limits, const std::filesystem::path& stderr_file,
-             std::string& error);
+             std::string& error, const std::vector<int>& inherit = {});
   enum class Io { Ok, Closed, TimedOut };
   // Writes `request` and reads exactly `reply_size` bytes back (both at once: a batch of many requests
   // and their replies), waiting at most `seconds` in all.

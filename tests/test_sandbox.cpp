@@ -1,0 +1,260 @@
+// The sandbox of submitted C++ exercises (labs/sandbox.h, labs/cpp_exercise.h), attacked the way a
+// hostile student would: each case is lab 2's exercise with something added, graded with the early
+// screens off (SandboxAttack) so that what holds is the operating system's sandbox alone, and with them
+// on (ScreenedAttack) for the status a student gets. Each case proves that nothing outside was written
+// (a canary folder's listing and content), read (a secret's text appears in no message or log) or left
+// running (no process of the exercise outlives it).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "labs/02_ortho_fit/ortho_fit.h"
+#include "labs/cpp_exercise.h"
+#include "labs/sandbox.h"
+
+namespace shadowlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string right_answer() {
+  for (const auto& e : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/02_ortho_fit/right"))
+    return read_text(e.path());
+  return "";
+}
+
+// Everything under `dir` with its bytes: what "nothing was written" compares.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    files[e.path().string()] = e.is_regular_file() ? read_text(e.path()) : "<folder>";
+  return files;
+}
+
+// Processes whose command line names the exercise's program (inside the sandbox, /exercise).
+int exercise_processes() {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string cmd = read_text(e.path() / "cmdline");
+    if (cmd.rfind("/exercise", 0) == 0 && cmd.find('\0') == 9) ++n;
+  }
+  return n;
+}
+
+// What an attack got: the status it was given (or "answered"), the message, the program's log.
+struct Outcome {
+  std::string status, message;
+};
+
+class Sandbox : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (const std::string& why = platform::sandbox_unavailable(); !why.empty()) GTEST_SKIP() << why;
+    std::random_device random;
+    root_ = fs::temp_directory_path() / ("shadowlab-sandbox-test-" + std::to_string(random()));
+    outside_ = root_ / "outside";
+    fs::create_directories(outside_);
+    secret_ = "secret-" + std::to_string(random()) + "-" + std::to_string(random());
+    std::ofstream(outside_ / "secret.txt") << secret_ << "\n";
+    std::ofstream(outside_ / "canary.json") << "{\"status\": \"failed\"}\n";
+    before_ = snapshot(outside_);
+  }
+  void TearDown() override {
+    if (root_.empty()) return;
+    EXPECT_EQ(snapshot(outside_), before_) << "something outside the sandbox was written";
+    // A killed sandbox's namespace is torn down by the kernel after its first process is reaped: given
+    // a moment (at most 2 s), nothing of the exercise may be left.
+    int left = exercise_processes();
+    for (int i = 0; i < 40 && left > 0; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      left = exercise_processes();
+    }
+    EXPECT_EQ(left, 0) << "a process of the exercise outlived it";
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+
+  // $OUT and $SECRET in `source` become the canary folder and the secret's path.
+  std::string expand(std::string source) const {
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"$OUT", outside_.string()},
+                                     {"$SECRET", (outside_ / "secret.txt").string()}})
+      for (auto at = source.find(key); at != std::string::npos; at = source.find(key, at))
+        source.replace(at, key.size(), value);
+    return source;
+  }
+
+  CppExerciseSpec spec(const std::string& source, bool screen) {
+    const fs::path file = root_ / "submission/labs/02_ortho_fit/exercise.cpp";
+    fs::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary) << expand(source);
+    CppExerciseSpec s;
+    s.source = file;
+    s.display_name = "labs/02_ortho_fit/exercise.cpp";
+    s.host = "02_ortho_fit";
+    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "renderer/light.h", "renderer/scene.h"};
+    s.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho"};
+    s.screen = screen;
+    s.compile_seconds = 20.0;
+    s.call_seconds = 3.0;
+    return s;
+  }
+
+  // Builds and calls the exercise once; the outcome with the secret checked for in everything said.
+  Outcome attack(const std::string& source, bool screen = false) {
+    Outcome o;
+    try {
+      CppExercise program(spec(source, screen));
+      const FitCall call{{-1, -1, -1}, {1, 1, 1}, {0.3f, 1.0f, 0.2f}};
+      const FitAnswer answer = program.call<FitAnswer>(call);
+      o.status = "answered";
+      o.message = std::to_string(answer.world_size[0]);
+    } catch (const ExerciseError& e) {
+      o.status = e.status();
+      o.message = e.what();
+    } catch (const std::exception& e) {
+      o.status = "grader_error";
+      o.message = e.what();
+    }
+    EXPECT_EQ(o.message.find(secret_), std::string::npos) << "the secret was read: " << o.message;
+    EXPECT_EQ(o.message.find("root:x:0:0"), std::string::npos) << "/etc/passwd was read: " << o.message;
+    if (expand(source).find(root_.string()) == std::string::npos) {  // unless the student wrote it
+      EXPECT_EQ(o.message.find(root_.string()), std::string::npos) << "the grader's path was shown: " << o.message;
+    }
+    return o;
+  }
+
+  fs::path root_, outside_;
+  std::string secret_;
+  std::map<std::string, std::string> before_;
+};
+
+TEST_F(Sandbox, ARightAnswerBuildsAndAnswersInside) {
+  const Outcome o = attack(right_answer());
+  EXPECT_EQ(o.status, "answered") << o.message;
+}
+
+// The exercise's own function, doing `body` before it answers.
+std::string exercise_doing(const std::string& includes, const std::string& body) {
+  return includes + "\n#include \"labs/02_ortho_fit/ortho_fit.h\"\nnamespace shadowlab {\n"
+                    "LightView ortho_fit_exercise(const Bounds& b, const glm::vec3& d) {\n" + body +
+         "\n  (void)b;\n  return fixed_tutorial_ortho(d);\n}\n}\n";
+}
+
+// A main() of the student's own in place of the host's: it runs before any filter of the host, so
+// only the launcher's filter and the mount namespace stand between it and the grader's files.
+TEST_F(Sandbox, AMainOfItsOwnCannotWriteReadOrLeaveAProcess) {
+  const std::string evil = exercise_doing("#include <cstdio>\n#include <unistd.h>", "") +
+                           "int main() {\n"
+                           "  if (std::FILE* f = std::fopen(\"$OUT/canary.json\", \"w\")) std::fputs(\"{\\\"status\\\": \\\"passed\\\"}\", f);\n"
+                           "  if (std::FILE* f = std::fopen(\"$SECRET\", \"r\")) { char b[64] = {}; std::fread(b, 1, 63, f); std::fputs(b, stderr); }\n"
+                           "  if (::fork() == 0) { ::setsid(); ::sleep(60); }\n"
+                           "  return 0;\n}\n";
+  const Outcome o = attack(evil);
+  EXPECT_EQ(o.status, "crashed") << o.message;
+  EXPECT_NE(o.message.find("SIGSYS"), std::string::npos) << o.message;
+  EXPECT_EQ(attack(evil, true).status, "compile_error");
+}
+
+// A C function the host calls before it installs its own filter (dup), replaced by one that writes
+// outside. (seccomp_load itself cannot be replaced: the static link refuses a second definition.)
+TEST_F(Sandbox, ReplacingACallTheHostMakesBeforeItsFilterGainsNothing) {
+  const std::string evil = exercise_doing("#include <cstdio>\n#include <fcntl.h>\n#include <unistd.h>",
+                                          "  if (std::FILE* f = std::fopen(\"$SECRET\", \"r\")) { char b[64] = {};"
+                                          " std::fread(b, 1, 63, f); std::fputs(b, stderr); }") +
+                           "extern \"C\" int dup(int fd) {\n"
+                           "  int out = ::open(\"$OUT/forged.json\", O_WRONLY | O_CREAT, 0644);\n"
+                           "  if (out >= 0) ::write(out, \"passed\", 6);\n"
+                           "  return ::fcntl(fd, F_DUPFD, 0);\n}\n";
+  const Outcome o = attack(evil);
+  EXPECT_EQ(o.status, "crashed") << o.message;
+  EXPECT_NE(o.message.find("SIGSYS"), std::string::npos) << o.message;
+  const Outcome screened = attack(evil, true);
+  EXPECT_EQ(screened.status, "compile_error");
+  EXPECT_NE(screened.message.find("defines dup"), std::string::npos) << screened.message;
+}
+
+// The preprocessor's other spellings of an include, and the assembler's: the solution's source and the
+// system's files are not in the sandbox to be included.
+TEST_F(Sandbox, IncludesOfAnySpellingFindNothingOfTheGraders) {
+  const std::string right = right_answer();
+  for (const std::string& trick :
+       {std::string("%:include \"renderer/light.cpp\""), std::string("#import \"renderer/light.cpp\""),
+        std::string("#inc\\\nlude \"renderer/light.cpp\""), std::string("#include \"../../renderer/light.cpp\""),
+        std::string("#include \"/etc/passwd\""), std::string("#include \"$SECRET\""),
+        std::string("asm(\".incbin \\\"$SECRET\\\"\");"), std::string("__asm__(\".incbin \\\"/etc/passwd\\\"\");")}) {
+    for (bool screen : {false, true}) {
+      const Outcome o = attack(trick + "\n" + right, screen);
+      EXPECT_EQ(o.status, "compile_error") << trick << (screen ? " (screened)" : "") << ": " << o.message;
+      if (!screen) {
+        EXPECT_TRUE(o.message.find("No such file") != std::string::npos || o.message.find("not found") != std::string::npos)
+            << trick << ": " << o.message;
+      }
+    }
+  }
+}
+
+TEST_F(Sandbox, TheEnvironmentAndTheProcessTableAreEmpty) {
+  const Outcome o = attack(exercise_doing("#include <cstdlib>\n#include <dirent.h>",
+                                          "  if (std::getenv(\"HOME\") || std::getenv(\"TMPDIR\") || std::getenv(\"SHADOWLAB_SETTINGS\"))"
+                                          " return LightView{};\n  ::opendir(\"/proc\");"));
+  EXPECT_EQ(o.status, "crashed") << o.message;  // the environment was empty; listing /proc is not allowed
+  EXPECT_NE(o.message.find("SIGSYS"), std::string::npos) << o.message;
+}
+
+TEST_F(Sandbox, PrintingWithoutEndStopsAtTheOutputLimit) {
+  const Outcome o = attack(exercise_doing("#include <cstdio>", "  for (;;) std::puts(\"spam spam spam spam spam\");"));
+  EXPECT_EQ(o.status, "crashed") << o.message;
+  EXPECT_NE(o.message.find("SIGXFSZ"), std::string::npos) << o.message;
+}
+
+TEST_F(Sandbox, MemoryIsLimited) {
+  const Outcome o = attack(exercise_doing("#include <vector>", "  std::vector<char> big(3ull << 30, 1); if (big[7]) {}"));
+  EXPECT_EQ(o.status, "crashed") << o.message;
+  EXPECT_NE(o.message.find("SIGABRT"), std::string::npos) << o.message;  // std::bad_alloc, not a full machine
+}
+
+TEST_F(Sandbox, AnEndlessLoopTimesOut) {
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome o = attack(exercise_doing("", "  for (volatile int i = 0;; i = i + 1) {}"));
+  EXPECT_EQ(o.status, "timed_out") << o.message;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
+}
+
+// The compiler itself kept to its limits: a preprocessor bomb (2^32 tokens) is stopped, not waited for.
+TEST_F(Sandbox, ACompilerBombIsStopped) {
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome o = attack("#define A(x) x x x x x x x x x x x x x x x x\n#define B(x) A(A(A(A(x))))\n"
+                           "#define C(x) B(B(x))\nint bomb[] = { C(1,) };\n" + right_answer());
+  EXPECT_TRUE(o.status == "timed_out" || o.status == "compile_error") << o.status << ": " << o.message;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60.0);
+}
+
+TEST_F(Sandbox, ALinkedExerciseFileIsRefusedUnread) {
+  const CppExerciseSpec s = spec("", false);
+  const fs::path file = s.source;
+  fs::remove(file);
+  fs::create_symlink(outside_ / "secret.txt", file);
+  try {
+    CppExercise program(s);
+    FAIL() << "a linked exercise was built";
+  } catch (const ExerciseError& e) {
+    EXPECT_EQ(e.status(), "compile_error");
+    EXPECT_NE(std::string(e.what()).find("is a link"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find(secret_), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace shadowlab
