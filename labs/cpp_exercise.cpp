@@ -157,7 +157,8 @@ struct Tools {
     headers = project_headers(pch.string() + ".d");
     headers.push_back(pch);
     if (fs::exists(pch.string() + ".gch")) headers.push_back(pch.string() + ".gch");
-    limits = {spec.compile_seconds, 4ull << 30, spec.compile_seconds, 256ull << 20};
+    // The whole build (compiling and linking) within twice the time of one; each tool within one.
+    limits = {2.0 * spec.compile_seconds, 4ull << 30, spec.compile_seconds, 256ull << 20};
   }
 
   // The files under the project's folder that the precompiled headers were made from (a make rule:
@@ -188,20 +189,27 @@ struct Tools {
   }
 };
 
-void run_tool(const platform::SandboxSpec& sandbox, const std::vector<std::string>& argv, const std::string& what,
-              const fs::path& log, const Tools& tools, const CppExerciseSpec& spec, const fs::path& work) {
-  const platform::SandboxCommand command(sandbox, argv);
-  expect_success(platform::inner_outcome(platform::run_child(command.argv(), tools.limits, log, {}, command.inherited())),
-                 what, log, spec, work);
+// A word for the shell, quoted: every argument of the build script is ours, but paths may hold spaces.
+std::string quoted(const std::string& word) {
+  std::string q = "'";
+  for (char c : word) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
 }
 
-// What a tool printed about the student's object or the host library, which the sandbox holds
-// read-only at /out and /grader.
-std::string list_object(const std::vector<std::string>& argv, const std::string& what, const Tools& tools,
-                        const CppExerciseSpec& spec, const fs::path& work) {
-  const fs::path log = work / "list.log";
-  run_tool(tools.toolchain({{work / "out", "/out"}, {tools.host, "/grader/libhost.a"}}), argv, what, log, tools, spec, work);
-  return read_file(log);
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string line;
+  for (const auto& a : argv) line += (line.empty() ? "" : " ") + quoted(a);
+  return line;
+}
+
+// What the build script left in /out (our work folder's out/): a file the tools wrote, never a link,
+// at most 1 MB of it.
+std::string build_file(const fs::path& out, const std::string& name) {
+  const fs::path p = out / name;
+  if (fs::is_symlink(p) || !fs::is_regular_file(p)) return "";
+  std::string text = read_file(p);
+  if (text.size() > (1u << 20)) text.resize(1u << 20);
+  return text;
 }
 
 // Calls into the grader's code other than the functions the lab offers (the solution is not one).
@@ -276,47 +284,47 @@ void CppExercise::build() {
   if (const std::string& why = platform::sandbox_unavailable(); !why.empty())
     throw std::runtime_error(spec_.display_name + " is not graded: " + why);
   const Tools tools(spec_);
-  // The sandboxes see the student's file as a copy in our work folder, at its place in the project.
+  // The sandbox sees the student's file as a copy in our work folder, at its place in the project.
   const fs::path copy = work_ / "exercise.cpp", out = work_ / "out";
   write_bytes(copy, text);
   fs::create_directory(out);
+  platform::SandboxSpec sandbox = tools.toolchain(
+      {{out, "/out", true}, {tools.host, "/grader/libhost.a"}, {tools.core, "/grader/libcore.a"}});
+  for (const auto& header : tools.headers) sandbox.mounts.push_back({header, header.string()});
+  sandbox.mounts.push_back({copy, (fs::path(kSourceDir) / spec_.display_name).string()});
+  sandbox.chdir = kSourceDir;
 
-  // 1. Compile it alone, with the lab's headers (precompiled) and nothing else of ours.
+  // One sandbox, one script (each sandbox costs a start-up): each step names itself in /out/step and
+  // the first that fails ends it with its status.
   std::vector<std::string> compile = {tools.compiler, "-fno-diagnostics-color", "-fmax-errors=10"};
   std::istringstream flags(SHADOWLAB_EXERCISE_CXX_FLAGS);
   for (std::string f; flags >> f;) compile.push_back(f);
   if (fs::exists(tools.pch.string() + ".gch")) compile.insert(compile.end(), {"-include", tools.pch.string()});
   compile.insert(compile.end(), {"-iquote", kSourceDir, "-c", spec_.display_name, "-o", "/out/exercise.o"});
-  platform::SandboxSpec in_project = tools.toolchain({{out, "/out", true}});
-  for (const auto& header : tools.headers) in_project.mounts.push_back({header, header.string()});
-  in_project.mounts.push_back({copy, (fs::path(kSourceDir) / spec_.display_name).string()});
-  in_project.chdir = kSourceDir;
-  run_tool(in_project, compile, "compiling", work_ / "compile.log", tools, spec_, work_);
-
-  // 2. What the object calls, defines and runs before main: friendly early messages (the sandbox is
-  // the defence).
-  if (spec_.screen) {
-    refuse_calls(list_object({"nm", "-C", "--undefined-only", "/out/exercise.o"}, "listing the symbols", tools, spec_, work_),
-                 spec_);
-    const std::string host = list_object({"nm", "--defined-only", "--extern-only", "/grader/libhost.a"},
-                                         "listing the host's symbols", tools, spec_, work_);
-    refuse_definitions(list_object({"nm", "--defined-only", "--extern-only", "/out/exercise.o"}, "listing the symbols",
-                                   tools, spec_, work_),
-                       host, spec_);
-    static const std::regex init_re(R"(\s(\.init_array|\.preinit_array|\.ctors)\S*\s)");
-    if (std::regex_search(list_object({"objdump", "-h", "/out/exercise.o"}, "listing the sections", tools, spec_, work_),
-                          init_re))
-      throw ExerciseError("compile_error", spec_.display_name +
-                                               ": error: code that runs before the exercise is called (a global object "
-                                               "with a constructor, or a constructor attribute): move it into the function");
-  }
-
-  // 3. Link it, statically, with the lab's host (its main and the protocol) and the renderer's CPU
-  // library: the program then needs nothing but itself to run.
-  run_tool(tools.toolchain({{out, "/out", true}, {tools.host, "/grader/libhost.a"}, {tools.core, "/grader/libcore.a"}}),
-           {tools.compiler, "-static", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp", "-o",
-            "/out/exercise"},
-           "linking", work_ / "link.log", tools, spec_, work_);
+  const std::string script =
+      // 1. Compile it alone, with the lab's headers (precompiled) and nothing else of ours.
+      "echo compiling >/out/step; " + command_line(compile) + " >/out/compiling.log 2>&1 || exit $?\n"
+      // 2. What the object calls, defines and runs before main, for the friendly refusals.
+      "echo listing >/out/step; exec 2>/out/listing.log\n"
+      "nm -C --undefined-only /out/exercise.o >/out/undefined.txt || exit $?\n"
+      "nm --defined-only --extern-only /out/exercise.o >/out/defined.txt || exit $?\n"
+      "nm --defined-only --extern-only /grader/libhost.a >/out/host.txt || exit $?\n"
+      "objdump -h /out/exercise.o >/out/sections.txt || exit $?\n"
+      // 3. Link it, statically, with the lab's host (its main and the protocol) and the renderer's CPU
+      // library: the program then needs nothing but itself to run.
+      "echo linking >/out/step; " +
+      command_line({tools.compiler, "-static", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp",
+                    "-o", "/out/exercise"}) +
+      " >/out/linking.log 2>&1 || exit $?\n";
+  const platform::SandboxCommand command(sandbox, {"/bin/sh", "-c", script});
+  const platform::ChildOutcome built = platform::inner_outcome(
+      platform::run_child(command.argv(), tools.limits, work_ / "build.log", {}, command.inherited()));
+  std::string step = build_file(out, "step");
+  while (!step.empty() && std::isspace(static_cast<unsigned char>(step.back()))) step.pop_back();
+  if (spec_.screen && (step == "linking" || (built.kind == platform::ChildOutcome::Kind::Exited && built.exit_code == 0)))
+    screen_object(out);
+  if (step.empty()) step = "starting the build";
+  expect_success(built, step, out / (step + ".log"), spec_, work_);
 
   // 4. Start it in a sandbox holding only the program, under the computing-only filter: it waits for calls.
   platform::SandboxSpec alone;
@@ -326,6 +334,17 @@ void CppExercise::build() {
   std::string error;
   const platform::ChildLimits limits{0.0, 1ull << 30, 0.0, kLogBytes};
   if (!child_.start(run.argv(), limits, work_ / "run.log", error, run.inherited())) throw std::runtime_error(error);
+}
+
+// The friendly refusals of what the object calls, defines and runs before main, from the build's lists.
+void CppExercise::screen_object(const fs::path& out) const {
+  refuse_calls(build_file(out, "undefined.txt"), spec_);
+  refuse_definitions(build_file(out, "defined.txt"), build_file(out, "host.txt"), spec_);
+  static const std::regex init_re(R"(\s(\.init_array|\.preinit_array|\.ctors)\S*\s)");
+  if (std::regex_search(build_file(out, "sections.txt"), init_re))
+    throw ExerciseError("compile_error", spec_.display_name +
+                                             ": error: code that runs before the exercise is called (a global object "
+                                             "with a constructor, or a constructor attribute): move it into the function");
 }
 
 void CppExercise::call_raw(const void* request, std::size_t request_size, void* reply, std::size_t reply_size) {

@@ -77,6 +77,7 @@ class CppExercise {
  private:
   void call_raw(const void* request, std::size_t request_size, void* reply, std::size_t reply_size);
   void build();
+  void screen_object(const std::filesystem::path& out) const;
 
   CppExerciseSpec spec_;
   std::filesystem::path work_;
