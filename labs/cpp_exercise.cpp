@@ -311,9 +311,11 @@ void CppExercise::build() {
       "nm --defined-only --extern-only /grader/libhost.a >/out/host.txt || exit $?\n"
       "objdump -h /out/exercise.o >/out/sections.txt || exit $?\n"
       // 3. Link it, statically, with the lab's host (its main and the protocol) and the renderer's CPU
-      // library: the program then needs nothing but itself to run.
+      // library: the program then needs nothing but itself to run. Only what it calls is kept (the core
+      // has a section per function): the labs' solutions, which share files with the functions an
+      // exercise may call, are not in the program for it to find.
       "echo linking >/out/step; " +
-      command_line({tools.compiler, "-static", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp",
+      command_line({tools.compiler, "-static", "-Wl,--gc-sections", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp",
                     "-o", "/out/exercise"}) +
       " >/out/linking.log 2>&1 || exit $?\n";
   const platform::SandboxCommand command(sandbox, {"/bin/sh", "-c", script});

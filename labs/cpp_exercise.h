@@ -66,6 +66,9 @@ class CppExercise {
     call_raw(&request, sizeof request, &reply, sizeof reply);
     return reply;
   }
+  // The program as built (for tests that look inside it).
+  std::filesystem::path program() const { return work_ / "out" / "exercise"; }
+
   // Many requests in one exchange (one round trip instead of one each), within the same time limit.
   template <typename Reply, typename Request>
   std::vector<Reply> call_many(const std::vector<Request>& requests) {

@@ -29,10 +29,9 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
+// A right answer of the exam corpus, written with the offered orthonormal_basis.
 std::string right_answer() {
-  for (const auto& e : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/02_ortho_fit/right"))
-    return read_text(e.path());
-  return "";
+  return read_text(fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/02_ortho_fit/right/lookat_basis_up__exercise.cpp");
 }
 
 // Everything under `dir` with its bytes: what "nothing was written" compares.
@@ -95,16 +94,19 @@ class Sandbox : public ::testing::Test {
     return source;
   }
 
-  CppExerciseSpec spec(const std::string& source, bool screen) {
-    const fs::path file = root_ / "submission/labs/02_ortho_fit/exercise.cpp";
+  // Lab 2's exercise (or, with `host` "12_cascaded_shadow_maps", lab 12's) holding `source`.
+  CppExerciseSpec spec(const std::string& source, bool screen, const std::string& host = "02_ortho_fit") {
+    const std::string name = "labs/" + host + "/exercise.cpp";
+    const fs::path file = root_ / "submission" / name;
     fs::create_directories(file.parent_path());
     std::ofstream(file, std::ios::binary) << expand(source);
     CppExerciseSpec s;
     s.source = file;
-    s.display_name = "labs/02_ortho_fit/exercise.cpp";
-    s.host = "02_ortho_fit";
-    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "renderer/light.h", "renderer/scene.h"};
-    s.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho"};
+    s.display_name = name;
+    s.host = host;
+    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "labs/12_cascaded_shadow_maps/cascades_lab.h", "renderer/light.h",
+                 "renderer/scene.h", "renderer/cascades.h", "renderer/params.h"};
+    s.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho", "shadowlab::direction_from_angles"};
     s.screen = screen;
     s.compile_seconds = 20.0;
     s.call_seconds = 3.0;
@@ -143,6 +145,24 @@ class Sandbox : public ::testing::Test {
 TEST_F(Sandbox, ARightAnswerBuildsAndAnswersInside) {
   const Outcome o = attack(right_answer());
   EXPECT_EQ(o.status, "answered") << o.message;
+}
+
+// The program holds only the core functions it calls: not the solution (fit_light_ortho, in the same
+// file as the offered orthonormal_basis), which an answer could otherwise reach through a function
+// pointer at a known distance from an offered function's address.
+// Lab 12's likewise: practical_splits and fit_cascade_sphere (renderer/cascades.cpp).
+TEST_F(Sandbox, TheSolutionIsNotInTheProgram) {
+  const fs::path answers = fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/12_cascaded_shadow_maps/right";
+  for (const auto& [host, source] : {std::pair<std::string, std::string>{"02_ortho_fit", right_answer()},
+                                     {"12_cascaded_shadow_maps", read_text(answers / "round_to_nearest__exercise.cpp")}}) {
+    CppExercise program(spec(source, true, host));
+    const fs::path symbols = root_ / "symbols.txt";
+    ASSERT_EQ(platform::run_child({"nm", "-C", program.program().string()}, {30.0, 0, 0.0, 0}, symbols).exit_code, 0);
+    const std::string listed = read_text(symbols);
+    EXPECT_NE(listed.find("shadowlab::orthonormal_basis"), std::string::npos) << host;  // what it calls is there
+    for (const char* solution : {"fit_light_ortho", "practical_splits", "fit_cascade_sphere"})
+      EXPECT_EQ(listed.find(solution), std::string::npos) << host << ": " << solution << " was linked in";
+  }
 }
 
 // The exercise's own function, doing `body` before it answers.
