@@ -1,7 +1,6 @@
 #include "labs/cpp_exercise.h"
 
 #include <algorithm>
-#include <csignal>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -96,7 +95,7 @@ void expect_success(const platform::ChildOutcome& o, const std::string& what, co
                     const CppExerciseSpec& spec, const fs::path& work) {
   using Kind = platform::ChildOutcome::Kind;
   if (o.kind == Kind::NotStarted) throw std::runtime_error(what + ": " + o.error);
-  if (o.kind == Kind::TimedOut || (o.kind == Kind::Signalled && o.signal == SIGXCPU))
+  if (o.kind == Kind::TimedOut || platform::stopped_at_cpu_limit(o, spec.compile_seconds))
     throw ExerciseError("timed_out", spec.display_name + ": " + what + " took longer than " +
                                          std::to_string(static_cast<int>(spec.compile_seconds)) + " s");
   if (o.kind == Kind::Exited && o.exit_code == 0) return;

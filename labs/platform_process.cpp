@@ -205,6 +205,11 @@ std::string describe_signal(int signal) {
   return "signal " + std::to_string(signal) + (text ? std::string(" (") + text + ")" : "");
 }
 
+bool stopped_at_cpu_limit(const ChildOutcome& o, double cpu_limit_seconds) {
+  return o.kind == ChildOutcome::Kind::Signalled &&
+         (o.signal == SIGXCPU || (o.signal == SIGKILL && cpu_limit_seconds > 0 && o.cpu_seconds >= cpu_limit_seconds));
+}
+
 ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits& limits, const fs::path& log_file,
                        const std::map<std::string, std::string>& env, const std::vector<int>& inherit) {
   ChildOutcome outcome;
@@ -385,6 +390,8 @@ bool confine_to_computing(std::string& error) {
 }
 
 std::string describe_signal(int signal) { return "signal " + std::to_string(signal); }
+
+bool stopped_at_cpu_limit(const ChildOutcome&, double) { return false; }
 
 void die_with_parent() {}
 

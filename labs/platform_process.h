@@ -89,6 +89,10 @@ bool confine_to_computing(std::string& error);
 // "SIGSEGV (segmentation fault)".
 std::string describe_signal(int signal);
 
+// Whether a child was stopped by its CPU-time limit: SIGXCPU, or SIGKILL once past `cpu_limit_seconds`
+// (the hard limit, 5 s after the soft one). Elsewhere: false.
+bool stopped_at_cpu_limit(const ChildOutcome& o, double cpu_limit_seconds);
+
 // From now on this process dies (SIGKILL) when its parent does: a task started by GNU parallel or a
 // Slurm script leaves nothing behind when they are killed. Linux: PR_SET_PDEATHSIG; elsewhere a no-op
 // (the parent's process-group or job-object kill covers it).
