@@ -141,6 +141,15 @@ fs::path keep_aside(const fs::path& path, const std::string& text, bool copy) {
   throw platform::FileError(platform::FileProblem::Io, "no free name for a backup beside it");
 }
 
+// Copies `text`, the file at `path` as it was read, aside; says where, for a warning.
+std::string keep_copy_aside(const fs::path& path, const std::string& text) {
+  try {
+    return ", the file as it was is kept as " + printable(keep_aside(path, text, /*copy=*/true).string(), 400);
+  } catch (const platform::FileError& e) {
+    return std::string(" (no copy of the file as it was: ") + e.what() + ")";
+  }
+}
+
 }  // namespace
 
 std::string camera_problem(const nlohmann::json& camera) {
@@ -174,61 +183,101 @@ fs::path default_settings_path() {
   return folder.empty() ? fs::path() : folder / "settings.json";
 }
 
+namespace {
+
+// What a settings file holds, read as load() reads it.
+struct FileContents {
+  std::string text;
+  nlohmann::json doc;                 // usable as a whole when `problem` is empty
+  std::string problem;                // why the file cannot be used as a whole ("is not valid JSON")
+  std::vector<std::string> dropped;   // the entries taken out of `doc` (see drop_bad_entries)
+};
+
+// Reads and checks `path`. Throws platform::FileError when it cannot be read (missing, a FIFO, a
+// folder, not ours to read); a file too large to be ours comes back with its problem instead.
+FileContents read_settings(const fs::path& path) {
+  FileContents f;
+  try {
+    f.text = platform::read_regular_file(path, kMaxSettingsBytes);
+  } catch (const platform::FileError& e) {
+    if (e.problem() != platform::FileProblem::TooLarge) throw;
+    f.problem = e.what();
+    return f;
+  }
+  f.doc = parse_bounded(f.text, f.dropped);  // an empty file (what a truncating crash leaves) does not parse
+  f.problem = f.doc.is_discarded() ? "is not valid JSON" : file_problem(f.doc);
+  if (f.problem.empty())
+    for (std::string& d : drop_bad_entries(f.doc)) f.dropped.push_back(std::move(d));
+  return f;
+}
+
+std::string dropped_list(const std::vector<std::string>& dropped) {
+  std::string list;
+  for (std::size_t i = 0; i < dropped.size() && i < 8; ++i) list += (i ? "; " : "") + dropped[i];
+  if (dropped.size() > 8) list += "; and " + std::to_string(dropped.size() - 8) + " more";
+  return list;
+}
+
+// Whether save() merges the entries under `key` one by one (the labs, a lab's entry, its presets) at
+// this depth, rather than as one value (a lab's params, one preset, the camera).
+bool merged_by_entry(int depth, const std::string& key) {
+  return (depth == 0 && key == "labs") || depth == 1 || (depth == 2 && key == "presets");
+}
+
+// Puts into `disk` what `mine` changed from `base` (what this window last loaded or saved): the entries
+// it added or changed, and removes those it removed. Entries this window left alone keep what is on
+// disk, which another window may have saved meanwhile.
+void merge_changes(nlohmann::json& disk, const nlohmann::json& base, const nlohmann::json& mine, int depth = 0) {
+  static const nlohmann::json none = nlohmann::json::object();
+  for (const auto& [key, value] : mine.items()) {
+    const nlohmann::json& was = base.is_object() && base.contains(key) ? base[key] : none;
+    if (base.is_object() && base.contains(key) && was == value) continue;  // unchanged here
+    if (merged_by_entry(depth, key) && value.is_object() && disk.contains(key) && disk[key].is_object())
+      merge_changes(disk[key], was, value, depth + 1);
+    else
+      disk[key] = value;
+  }
+  if (!base.is_object()) return;
+  for (const auto& [key, value] : base.items())
+    if (!mine.contains(key)) disk.erase(key);
+}
+
+}  // namespace
+
 Settings Settings::load(const fs::path& path) {
   Settings s;
   s.path_ = path;
   if (path.empty()) return s;
   const std::string shown = printable(path.string(), 400);
-  std::string text, problem;
+  FileContents f;
   try {
-    text = platform::read_regular_file(path, kMaxSettingsBytes);
+    f = read_settings(path);
   } catch (const platform::FileError& e) {
-    using platform::FileProblem;
-    if (e.problem() == FileProblem::NotFound) return s;  // first run
-    if (e.problem() != FileProblem::TooLarge) {
-      // A FIFO, a folder, a file we may not read: not necessarily bad; never replace what we could not read.
-      s.may_write_ = false;
-      s.warning_ = shown + ": cannot read: " + e.what() + "; defaults are used and settings will not be saved";
-      return s;
-    }
-    problem = e.what();
-  }
-
-  std::vector<std::string> dropped;
-  nlohmann::json doc;
-  if (problem.empty()) {
-    doc = parse_bounded(text, dropped);  // an empty file (what a truncating crash leaves) does not parse
-    problem = doc.is_discarded() ? "is not valid JSON" : file_problem(doc);
-  }
-  if (problem.empty()) {
-    for (std::string& d : drop_bad_entries(doc)) dropped.push_back(std::move(d));
-    s.doc_ = std::move(doc);
-    s.saved_ = s.doc_;
-    if (dropped.empty()) return s;
-    // Each bad entry is dropped alone; the file as it was is kept beside it, and the next save writes
-    // the rest back (dirty() is true until then).
-    std::string list;
-    for (std::size_t i = 0; i < dropped.size() && i < 8; ++i) list += (i ? "; " : "") + dropped[i];
-    if (dropped.size() > 8) list += "; and " + std::to_string(dropped.size() - 8) + " more";
-    s.saved_ = nullptr;
-    try {
-      const fs::path backup = keep_aside(path, text, /*copy=*/true);
-      s.warning_ = shown + ": dropped what this build cannot use (" + list + "); the other settings are kept, " +
-                   "the file as it was is kept as " + printable(backup.string(), 400);
-    } catch (const platform::FileError& e) {
-      s.warning_ = shown + ": dropped what this build cannot use (" + list + "); the other settings are kept " +
-                   "(no copy of the file as it was: " + e.what() + ")";
-    }
+    if (e.problem() == platform::FileProblem::NotFound) return s;  // first run
+    // A FIFO, a folder, a file we may not read: not necessarily bad; never replace what we could not read.
+    s.may_write_ = false;
+    s.warning_ = shown + ": cannot read: " + e.what() + "; defaults are used and settings will not be saved";
     return s;
   }
-
+  if (f.problem.empty()) {
+    s.doc_ = std::move(f.doc);
+    s.saved_ = s.doc_;
+    if (f.dropped.empty()) return s;
+    // Each bad entry is dropped alone; the file as it was is kept beside it, and the next save writes
+    // the rest back (dirty() is true until then).
+    s.saved_ = nullptr;
+    s.warning_ = shown + ": dropped what this build cannot use (" + dropped_list(f.dropped) + "); the other settings are kept" +
+                 keep_copy_aside(path, f.text);
+    s.copied_aside_ = std::move(f.text);
+    return s;
+  }
   // Keep the bad file: the user may want what is in it, and a newer build may be able to read it.
   try {
-    const fs::path backup = keep_aside(path, text, /*copy=*/false);
-    s.warning_ = shown + ": " + problem + "; kept as " + printable(backup.string(), 400) + ", defaults are used";
+    const fs::path backup = keep_aside(path, f.text, /*copy=*/false);
+    s.warning_ = shown + ": " + f.problem + "; kept as " + printable(backup.string(), 400) + ", defaults are used";
   } catch (const platform::FileError& e) {
     s.may_write_ = false;
-    s.warning_ = shown + ": " + problem + "; it could not be moved aside (" + e.what() +
+    s.warning_ = shown + ": " + f.problem + "; it could not be moved aside (" + e.what() +
                  "), so it is left untouched, defaults are used and settings will not be saved";
   }
   return s;
@@ -311,7 +360,30 @@ void Settings::delete_preset(int lab, const std::string& name) {
   }
 }
 
-void Settings::save() const {
+// The settings on disk as save() finds them, under its lock: what load() would make of them. A file
+// that cannot be used as a whole is moved aside (never written over) and saving starts afresh; one
+// with bad entries is copied aside and its good entries kept. One that cannot be read is not replaced.
+nlohmann::json Settings::read_for_merge(const fs::path& target) {
+  const std::string shown = printable(target.string(), 400);
+  FileContents f;
+  try {
+    f = read_settings(target);
+  } catch (const platform::FileError& e) {
+    if (e.problem() == platform::FileProblem::NotFound) return {{"version", kSettingsVersion}, {"labs", nlohmann::json::object()}};
+    throw std::runtime_error(shown + ": settings not saved: cannot read the file to merge into: " + e.what());
+  }
+  if (!f.problem.empty()) {
+    const fs::path backup = keep_aside(target, f.text, /*copy=*/false);  // throws: then nothing is written
+    warning_ = shown + ": " + f.problem + " when saving; kept as " + printable(backup.string(), 400);
+    return {{"version", kSettingsVersion}, {"labs", nlohmann::json::object()}};
+  }
+  if (!f.dropped.empty() && f.text != copied_aside_)  // not the file load() copied aside already
+    warning_ = shown + ": dropped what this build cannot use when saving (" + dropped_list(f.dropped) + ")" +
+               keep_copy_aside(target, f.text);
+  return std::move(f.doc);
+}
+
+void Settings::save() {
   if (path_.empty()) return;
   if (!may_write_) throw std::runtime_error(path_.string() + ": settings not saved: the existing file was left untouched (see the warning at start)");
   // A settings file that is a symlink (dotfile managers) stays one: write where it points.
@@ -322,11 +394,19 @@ void Settings::save() const {
   if (ec || !fs::is_directory(folder))
     throw std::runtime_error(target.string() + ": cannot create the settings folder " + folder.string() +
                              (ec ? ": " + ec.message() : std::string()));
-  // Invalid UTF-8 (a preset name) is replaced rather than thrown on, so one bad name cannot block saving.
-  // A temporary file of its own (two windows saving at once never share one), synced, then renamed.
+  // Another window may have saved since this one loaded: under the lock, what is on disk now gets this
+  // window's changes merged in (its labs' entries, its presets, the camera when it moved it), written to
+  // a temporary file of its own, synced, then renamed. The lock file beside it is never renamed.
+  fs::path lock_file = target;
+  lock_file += ".lock";
   try {
-    platform::write_file_atomic(target, doc_.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
+    const platform::FileLock lock(lock_file);
+    nlohmann::json merged = read_for_merge(target);
+    merge_changes(merged, saved_, doc_);
+    // Invalid UTF-8 (a preset name) is replaced rather than thrown on, so one bad name cannot block saving.
+    platform::write_file_atomic(target, merged.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
                                 /*durable=*/true, before_rename_for_tests);
+    doc_ = std::move(merged);
   } catch (const platform::FileError& e) {
     throw std::runtime_error(target.string() + ": cannot write settings: " + e.what());
   }

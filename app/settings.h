@@ -5,10 +5,12 @@
 //   file      $SHADOWLAB_SETTINGS, else settings.json in the user's config folder: on Linux
 //             $XDG_CONFIG_HOME/shadowlab/, else ~/.config/shadowlab/; on macOS
 //             ~/Library/Application Support/shadowlab/; on Windows in %APPDATA%\shadowlab
-//   writing   to a temporary file of its own beside it (.settings.json.tmp-<random>, created
-//             exclusively, so two windows saving at once never share one), flushed to disk, then
-//             renamed over the old file: a reader (or the next run after a crash) sees the old file or
-//             the new one, never half of one
+//   writing   under an exclusive lock (settings.json.lock beside it), the file is read again and only
+//             what this window changed is merged into it (see save()), so two windows keep each
+//             other's labs; then to a temporary file of its own beside it (.settings.json.tmp-<random>,
+//             created exclusively, so two windows saving at once never share one), flushed to disk,
+//             then renamed over the old file: a reader (or the next run after a crash) sees the old file
+//             or the new one, never half of one
 //   bad file  one that cannot be used as a whole (not JSON, not an object, no version number, a version
 //             this build does not know, "labs" not an object, larger than 4 MiB) is moved aside once to
 //             settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
@@ -77,9 +79,13 @@ class Settings {
   void store_camera(const std::string& scene, const OrbitCamera& camera);
   std::optional<OrbitCamera> camera(const std::string& scene) const;
 
-  // Writes the file atomically (creating its folder). Throws std::runtime_error with one line naming
-  // the file and the reason when it cannot; the previous file is then left as it was.
-  void save() const;
+  // Merges this object's changes since it was loaded or last saved (the labs' entries and presets it
+  // stored, changed or deleted, the camera) into the file as it is on disk now, under an exclusive lock
+  // (settings.json.lock beside it), and writes the result atomically (creating its folder): two windows
+  // on one file keep both their labs. Afterwards document() is the merged whole. Throws
+  // std::runtime_error with one line naming the file and the reason when it cannot; the previous file
+  // is then left as it was. A file found unusable when saving is moved aside first, never written over.
+  void save();
   // True when the in-memory settings differ from what was last loaded or saved.
   bool dirty() const { return doc_ != saved_; }
 
@@ -90,12 +96,15 @@ class Settings {
 
  private:
   nlohmann::json& lab_entry(int lab);
+  nlohmann::json read_for_merge(const std::filesystem::path& target);
   const nlohmann::json* find_lab_entry(int lab) const;
 
   std::filesystem::path path_;
   std::string warning_;
   nlohmann::json doc_ = {{"version", kSettingsVersion}, {"labs", nlohmann::json::object()}};
-  mutable nlohmann::json saved_ = doc_;
+  nlohmann::json saved_ = doc_;  // as last loaded or saved: what save() tells this object's changes from
+  // The text of the file load() found bad entries in and copied aside (saving does not copy it again).
+  std::string copied_aside_;
   // False when a bad file could not be moved aside: saving would overwrite the only copy of it.
   bool may_write_ = true;
 };

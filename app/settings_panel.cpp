@@ -48,7 +48,13 @@ void SettingsSession::keep_camera(const std::string& scene, const OrbitCamera& c
 
 void SettingsSession::save_now() {
   try {
+    const std::string before = settings_.warning();
     settings_.save();
+    // A file another program broke since the start is moved aside when saving: said like a bad file at start.
+    if (settings_.warning() != before) {
+      message_ = settings_.warning();
+      std::fprintf(stderr, "shadowlab: warning: %s\n", message_.c_str());
+    }
   } catch (const std::exception& e) {
     if (message_ != e.what()) std::fprintf(stderr, "shadowlab: %s\n", e.what());
     message_ = e.what();

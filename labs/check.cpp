@@ -205,7 +205,7 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
     const auto path = std::filesystem::absolute(folder / file);
     // Not the grader's fault, and not to be graded as the stock file: the student's answer is missing.
     if (!std::filesystem::is_regular_file(path))
-      throw BuildError(file + ": not in the submission " + folder.string() + " (lay it out like the project: " + file + ")");
+      throw BuildError(file + ": not in the submission (lay it out like the project: " + file + ")");
     graded.push_back(path);
   }
 }

@@ -34,9 +34,12 @@ Features Lab::hooks_for(const SlotFiles& files) const {
                                 " exercise files, not " + std::to_string(files.size()));
   Features hooks = make_hooks(files);
   hooks.include_rules.offered = offered_includes;
-  for (std::size_t i = 0; i < files.size(); ++i)
+  for (std::size_t i = 0; i < files.size(); ++i) {
     if (i >= solution_files.size() || files[i] != std::filesystem::path(solution_files[i]))
       hooks.include_rules.confined.insert(files[i]);
+    // Messages name a slot's file as the exercise file the student edits, wherever the graded copy sits.
+    if (files[i] != std::filesystem::path(exercise_files[i])) hooks.include_rules.shown_as[files[i]] = exercise_files[i];
+  }
   return hooks;
 }
 

@@ -67,7 +67,8 @@ struct Lab {
   // The lab's features with these files in its exercise slots.
   std::function<Features(const SlotFiles&)> make_hooks;
   SlotFiles files(Impl impl) const;
-  // make_hooks, with every slot file that is not the solution's confined to offered_includes.
+  // make_hooks, with every slot file that is not the solution's confined to offered_includes, and
+  // named in messages as the exercise file of its slot (IncludeRules::shown_as).
   Features hooks_for(const SlotFiles& files) const;
   Features hooks(Impl impl) const { return hooks_for(files(impl)); }
   // What the lab adds to `shadowlab bench` (none: the bench does not measure it).

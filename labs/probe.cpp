@@ -162,6 +162,7 @@ std::vector<std::vector<float>> run_probe(const Features& hooks, const ProbeRequ
   if (cases == 0) return std::vector<std::vector<float>>(passes);
   if (!request.in1.empty() && request.in1.size() != cases) throw std::invalid_argument("probe: in0 and in1 differ in size");
   ProgramDesc desc{"shaders/fullscreen.vert", {}, request.fragment, {}, {}, hooks.include_rules};
+  if (hooks.own_shadow_coords) desc.defines.emplace_back(kOwnShadowCoordsDefine, "1");
   for (const auto& [name, file] : Renderer::default_includes(hooks.technique, hooks.light.value_or(LightType::Directional)))
     desc.includes[name] = file;
   for (const auto& [name, file] : hooks.includes) desc.includes[name] = file;

@@ -33,7 +33,7 @@ void set_material_define(ProgramDesc& d, bool on) {
 }
 
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
-                     LitVariant variant, bool materials, bool flashlight) {
+                     LitVariant variant, bool materials, bool flashlight, bool own_shadow_coords) {
   const bool remap = is_overlay(variant);
   const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
                          : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
@@ -45,8 +45,13 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (flashlight && variant == LitVariant::Lit) d.defines.emplace_back("FLASHLIGHT", "1");
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
+  if (own_shadow_coords && !remap) d.defines.emplace_back(kOwnShadowCoordsDefine, "1");
   set_material_define(d, materials);
   return d;
+}
+
+bool defines(const ProgramDesc& desc, const char* name) {
+  return std::any_of(desc.defines.begin(), desc.defines.end(), [&](const auto& d) { return d.first == name; });
 }
 
 void resolve(const ReloadableProgram& program, LitUniforms& u) {
@@ -90,6 +95,9 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
     u.csm.far[i] = Uniform(id, ("u_csm_far" + at).c_str());
     u.csm.texel_depth[i] = Uniform(id, ("u_csm_texel_depth" + at).c_str());
   }
+  // A lab test that maps into the shadow map itself gets no matrix that does it (set() on no location
+  // does nothing): declaring the uniform gives it zeros.
+  if (defines(program.desc(), kOwnShadowCoordsDefine)) u.light_tex_matrix = Uniform();
   u.csm.near = Uniform(id, "u_csm_near");
   u.csm.count = Uniform(id, "u_csm_count");
   u.csm.camera_view = Uniform(id, "u_csm_camera_view");
@@ -104,7 +112,7 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
 }  // namespace
 
 bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-                    const std::vector<LitVariant>& variants, bool flashlight) {
+                    const std::vector<LitVariant>& variants, bool flashlight, bool own_shadow_coords) {
   bool ok = true;
   for (LitVariant variant : variants)
     for (bool gbuffer : {false, true}) {
@@ -112,7 +120,8 @@ bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, Light
       Slot& slot = programs_[{variant, gbuffer}];
       slot.specialised.clear();  // built from the old includes; made again when drawn
       slot.failed.clear();
-      slot.generic.program.set_desc(lit_desc(includes, rules, gbuffer, light, variant, materials_, flashlight));
+      slot.generic.program.set_desc(
+          lit_desc(includes, rules, gbuffer, light, variant, materials_, flashlight, own_shadow_coords));
       ok = slot.generic.program.rebuild() && ok;
     }
   return ok;

@@ -28,6 +28,13 @@
 #include <cstdlib>
 #if defined(_WIN32)
 #include <io.h>  // _isatty, _fileno
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#include <windows.h>  // LockFileEx
 #else
 #include <unistd.h>  // isatty
 #endif
@@ -346,6 +353,21 @@ bool lock_folder(const fs::path& dir, std::string* holder) {
   return true;
 }
 
+FileLock::FileLock(const fs::path& path) {
+  Fd fd(::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666));
+  if (fd.get() < 0) fail_errno(errno, "cannot open the lock file");
+  struct stat st {};
+  if (::fstat(fd.get(), &st) != 0) fail_errno(errno);
+  require_regular(st.st_mode);
+  while (::flock(fd.get(), LOCK_EX) != 0)
+    if (errno != EINTR) fail_errno(errno, "cannot lock");
+  handle_ = fd.release();
+}
+
+FileLock::~FileLock() {
+  if (handle_ >= 0) ::close(static_cast<int>(handle_));  // closing the descriptor releases the lock
+}
+
 bool rename_no_replace(const fs::path& from, const fs::path& to) {
   // link() fails when `to` exists, where rename() would replace it; then the old name goes.
   if (::link(from.c_str(), to.c_str()) == 0) {
@@ -479,6 +501,32 @@ void probe_writable(const fs::path& dir) {
 }
 
 bool lock_folder(const fs::path&, std::string*) { return true; }
+
+#if defined(_WIN32)
+FileLock::FileLock(const fs::path& path) {
+  const HANDLE h = ::CreateFileW(path.c_str(), GENERIC_READ | GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE,
+                                 nullptr, OPEN_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr);
+  if (h == INVALID_HANDLE_VALUE) throw FileError(FileProblem::Io, "cannot open the lock file (error " + std::to_string(::GetLastError()) + ")");
+  OVERLAPPED whole{};  // from offset 0, the largest range: the whole file, whatever its size
+  if (!::LockFileEx(h, LOCKFILE_EXCLUSIVE_LOCK, 0, MAXDWORD, MAXDWORD, &whole)) {
+    const DWORD e = ::GetLastError();
+    ::CloseHandle(h);
+    throw FileError(FileProblem::Io, "cannot lock (error " + std::to_string(e) + ")");
+  }
+  handle_ = reinterpret_cast<std::intptr_t>(h);
+}
+
+FileLock::~FileLock() {
+  if (handle_ == -1) return;
+  const HANDLE h = reinterpret_cast<HANDLE>(handle_);
+  OVERLAPPED whole{};
+  ::UnlockFileEx(h, 0, MAXDWORD, MAXDWORD, &whole);
+  ::CloseHandle(h);
+}
+#else
+FileLock::FileLock(const fs::path&) {}
+FileLock::~FileLock() = default;
+#endif
 
 bool rename_no_replace(const fs::path& from, const fs::path& to) {
   std::error_code ec;

@@ -88,6 +88,22 @@ void probe_writable(const std::filesystem::path& dir);
 // lock file cannot be made. The portable fallback does not lock (it returns true).
 bool lock_folder(const std::filesystem::path& dir, std::string* holder);
 
+// An exclusive lock on the file `path` (created when missing, empty, never through a link), held from
+// construction, which waits for it, to destruction; a process that dies releases it. Two FileLocks on
+// one file exclude each other also within one process (flock on its own descriptor; LockFileEx on
+// Windows). Lock a file that is never renamed or replaced (not the file the lock guards, when that is
+// written by rename). Throws FileError. The portable fallback without Windows does not lock.
+class FileLock {
+ public:
+  explicit FileLock(const std::filesystem::path& path);
+  ~FileLock();
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  std::intptr_t handle_ = -1;  // a descriptor, or a Windows HANDLE
+};
+
 // Renames `from` to `to` unless `to` exists (then returns false and changes nothing). Throws FileError.
 bool rename_no_replace(const std::filesystem::path& from, const std::filesystem::path& to);
 

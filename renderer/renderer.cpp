@@ -172,7 +172,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, features.include_rules, light, variants, features.flashlight);
+  bool ok = lit_->build(includes, features.include_rules, light, variants, features.flashlight, features.own_shadow_coords);
   std::unique_ptr<DepthMapPass> flash;
   if (features.flashlight) {
     flash = std::make_unique<DepthMapPass>("flashlight shadow");

@@ -93,7 +93,17 @@ struct Features {
   // (default shaders/shadow/combine_lights.glsl). With the techniques that have a map (not shadow
   // volumes); billboards cast no shadow from it.
   bool flashlight = false;
+  // The lab's shadow test maps world space into the shadow map itself, from u_light_view_proj (lab 0's
+  // lesson: the bias matrix). Its programs are then compiled with OWN_SHADOW_COORDS
+  // (kOwnShadowCoordsDefine): none of what would hand it that mapping is in them, not
+  // shaders/shadow/common.glsl's shadow_coords() and outside_shadow_map(), nor lit.vert's interpolated
+  // v_light_tex, nor u_light_tex_matrix, which the lit pass then leaves unset (a test that declares it
+  // reads zeros). Probes (labs/probe.h) compile the lab's test the same way.
+  bool own_shadow_coords = false;
 };
+
+// The define Features::own_shadow_coords compiles the lit pass's and the probes' programs with.
+inline constexpr const char* kOwnShadowCoordsDefine = "OWN_SHADOW_COORDS";
 
 struct FrameRequest {
   OrbitCamera camera;

@@ -28,6 +28,20 @@ namespace {
 
 fs::path resolve(const fs::path& p) { return p.is_absolute() ? p : data_dir() / p; }
 
+// IncludeRules::shown_as by the files' resolved, canonical paths (what the expander reads).
+using ShownNames = std::map<fs::path, std::string>;
+ShownNames shown_names(const IncludeRules& rules) {
+  ShownNames out;
+  for (const auto& [file, name] : rules.shown_as) out[fs::weakly_canonical(resolve(file))] = name;
+  return out;
+}
+
+// How messages name `path`: its IncludeRules::shown_as name, else relative to the data folder.
+std::string shown_name(const fs::path& path, const ShownNames& names) {
+  if (auto it = names.find(fs::weakly_canonical(path)); it != names.end()) return it->second;
+  return display_path(path);
+}
+
 // Shader sources may come from a student's submission: only regular files are read (a FIFO or a device
 // would block or never end), and none larger than any shader could be.
 constexpr std::uint64_t kMaxShaderBytes = 1u << 20;
@@ -65,9 +79,14 @@ struct Expander {
   std::string& error;
   std::set<fs::path> included;  // include-once, so shared helpers can be included from several files
   std::set<fs::path> confined;  // desc.rules.confined, canonical
+  ShownNames names;             // desc.rules.shown_as, canonical
 
-  static std::string where(const fs::path& path, int line_no) {
-    return display_path(path) + ":" + std::to_string(line_no) + ":1: error: ";
+  std::string shown(const fs::path& path) const { return shown_name(path, names); }
+  // "file:line:col: error: ", the column (from 1) that of the include's name (its opening quote).
+  std::string where(const fs::path& path, int line_no, const std::string& line) const {
+    const std::size_t quote = line.find('"');
+    const std::size_t column = quote == std::string::npos ? 1 : quote + 1;
+    return shown(path) + ":" + std::to_string(line_no) + ":" + std::to_string(column) + ": error: ";
   }
   static std::string quote(int line_no, const std::string& line) {
     return "\n    " + std::to_string(line_no) + " | " + printable(line);
@@ -77,12 +96,12 @@ struct Expander {
   fs::path include_target(const fs::path& path, int line_no, const std::string& line, const std::string& name) {
     const fs::path as_path(name);
     if (as_path.is_absolute() || as_path.has_root_name() || as_path.has_root_directory()) {
-      error = where(path, line_no) + "#include \"" + printable(name) + "\": an absolute path is not allowed" + quote(line_no, line);
+      error = where(path, line_no, line) + "#include \"" + printable(name) + "\": an absolute path is not allowed" + quote(line_no, line);
       return {};
     }
     for (const auto& part : as_path)
       if (part == "..") {
-        error = where(path, line_no) + "#include \"" + printable(name) + "\": a path may not leave its folder (..)" +
+        error = where(path, line_no, line) + "#include \"" + printable(name) + "\": a path may not leave its folder (..)" +
                 quote(line_no, line);
         return {};
       }
@@ -94,7 +113,7 @@ struct Expander {
       if (!desc.rules.offered.count(name) || !desc.includes.count(name)) {
         std::string offered;
         for (const auto& o : desc.rules.offered) offered += (offered.empty() ? "" : ", ") + ("\"" + o + "\"");
-        error = where(path, line_no) + "#include \"" + printable(name) + "\" is not offered by this lab; your file may include " +
+        error = where(path, line_no, line) + "#include \"" + printable(name) + "\" is not offered by this lab; your file may include " +
                 (offered.empty() ? std::string("nothing") : offered) + quote(line_no, line);
         return {};
       }
@@ -107,12 +126,12 @@ struct Expander {
   // Appends the expanded text of `path` to `out`; returns false on error.
   bool expand(const fs::path& path, std::ostringstream& out, bool top, int depth) {
     if (depth > 16) {
-      error = display_path(path) + ": includes nested more than 16 deep (an include cycle?)";
+      error = shown(path) + ": includes nested more than 16 deep (an include cycle?)";
       return false;
     }
     std::string text;
     if (!read_text(path, text)) {
-      error = display_path(path) + ": cannot read shader file (missing, not a regular file, or over 1 MiB)";
+      error = shown(path) + ": cannot read shader file (missing, not a regular file, or over 1 MiB)";
       return false;
     }
     const int index = static_cast<int>(files.size());
@@ -122,7 +141,7 @@ struct Expander {
     static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
     const auto lines = split_lines(text);
     if (lines.size() >= static_cast<std::size_t>(kShaderLineStride)) {
-      error = display_path(path) + ": more than " + std::to_string(kShaderLineStride - 1) + " lines";
+      error = shown(path) + ": more than " + std::to_string(kShaderLineStride - 1) + " lines";
       return false;
     }
     if (!top) out << line_directive(index, 1);
@@ -142,7 +161,7 @@ struct Expander {
         const fs::path target = include_target(path, line_no, line, name);
         if (target.empty()) return false;
         if (!fs::exists(target)) {
-          error = where(path, line_no) + "cannot find include \"" + printable(name) + "\"" + quote(line_no, line);
+          error = where(path, line_no, line) + "cannot find include \"" + printable(name) + "\"" + quote(line_no, line);
           return false;
         }
         const fs::path canonical = fs::weakly_canonical(target);
@@ -203,7 +222,8 @@ std::vector<ShaderDiagnostic> parse_shader_log(const std::string& log, const std
     const std::string line = raw.empty() || raw.back() != '\r' ? raw : raw.substr(0, raw.size() - 1);
     std::smatch m;
     if (std::regex_match(line, m, mesa_re)) {
-      out.push_back(place(std::stoul(m[1]), std::stoi(m[2]), m[3] == "error", m[4], files));
+      // Mesa counts columns from 0; messages count them from 1, as g++ does.
+      out.push_back(place(std::stoul(m[1]), std::stoi(m[2]) + 1, m[3] == "error", m[4], files));
     } else if (std::regex_match(line, m, nvidia_re)) {
       out.push_back(place(std::stoul(m[1]), 0, m[2] == "error", m[3], files));
     } else if (std::regex_match(line, m, khronos_re)) {
@@ -221,7 +241,7 @@ std::vector<ShaderDiagnostic> parse_shader_log(const std::string& log, const std
 std::string ShaderDiagnostic::to_string() const {
   const char* severity = error ? "error" : "warning";
   if (file.empty()) return printable(message, 2000) + '\n';
-  std::string out = display_path(file) + ':' + std::to_string(line) + (column > 0 ? ':' + std::to_string(column) : "") + ": " +
+  std::string out = (shown.empty() ? display_path(file) : shown) + ':' + std::to_string(line) + (column > 0 ? ':' + std::to_string(column) : "") + ": " +
                     severity + ": " + printable(message, 2000) + '\n';
   std::string text;
   if (line >= 1 && read_text(file, text)) {
@@ -267,12 +287,15 @@ GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& des
   const char* text = source.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
   glCompileShader(shader.id());
-  const auto diagnostics = parse_shader_log(info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog), files);
+  auto diagnostics = parse_shader_log(info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog), files);
+  const ShownNames names = shown_names(desc.rules);
+  for (auto& d : diagnostics)
+    if (!d.file.empty()) d.shown = shown_name(d.file, names);
   build.diagnostics.insert(build.diagnostics.end(), diagnostics.begin(), diagnostics.end());
   build.warnings += join(diagnostics, false);
   if (!succeeded(shader.id(), GL_COMPILE_STATUS, glGetShaderiv)) {
     build.error = join(diagnostics, true);
-    if (build.error.empty()) build.error = display_path(resolve(path)) + ": compile failed with no log";
+    if (build.error.empty()) build.error = shown_name(resolve(path), shown_names(desc.rules)) + ": compile failed with no log";
     return {};
   }
   return shader;
@@ -282,7 +305,7 @@ GlShader compile_stage(GLenum type, const fs::path& path, const ProgramDesc& des
 
 std::string preprocess_shader(const fs::path& path, const ProgramDesc& desc, std::vector<fs::path>& files,
                               std::string& error) {
-  Expander expander{desc, files, error, {}, {}};
+  Expander expander{desc, files, error, {}, {}, shown_names(desc.rules)};
   for (const auto& c : desc.rules.confined) expander.confined.insert(fs::weakly_canonical(resolve(c)));
   std::ostringstream out;
   expander.included.insert(fs::weakly_canonical(path));

@@ -33,13 +33,19 @@ std::string display_path(const std::filesystem::path& path);
 struct IncludeRules {
   std::set<std::filesystem::path> confined;  // as given in ProgramDesc::includes (resolved before comparing)
   std::set<std::string> offered;             // e.g. "lab/bias.glsl"
+  // How messages name a file (resolved before comparing): a lab's slot file as the exercise file the
+  // student knows ("labs/00_basic_shadow_map/exercise.glsl"), wherever the copy being built sits (a
+  // submission's folder, a temporary one), so that no message shows the grading machine's paths.
+  // Files not named here are shown relative to data_dir() (display_path).
+  std::map<std::filesystem::path, std::string> shown_as = {};
 };
 
 // One compiler message, placed in the file and line it is about.
 struct ShaderDiagnostic {
   std::filesystem::path file;  // empty when the driver's line could not be placed
+  std::string shown;           // how messages name `file` (IncludeRules::shown_as); empty: display_path(file)
   int line = 0;                // 1-based; 0 unknown
-  int column = 0;              // 1-based; 0 when the driver gives none
+  int column = 0;              // 1-based, as g++ counts (Mesa's 0-based column plus 1); 0 when the driver gives none
   bool error = true;           // false: a warning
   std::string message;         // the driver's text after its location and severity
   // "file:line:col: error: message" (col omitted when unknown) and, when the file can be read, the

@@ -13,12 +13,17 @@ layout(location = 2) in vec3 a_color;
 #endif
 
 uniform mat4 u_view_proj;
+// Neither with OWN_SHADOW_COORDS: a lab's shadow test that maps into the shadow map itself (lab 0).
+#ifndef OWN_SHADOW_COORDS
 uniform mat4 u_light_tex_matrix;  // world -> the shadow map's texture space (shadow/common.glsl)
+#endif
 
 out vec3 v_world_position;
 out vec3 v_normal;
 out vec3 v_color;
+#ifndef OWN_SHADOW_COORDS
 out vec4 v_light_tex;  // u_light_tex_matrix times the position, before the divide
+#endif
 // The shadow-volume passes draw the scene twice and test depth for equality: same inputs, same depths.
 invariant gl_Position;
 
@@ -32,6 +37,8 @@ void main() {
 #else
   v_color = a_color;
 #endif
+#ifndef OWN_SHADOW_COORDS
   v_light_tex = u_light_tex_matrix * vec4(a_position, 1.0);
+#endif
   gl_Position = u_view_proj * vec4(a_position, 1.0);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "app/settings.h"
@@ -387,6 +389,102 @@ TEST_F(SettingsTest, ConcurrentSavesAllSucceed) {
   EXPECT_TRUE(temporaries_of(file).empty());
   const double bias = loaded_bias();
   EXPECT_TRUE(std::abs(bias - (0.02 + 199e-5)) < 1e-9 || std::abs(bias - (0.04 + 199e-5)) < 1e-9) << bias;
+}
+
+// Two windows on one settings file (issue 33: "keep only one lab's settings"): each saves what it
+// changed into what is on disk, so both labs, a preset of each and the camera one of them moved survive,
+// in either order and over a later save of the other; what a window deletes is deleted for both.
+TEST_F(SettingsTest, TwoWindowsEachKeepTheirLab) {
+  Settings a = Settings::load(file), b = Settings::load(file);
+  ParamSet p = params();
+  p.set("shadow.bias", 0.011);
+  a.store_lab(3, p);
+  a.save_preset(3, "from a", p);
+  p.set("shadow.bias", 0.022);
+  b.store_lab(5, p);
+  b.save_preset(5, "from b", p);
+  b.store_camera("default", OrbitCamera{});
+  a.save();
+  b.save();
+  p.set("shadow.bias", 0.033);
+  a.store_lab(3, p);
+  a.delete_preset(3, "from a");
+  a.save();  // after b's save: b's lab, preset and camera stay
+
+  const Settings both = Settings::load(file);
+  EXPECT_EQ(both.warning(), "");
+  ParamSet q = params();
+  EXPECT_TRUE(both.apply_lab(3, q).empty());
+  EXPECT_DOUBLE_EQ(q.get("shadow.bias"), 0.033);
+  EXPECT_TRUE(both.apply_lab(5, q).empty());
+  EXPECT_DOUBLE_EQ(q.get("shadow.bias"), 0.022) << "the other window's lab was lost";
+  EXPECT_TRUE(both.preset_names(3).empty()) << "a deleted preset came back";
+  EXPECT_EQ(both.preset_names(5), std::vector<std::string>{"from b"});
+  EXPECT_TRUE(both.camera("default").has_value()) << "the other window's camera was lost";
+  EXPECT_EQ(a.document(), both.document()) << "after saving, a window holds the merged settings";
+}
+
+// Two processes saving 50 times each, a lab and one new preset per save, side by side: the lock makes
+// each read-merge-write whole, so all 100 presets and both labs' last values are on disk at the end.
+TEST_F(SettingsTest, TwoProcessesSavingFiftyTimesEachLoseNothing) {
+  constexpr int kSaves = 50;
+  const fs::path go = dir / "go";
+  const auto child = [&](int lab) {
+    while (!fs::exists(go)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    Settings s = Settings::load(file);
+    ParamSet p = params();
+    for (int i = 0; i < kSaves; ++i) {
+      p.set("shadow.bias", 0.001 * (i + 1));
+      s.store_lab(lab, p);
+      s.save_preset(lab, "p" + std::to_string(i), p);
+      try {
+        s.save();
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "lab %d save %d: %s\n", lab, i, e.what());
+        std::_Exit(1);
+      }
+    }
+    std::_Exit(0);
+  };
+  std::vector<pid_t> children;
+  for (int lab : {10, 11}) {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) child(lab);
+    children.push_back(pid);
+  }
+  write_all(go, "");
+  for (pid_t pid : children) {
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "a save failed in a child";
+  }
+  const Settings s = Settings::load(file);
+  EXPECT_EQ(s.warning(), "");
+  for (int lab : {10, 11}) {
+    EXPECT_EQ(s.preset_names(lab).size(), static_cast<std::size_t>(kSaves)) << "lab " << lab << " lost presets";
+    ParamSet q = params();
+    EXPECT_TRUE(s.apply_lab(lab, q).empty());
+    EXPECT_DOUBLE_EQ(q.get("shadow.bias"), 0.001 * kSaves) << "lab " << lab;
+  }
+  EXPECT_TRUE(temporaries_of(file).empty());
+}
+
+// A file that turned bad after this window loaded (another program wrote it, a disk error) is not
+// written over: saving moves it aside, as loading would have, and writes this window's settings.
+TEST_F(SettingsTest, FileCorruptedAfterLoadIsKeptAsideWhenSaving) {
+  save_bias(0.01);
+  Settings s = Settings::load(file);
+  write_all(file, "{ not json");
+  ParamSet p = params();
+  p.set("shadow.bias", 0.02);
+  s.store_lab(1, p);
+  s.save();
+  const std::vector<fs::path> backups = backups_of(file);
+  ASSERT_EQ(backups.size(), 1u);
+  EXPECT_EQ(read_all(backups[0]), "{ not json");
+  EXPECT_NE(s.warning().find("is not valid JSON when saving"), std::string::npos) << s.warning();
+  EXPECT_DOUBLE_EQ(loaded_bias(), 0.02);
 }
 
 // The process dies (SIGKILL) after the temporary file is written and before the rename: the temporary

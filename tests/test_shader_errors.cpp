@@ -11,8 +11,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/renderer.h"
+#include "renderer/scene.h"
 #include "renderer/shader.h"
 #include "tests/gl_fixture.h"
 
@@ -120,10 +122,71 @@ TEST_F(CompileErrorTest, WarningsArePlacedToo) {
   EXPECT_NE(b.warnings.find("warning:"), std::string::npos) << b.warnings;
 }
 
+// The column counts from 1, as g++'s do: the driver's (Mesa's counts from 0) plus one. `nope` starts
+// at the line's 10th character.
+TEST_F(CompileErrorTest, ColumnsCountFromOne) {
+  write("exercise.glsl", "// exercise\nfloat student(float x) {\n  float y = x;\n  return nope;\n}\n");
+  const ProgramBuild b = build(dir / "exercise.glsl");
+  ASSERT_FALSE(b.program);
+  ASSERT_FALSE(b.diagnostics.empty());
+  EXPECT_EQ(b.diagnostics[0].line, 4);
+  EXPECT_EQ(b.diagnostics[0].column, 10) << b.error;
+  EXPECT_NE(b.error.find("exercise.glsl:4:10: error:"), std::string::npos) << b.error;
+}
+
+// A submission graded from a folder anywhere (check --submission DIR): its files are named as the
+// project names them, labs/NN_slug/file:line:col, in the renderer's error (the window's panel), the
+// check's error and its JSON; DIR itself appears in no message. A compile error, an include refusal,
+// and an error in the second slot of a two-file lab (lab 3's Chebyshev half, included by the lab's file).
+TEST_F(GlTest, ASubmissionsMessagesNameItsFilesAsTheProjectDoes) {
+  const fs::path dir = fs::temp_directory_path() / ("shadowlab-submission-" + std::to_string(::getpid())) / "alice";
+  struct Case {
+    int lab;
+    std::string file, text, where;
+  };
+  const Case cases[] = {
+      {0, "labs/00_basic_shadow_map/exercise.glsl",
+       "// alice\n#include \"lab/bias.glsl\"\nfloat shadow_visibility(vec3 p, vec3 n, float d) {\n  return nope;\n}\n",
+       "labs/00_basic_shadow_map/exercise.glsl:4:10: error: "},
+      {0, "labs/00_basic_shadow_map/exercise.glsl", "// alice\n  #include \"shadow/hard.glsl\"\n",
+       "labs/00_basic_shadow_map/exercise.glsl:2:12: error: #include \"shadow/hard.glsl\" is not offered"},
+      {3, "labs/03_vsm_setup/exercise_chebyshev.glsl",
+       "// alice\nfloat chebyshev_upper_bound(vec2 m, float z) {\n  return nope;\n}\n",
+       "labs/03_vsm_setup/exercise_chebyshev.glsl:3:10: error: "},
+  };
+  const Scene scene = make_default_scene();
+  for (const Case& c : cases) {
+    fs::remove_all(dir);
+    const Lab& lab = *find_lab(c.lab);
+    for (std::size_t i = 0; i < lab.exercise_files.size(); ++i) {  // the solution's files in the other slots
+      fs::create_directories((dir / lab.exercise_files[i]).parent_path());
+      fs::copy_file(data_dir() / lab.solution_files[i], dir / lab.exercise_files[i]);
+    }
+    std::ofstream(dir / c.file, std::ios::trunc) << c.text;
+    Renderer renderer;
+    CheckRun run;
+    run.submission = dir;
+    const CheckResult result = run_lab_check(renderer, lab, scene, run);
+    EXPECT_EQ(result.status(), CheckStatus::CompileError) << result.error;
+    const std::string json_error = result.to_json()["error"].get<std::string>();
+    SlotFiles files;  // the window's panel shows what set_features reports
+    for (const auto& f : lab.exercise_files) files.push_back(dir / f);
+    Renderer window;
+    EXPECT_FALSE(window.set_features(lab.hooks_for(files)));
+    const std::string panel = window.shader_error();
+    for (const std::string& text : {result.error, json_error, panel}) {
+      EXPECT_NE(text.find(c.where), std::string::npos) << "expected " << c.where << " in\n" << text;
+      EXPECT_EQ(text.find(dir.parent_path().string()), std::string::npos) << "the grading machine's path in\n" << text;
+    }
+  }
+  fs::remove_all(dir.parent_path());
+}
+
 // Each driver's log format, placed in the same file table: file k's line n is k * stride + n.
 // Every GLSL lab through the renderer: a syntax error in each exercise file is reported with that file's
-// name, although most labs switch the renderer to another shadow pass, one that is not kept when it
-// does not build (its error was once lost, and lab 5's broken blur was graded "failed" with no reason).
+// name (its slot's exercise file as the project names it, not the path of the copy), although most labs
+// switch the renderer to another shadow pass, one that is not kept when it does not build (its error was
+// once lost, and lab 5's broken blur was graded "failed" with no reason).
 TEST_F(GlTest, EveryLabsBrokenExerciseIsReportedByTheRenderer) {
   const fs::path dir = fs::temp_directory_path() / ("shadowlab-broken-exercises-" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -139,9 +202,11 @@ TEST_F(GlTest, EveryLabsBrokenExerciseIsReportedByTheRenderer) {
       files[slot] = broken;
       Renderer renderer;  // starts on its default technique, as the check and the window do
       EXPECT_FALSE(renderer.set_features(lab.hooks_for(files))) << "lab " << lab.number << " built a broken file";
-      EXPECT_NE(renderer.shader_error().find(broken.filename().string() + ":"), std::string::npos)
-          << "lab " << lab.number << ": the error does not name " << broken.filename() << ":\n"
+      // Named as the exercise file of its slot, wherever the broken copy sits.
+      EXPECT_NE(renderer.shader_error().find(stock[slot].generic_string() + ":"), std::string::npos)
+          << "lab " << lab.number << ": the error does not name " << stock[slot] << ":\n"
           << renderer.shader_error();
+      EXPECT_EQ(renderer.shader_error().find(dir.string()), std::string::npos) << renderer.shader_error();
       ++graded;
     }
   }
@@ -174,9 +239,10 @@ TEST(ShaderLog, EveryCommonDriverFormatIsPlaced) {
     bool error;
   };
   const Case cases[] = {
-      {"Mesa", "0:" + std::to_string(line) + "(7): error: `nope' undeclared", 7, true},
-      {"Mesa, another source string", "3:" + std::to_string(line) + "(7): error: `nope' undeclared", 7, true},
-      {"Mesa warning", "0:" + std::to_string(line) + "(3): warning: `y' used uninitialized", 3, false},
+      // Mesa counts columns from 0, messages from 1 (as g++ does).
+      {"Mesa", "0:" + std::to_string(line) + "(7): error: `nope' undeclared", 8, true},
+      {"Mesa, another source string", "3:" + std::to_string(line) + "(7): error: `nope' undeclared", 8, true},
+      {"Mesa warning", "0:" + std::to_string(line) + "(3): warning: `y' used uninitialized", 4, false},
       {"NVIDIA", "0(" + std::to_string(line) + ") : error C1008: undefined variable \"nope\"", 0, true},
       {"NVIDIA warning", "0(" + std::to_string(line) + ") : warning C7050: \"y\" might be used before being initialized", 0,
        false},

@@ -76,9 +76,7 @@ void probe_shadow_test(CheckContext& ctx, CheckResult& result) {
   const GlSampler compare = make_compare_sampler();
   request.passes.push_back([&](GLuint program) {
     bind_probe_shadow_map(program, map, compare);
-    const glm::mat4 clip_to_texture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     set_uniform(program, "u_light_view_proj", glm::mat4(1.0f));
-    set_uniform(program, "u_light_tex_matrix", clip_to_texture);
     set_uniform(program, "u_bias_constant", kProbeBias);
     set_uniform(program, "u_bias_slope", 0.0f);
     set_uniform(program, "u_texel_depth", 0.0f);
@@ -127,7 +125,13 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"tutorial", "The tutorial's constant bias of 0.005.", {{"shadow.bias", "0.005"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};
-  lab.make_hooks = visibility_lab_hooks();
+  // The bias matrix is the lesson: the exercise's programs hold nothing that maps into the shadow map
+  // for it (Features::own_shadow_coords; the audit in INSTRUCTOR.md).
+  lab.make_hooks = [](const SlotFiles& files) {
+    Features hooks = visibility_lab_hooks()(files);
+    hooks.own_shadow_coords = true;
+    return hooks;
+  };
   lab.check = check_basic;
   return lab;
 }

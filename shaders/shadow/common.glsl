@@ -1,8 +1,11 @@
 // What every shadow test can read: the shadow map and the matrix taking world space to its texture
 // space (light view-projection, then the [-1, 1] -> [0, 1] "bias matrix").
+// With OWN_SHADOW_COORDS (renderer/renderer.h, Features::own_shadow_coords: lab 0, whose lesson is that
+// matrix) only the map and the light's position: the lab's test maps into the map itself.
 uniform sampler2D u_shadow_map;
-uniform mat4 u_light_tex_matrix;
 uniform vec3 u_light_position;  // spot and point lights: where the light stands (world space)
+#ifndef OWN_SHADOW_COORDS
+uniform mat4 u_light_tex_matrix;
 
 // The fragment's position in the shadow map: xy texture coordinates, z its depth seen from the light.
 #ifdef SHADOW_COORDS_FROM_VERTEX
@@ -28,3 +31,6 @@ vec3 shadow_coords(vec3 world_position) {
 bool outside_shadow_map(vec3 s) {
   return any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)));
 }
+#elif defined(SHADOW_COORDS_FROM_VERTEX)
+in vec3 v_world_position;  // lit.vert's: the fragment's world position
+#endif
