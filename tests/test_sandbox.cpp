@@ -289,7 +289,7 @@ namespace {
 // reported as a compile error). Made here with a PATH that has no bubblewrap, and with a bubblewrap that
 // fails the way it does where the kernel refuses user namespaces.
 void expect_refused(const fs::path& path_dir, const std::string& words) {
-  const fs::path dir = fs::temp_directory_path() / "shadowlab-sandbox-missing";
+  const fs::path dir = path_dir.string() + "-check";  // each case its own (CTest runs them side by side)
   fs::remove_all(dir);
   fs::create_directories(dir / "submission/labs/02_ortho_fit");
   std::ofstream(dir / "submission/labs/02_ortho_fit/exercise.cpp") << "this is not C++\n";
