@@ -121,7 +121,7 @@ PY
     [ $? -eq 1 ] || fail "exit $? (expected 1): $(cat "$tmp/log")"
     [ "$(status_of "$tmp/out" plain 2)" = passed ] || fail "plain.zip: $(message_of "$tmp/out" plain 2)"
     [ "$(status_of "$tmp/out" wrapped 2)" = passed ] || fail "wrapped.tar.gz: $(message_of "$tmp/out" wrapped 2)"
-    for refused in "escape|leaves the submission's folder" "absolute|absolute path" "link|is a link" "bomb|more than 16 MB" "junk|cannot open as zip or tar"; do
+    for refused in "escape|leaves the submission's folder" "absolute|absolute path" "link|is a link" "bomb|more than the 16 MB a file may have" "junk|cannot open as zip or tar"; do
       name="${refused%%|*}" words="${refused#*|}"
       [ "$(status_of "$tmp/out" "$name" 2)" = failed ] || fail "$name: $(status_of "$tmp/out" "$name" 2)"
       message_has "$tmp/out" "$name" 2 "submission refused: " || fail "$name: $(message_of "$tmp/out" "$name" 2)"
