@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "app/grade_report.h"
 #include "app/headless.h"
 #include "labs/check.h"
 #include "renderer/context.h"
@@ -117,8 +118,9 @@ int run_check(const CheckOptions& options) {
         all_passed = all_passed && result.passed();
         grader_error = grader_error || result.status() == CheckStatus::GraderError;
         report["labs"].push_back(result.to_json());
-        // Written after every lab, so a run that is killed keeps what it graded.
-        if (!options.json_file.empty()) write_text_atomic(options.json_file, report.dump(2) + "\n");
+        // Written after every lab, so a run that is killed keeps what it graded; through report_json, so
+        // that a byte of a student's file quoted in a compile error cannot stop it (\xNN).
+        if (!options.json_file.empty()) write_text_atomic(options.json_file, report_json(report));
       }
     }
     std::printf("%s\n", all_passed ? "all checks passed" : grader_error ? "grader error (see above)" : "some checks failed");

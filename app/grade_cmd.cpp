@@ -1,14 +1,17 @@
 #include "app/grade_cmd.h"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
+
+#if !defined(_WIN32)
+#include <sys/resource.h>
+#endif
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +22,16 @@
 #include "app/submission.h"
 #include "labs/lab.h"
 #include "labs/platform_process.h"
-#include "renderer/image_io.h"
+#include "renderer/platform.h"
+
+// Sanitizer builds reserve terabytes of address space (ASan's shadow memory): no RLIMIT_AS there.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SHADOWLAB_GRADE_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define SHADOWLAB_GRADE_SANITIZED 1
+#endif
+#endif
 
 namespace shadowlab {
 
@@ -30,9 +42,18 @@ namespace {
 
 constexpr int kExitAllPassed = kExitOk, kExitSomeFailed = kExitCheckFailed, kExitGraderError = kExitRuntime;
 
+// The grader's own address space (a soft RLIMIT_AS on the `grade` process). Measured here: grading one
+// student's every lab peaks at 97 MB, merging a class of 300 at all 17 labs at 330 MB (about 1 MB a
+// student: 4 GB leaves room for some 3,500). A bug, or an input past the guards, then fails with
+// bad_alloc in one lab's grading (a grader_error) instead of taking the machine. Only the soft limit: a
+// check's process raises its own to --memory.
+constexpr std::uint64_t kGraderAddressSpace = 4ull << 30;
+constexpr std::uint64_t kMaxCheckJsonBytes = 16ull << 20;  // a check's JSON: a few KB
+constexpr std::uint64_t kLogTailBytes = 64 << 10;          // the end of a check's log, for its last line
+
 struct Run {
   GradeOptions options;
-  fs::path out;
+  OutFolder out;  // --out, opened once
   std::vector<int> labs;
   fs::path self;  // this executable: each lab runs `self check ...`
 };
@@ -43,16 +64,9 @@ std::string lab_stem(int lab) {
   return text;
 }
 
-json read_json(const fs::path& path) {
-  std::ifstream in(path);
-  return json::parse(in, nullptr, /*allow_exceptions=*/false);
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+json read_json(const OutFolder& dir, const std::string& name, std::uint64_t max_bytes) {
+  const std::optional<std::string> text = dir.read(name, max_bytes);
+  return text ? json::parse(*text, nullptr, /*allow_exceptions=*/false) : json();
 }
 
 std::string last_line(const std::string& text) {
@@ -85,7 +99,9 @@ std::string input_fingerprint(const Run& run, const Lab& lab, const fs::path& ro
   f.add(std::to_string(run.options.cpu_time) + "/" + std::to_string(run.options.timeout) + "/" +
         std::to_string(run.options.memory_mb) + "/" + run.options.images);
   f.add(std::to_string(lab.number));
-  for (const auto& file : lab.exercise_files) f.add(file + "\n" + read_text(root / file));
+  // Read only after exercise_file_problems found each a regular file within the limit.
+  for (const auto& file : lab.exercise_files)
+    f.add(file + "\n" + platform::read_regular_file(root / file, UnpackLimits{}.max_file_bytes));
   return f.hex();
 }
 
@@ -115,10 +131,10 @@ std::string failed_criteria_text(const json& criteria) {
 }
 
 // The status and message of one lab from how its check process ended and what it wrote.
-void classify(const Run& run, const platform::ChildOutcome& o, const fs::path& check_json, const fs::path& log,
+void classify(const Run& run, const platform::ChildOutcome& o, const OutFolder& dir, const std::string& stem,
               json& record) {
   using Kind = platform::ChildOutcome::Kind;
-  const std::string log_tail = last_line(read_text(log));
+  const std::string log_tail = last_line(dir.read_tail(stem + ".log", kLogTailBytes));
   auto set = [&](const std::string& status, const std::string& message) {
     record["status"] = status;
     record["message"] = message;
@@ -136,7 +152,7 @@ void classify(const Run& run, const platform::ChildOutcome& o, const fs::path& c
   const std::string memory_note =
       out_of_memory ? " (over the memory limit of " + std::to_string(run.options.memory_mb) + " MB)" : "";
   if (o.kind == Kind::Signalled) return set("crashed", "the check process died: " + o.signal_name + memory_note);
-  const json report = read_json(check_json);
+  const json report = read_json(dir, stem + ".check.json", kMaxCheckJsonBytes);
   const json lab = report.is_object() && report.contains("labs") && !report["labs"].empty() ? report["labs"][0] : json();
   if (o.exit_code == 2 || o.exit_code == 3 || (o.exit_code <= 1 && !lab.is_object()))
     return set("grader_error", "the check ended with exit code " + std::to_string(o.exit_code) +
@@ -156,46 +172,51 @@ void classify(const Run& run, const platform::ChildOutcome& o, const fs::path& c
   set(status, failed_criteria_text(record["criteria"]));
 }
 
-// Keeps the diff images the --images choice asks for, with paths relative to the output folder.
-json kept_images(const Run& run, const fs::path& folder, const std::string& status) {
+// Keeps the diff images the --images choice asks for (in dir/<stem>), with paths relative to --out.
+json kept_images(const Run& run, const OutFolder& dir, const std::string& stem, const std::string& status) {
   json images = json::array();
   const bool keep = run.options.images == "all" || (run.options.images == "failed" && status != "passed");
-  std::error_code ec;
   if (!keep) {
-    fs::remove_all(folder, ec);
+    dir.remove(stem);
     return images;
   }
-  if (!fs::is_directory(folder)) return images;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(folder)) files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    const std::string name = f.filename().string();
+  const std::optional<OutFolder> folder = dir.existing_folder(stem);
+  if (!folder) return images;
+  for (const auto& name : folder->names()) {
     const bool diff = name.size() > 9 && name.compare(name.size() - 9, 9, "_diff.png") == 0;
     if (!diff && run.options.images != "all") {
-      fs::remove(f, ec);
+      folder->remove(name);
       continue;
     }
-    images.push_back(fs::relative(f, run.out, ec).generic_string());
+    if (name.front() != '.')  // not the check's lock file
+      images.push_back((folder->path() / name).lexically_relative(run.out.path()).generic_string());
   }
   return images;
 }
 
-// A file the lab needs, as the submission has it: a missing file, a link, or a path that leads out of
-// the submission (a linked folder) is the student's problem.
-std::string missing_or_linked(const Lab& lab, const fs::path& root) {
-  std::string problem;
+// Why a lab cannot be graded as handed in, as {status, message}: `missing` when a file of the lab is
+// not in the submission; `failed` when one is a link, leads out of the submission (a linked folder), is
+// not a regular file (a FIFO, a device, a folder) or is larger than a submitted file may be. Nothing is
+// read. Empty status: every file is there.
+std::pair<std::string, std::string> exercise_file_problems(const Lab& lab, const fs::path& root) {
+  std::string missing, refused;
   std::error_code ec;
   const std::string inside = (fs::weakly_canonical(root, ec) / "").string();
+  const std::uint64_t max_bytes = UnpackLimits{}.max_file_bytes;
   for (const auto& file : lab.exercise_files) {
     const fs::path p = root / file;
+    const fs::file_status st = fs::symlink_status(p, ec);
     std::string why;
-    if (fs::is_symlink(p)) why = "a link; submit the file itself";
-    else if (!fs::is_regular_file(p)) why = "not in the submission";
+    if (fs::is_symlink(st)) why = "a link; submit the file itself";
+    else if (!fs::exists(st)) missing += (missing.empty() ? "" : "; ") + file + ": not in the submission";
+    else if (!fs::is_regular_file(st)) why = "not a regular file; submit the file itself";
     else if (fs::weakly_canonical(p, ec).string().rfind(inside, 0) != 0) why = "leads out of the submission (a linked folder)";
-    if (!why.empty()) problem += (problem.empty() ? "" : "; ") + file + ": " + why;
+    else if (fs::file_size(p, ec) > max_bytes) why = "larger than the " + std::to_string(max_bytes >> 20) + " MB a file may have; refused";
+    if (!why.empty()) refused += (refused.empty() ? "" : "; ") + file + ": " + why;
   }
-  return problem;
+  if (!refused.empty()) return {"failed", refused + (missing.empty() ? "" : "; " + missing)};
+  if (!missing.empty()) return {"missing", missing};
+  return {};
 }
 
 void print_lab(const std::string& student, const json& r, bool recorded) {
@@ -205,121 +226,160 @@ void print_lab(const std::string& student, const json& r, bool recorded) {
   std::fflush(stdout);
 }
 
+// Runs one lab's check in its own process and fills the record from how it ended. Everything the check
+// writes by its path (its JSON, its log, the images folder, its temporary folder) is emptied or made
+// here first, under the student's folder as opened: a link planted at one of those names is removed,
+// never followed.
+void check_lab(const Run& run, const Lab& lab, const fs::path& root, const OutFolder& dir, json& record) {
+  const std::string stem = lab_stem(lab.number);
+  dir.remove(stem + ".check.json");
+  dir.remove(stem);
+  dir.folder(stem);
+  dir.fresh_file(stem + ".log");
+  // The check's temporary files (lab 2's compiled exercise) go to a folder of the student's own, emptied
+  // before and after: a check killed at a limit, or a grading run killed outright, leaves nothing in /tmp,
+  // and the next run starts clean.
+  dir.remove(stem + ".tmp");
+  const OutFolder scratch = dir.folder(stem + ".tmp", 0700);
+  const std::vector<std::string> argv = {run.self.string(), "check", "--lab", std::to_string(lab.number),
+                                         "--impl", "exercise", "--submission", root.string(),
+                                         "--json", (dir.path() / (stem + ".check.json")).string(),
+                                         "--out", (dir.path() / stem).string()};
+  const platform::ChildLimits limits{run.options.timeout, static_cast<std::uint64_t>(run.options.memory_mb) << 20,
+                                     run.options.cpu_time};
+  const platform::ChildOutcome o =
+      platform::run_child(argv, limits, dir.path() / (stem + ".log"), {{"TMPDIR", scratch.path().string()}});
+  dir.remove(stem + ".tmp");
+  classify(run, o, dir, stem, record);
+  record["seconds"] = o.seconds;
+  record["cpu_seconds"] = o.cpu_seconds;
+  record["peak_memory_mb"] = o.peak_rss_mb;
+  if (o.kind == platform::ChildOutcome::Kind::Exited) record["exit"] = {{"code", o.exit_code}};
+  if (o.kind == platform::ChildOutcome::Kind::Signalled) record["exit"] = {{"signal", o.signal_name}};
+  record["log"] = (dir.path() / (stem + ".log")).lexically_relative(run.out.path()).generic_string();
+  record["images"] = kept_images(run, dir, stem, record["status"]);
+  // The student reads their files' paths as in their submission, not where it lies on this machine.
+  record["message"] = relative_to(record["message"].get<std::string>(), root);
+  for (auto& c : record["criteria"]) c["sentence"] = relative_to(c.value("sentence", ""), root);
+}
+
 // Grades one lab of one submission in its own process and records the result at once.
-json grade_lab(const Run& run, const Lab& lab, const std::string& student, const fs::path& root, const fs::path& dir) {
-  const fs::path record_path = dir / (lab_stem(lab.number) + ".json");
-  const std::string input = input_fingerprint(run, lab, root);
-  if (!run.options.again) {
-    const json old = read_json(record_path);
-    if (old.is_object() && old.value("input", "") == input && old.value("status", "") != "grader_error") {
-      print_lab(student, old, true);
-      return old;
-    }
-  }
+json grade_lab(const Run& run, const Lab& lab, const std::string& student, const fs::path& root, const OutFolder& dir) {
+  const std::string record_name = lab_stem(lab.number) + ".json";
   json record = lab_record(lab.number, student, "grader_error", "");
-  record["input"] = input;
   record["limits"] = {{"cpu_time_s", run.options.cpu_time}, {"timeout_s", run.options.timeout},
                       {"memory_mb", run.options.memory_mb}};
-  if (const std::string problem = missing_or_linked(lab, root); !problem.empty()) {
-    record["status"] = "failed";
-    record["message"] = problem;
+  if (const auto [status, message] = exercise_file_problems(lab, root); !status.empty()) {
+    record["status"] = status;
+    record["message"] = message;
   } else {
-    const fs::path check_json = dir / (lab_stem(lab.number) + ".check.json");
-    const fs::path log = dir / (lab_stem(lab.number) + ".log");
-    const fs::path images = dir / lab_stem(lab.number);
-    // The check's temporary files (lab 2's compiled exercise) go to a folder of the student's own, emptied
-    // before and after: a check killed at a limit, or a grading run killed outright, leaves nothing in /tmp,
-    // and the next run starts clean.
-    const fs::path scratch = dir / (lab_stem(lab.number) + ".tmp");
-    std::error_code ec;
-    fs::remove(check_json, ec);
-    fs::remove_all(images, ec);
-    fs::remove_all(scratch, ec);
-    fs::create_directories(scratch, ec);
-    const std::vector<std::string> argv = {run.self.string(), "check", "--lab", std::to_string(lab.number),
-                                           "--impl", "exercise", "--submission", root.string(),
-                                           "--json", check_json.string(), "--out", images.string()};
-    const platform::ChildLimits limits{run.options.timeout, static_cast<std::uint64_t>(run.options.memory_mb) << 20,
-                                       run.options.cpu_time};
-    const platform::ChildOutcome o = platform::run_child(argv, limits, log, {{"TMPDIR", scratch.string()}});
-    fs::remove_all(scratch, ec);
-    classify(run, o, check_json, log, record);
-    record["seconds"] = o.seconds;
-    record["cpu_seconds"] = o.cpu_seconds;
-    record["peak_memory_mb"] = o.peak_rss_mb;
-    if (o.kind == platform::ChildOutcome::Kind::Exited) record["exit"] = {{"code", o.exit_code}};
-    if (o.kind == platform::ChildOutcome::Kind::Signalled) record["exit"] = {{"signal", o.signal_name}};
-    record["log"] = fs::relative(log, run.out, ec).generic_string();
-    record["images"] = kept_images(run, images, record["status"]);
+    const std::string input = input_fingerprint(run, lab, root);
+    if (!run.options.again) {
+      const json old = read_json(dir, record_name, kMaxCheckJsonBytes);
+      if (old.is_object() && old.value("input", json()) == input && old.value("status", json()) != "grader_error") {
+        print_lab(student, old, true);
+        return old;
+      }
+    }
+    record["input"] = input;
+    check_lab(run, lab, root, dir, record);
   }
-  write_text_atomic(record_path, record.dump(2) + "\n");
+  dir.write(record_name, report_json(record));
   print_lab(student, record, false);
   return record;
 }
 
-// Grades every lab of one submission; returns the exit code it alone would give.
+// The folder to grade of one submission (an archive unpacked into dir/unpacked first); throws
+// SubmissionError, in the student's terms, when it cannot be graded as given.
+fs::path open_submission(const std::string& path, const OutFolder& dir, json& submission) {
+  if (is_archive_name(path) && fs::is_regular_file(path)) {
+    submission["kind"] = "archive";
+    // Unpacked into the student's own output folder (this task's alone), not /tmp: a run killed while
+    // grading leaves it there, and the next run over the same --out removes it before unpacking again.
+    dir.remove("unpacked");
+    const OutFolder unpacked = dir.folder("unpacked", 0700);
+    unpack_archive(path, unpacked.path());
+    return find_project_root(unpacked.path());
+  }
+  submission["kind"] = "folder";
+  if (!fs::is_directory(path))
+    throw SubmissionError(fs::path(path).filename().string() + ": neither a folder nor a .zip/.tar archive");
+  fs::path folder = fs::absolute(path).lexically_normal();  // absolute: messages' paths are made relative to it
+  if (folder.filename().empty()) folder = folder.parent_path();  // "alice/" -> "alice"
+  return find_project_root(folder);
+}
+
+// One lab's result when the submission was refused, or when the grader failed on it.
+json unattempted_lab(const OutFolder& dir, int lab, const std::string& student, const std::string& status,
+                     const std::string& message) {
+  json record = lab_record(lab, student, status, message);
+  dir.write(lab_stem(lab) + ".json", report_json(record));
+  print_lab(student, record, false);
+  return record;
+}
+
+// Grades every lab of one submission; returns the exit code it alone would give. The grader failing on
+// one lab (bad_alloc at its memory limit, a file it cannot write) makes that lab a grader_error and
+// goes on with the next: one strange submission never stops the class.
 int grade_submission(const Run& run, const std::string& path) {
   const std::string name = submission_name(path);
-  const fs::path dir = run.out / "students" / name;
+  const OutFolder dir = run.out.folder("students").folder(name);
   // The student's folder is this run's alone (the tasks of a parallel or Slurm run share --out).
-  make_output_dir(dir.string());
+  make_output_dir(dir.path().string());
   std::error_code ec;
   json submission = {{"name", name}, {"source", fs::absolute(path, ec).string()}, {"labs", run.labs}};
-  fs::path unpacked;
   fs::path root;
+  std::string grader_failed;
   try {
-    if (is_archive_name(path) && fs::is_regular_file(path)) {
-      submission["kind"] = "archive";
-      // Unpacked into the student's own output folder (this task's alone), not /tmp: a run killed while
-      // grading leaves it there, and the next run over the same --out removes it before unpacking again.
-      unpacked = dir / "unpacked";
-      fs::remove_all(unpacked, ec);
-      fs::create_directories(unpacked);
-      fs::permissions(unpacked, fs::perms::owner_all, ec);
-      unpack_archive(path, unpacked);
-      root = find_project_root(unpacked);
-    } else {
-      submission["kind"] = "folder";
-      if (!fs::is_directory(path)) throw SubmissionError(path + ": neither a folder nor a .zip/.tar archive");
-      root = find_project_root(path);
-    }
+    root = open_submission(path, dir, submission);
   } catch (const SubmissionError& e) {
     submission["error"] = e.what();
+  } catch (const std::exception& e) {
+    grader_failed = std::string("the grader failed to open the submission: ") + e.what();
   }
-  write_text_atomic(dir / "submission.json", submission.dump(2) + "\n");
+  dir.write("submission.json", report_json(submission));
   int code = kExitAllPassed;
   for (int n : run.labs) {
-    const Lab& lab = *find_lab(n);
     json record;
-    if (submission.contains("error")) {
-      record = lab_record(n, name, "failed", "submission refused: " + submission["error"].get<std::string>());
-      write_text_atomic(dir / (lab_stem(n) + ".json"), record.dump(2) + "\n");
-      print_lab(name, record, false);
-    } else {
-      record = grade_lab(run, lab, name, root, dir);
+    try {
+      if (!grader_failed.empty()) record = unattempted_lab(dir, n, name, "grader_error", grader_failed);
+      else if (submission.contains("error"))
+        record = unattempted_lab(dir, n, name, "failed", "submission refused: " + submission["error"].get<std::string>());
+      else record = grade_lab(run, *find_lab(n), name, root, dir);
+    } catch (const std::exception& e) {
+      record = lab_record(n, name, "grader_error", std::string("the grader failed on this lab: ") + e.what());
+      std::fprintf(stderr, "shadowlab grade: %s lab %d: %s\n", name.c_str(), n, report_text(e.what()).c_str());
+      try {
+        dir.write(lab_stem(n) + ".json", report_json(record));
+      } catch (const std::exception&) {  // the merge reports it as "no result"
+      }
     }
     const std::string status = record.value("status", "");
     if (status == "grader_error") code = kExitGraderError;
     else if (status != "passed" && code == kExitAllPassed) code = kExitSomeFailed;
   }
-  if (!unpacked.empty()) fs::remove_all(unpacked, ec);
+  dir.remove("unpacked");
   return code;
 }
 
 // Several submissions at once: GNU parallel runs `shadowlab grade ONE --no-merge` per submission, each
 // job's software rasteriser on one thread (LP_NUM_THREADS=1) so that jobs do not fight for cores.
 int grade_with_parallel(const Run& run) {
-  const fs::path list = run.out / ".submissions.list";
+  const std::string list = ".submissions.list", joblog = "parallel.joblog";
   std::string text;
   std::error_code ec;
   for (const auto& s : run.options.submissions) text += fs::absolute(s, ec).string() + '\0';
-  write_text_atomic(list, text);
+  run.out.write(list, text);
+  // GNU parallel opens its job log by path: a file of our own there first, so that it never writes
+  // through a link planted in --out.
+  run.out.fresh_file(joblog);
   const double per_submission = static_cast<double>(run.labs.size()) * (run.options.timeout + 10.0) + 120.0;
   std::vector<std::string> argv = {"parallel", "--will-cite", "--quote", "--line-buffer", "--halt", "never",
                                    "--jobs", std::to_string(run.options.jobs), "--timeout",
                                    std::to_string(static_cast<int>(per_submission)), "--joblog",
-                                   (run.out / "parallel.joblog").string(), "-0", "--arg-file", list.string(),
-                                   run.self.string(), "grade", "--no-merge", "--out", run.out.string(), "--lab",
+                                   (run.out.path() / joblog).string(), "-0", "--arg-file",
+                                   (run.out.path() / list).string(), run.self.string(), "grade", "--no-merge",
+                                   "--out", run.out.path().string(), "--lab",
                                    run.options.labs, "--cpu-time", std::to_string(run.options.cpu_time),
                                    "--timeout", std::to_string(run.options.timeout), "--memory",
                                    std::to_string(run.options.memory_mb), "--images", run.options.images};
@@ -328,7 +388,7 @@ int grade_with_parallel(const Run& run) {
   std::map<std::string, std::string> env;
   if (!std::getenv("LP_NUM_THREADS")) env["LP_NUM_THREADS"] = "1";
   const platform::ChildOutcome o = platform::run_child(argv, {}, "", env);
-  fs::remove(list, ec);
+  run.out.remove(list);
   if (o.kind == platform::ChildOutcome::Kind::NotStarted)
     throw std::runtime_error("GNU parallel is needed for --jobs " + std::to_string(run.options.jobs) + ": " + o.error +
                              " (scripts/setup installs it; or use --jobs 1)");
@@ -359,9 +419,20 @@ Run plan_run(const GradeOptions& options) {
   // lock only their student's folder.
   if (options.no_merge) prove_writable_folder(options.out_dir);
   else make_output_dir(options.out_dir);
-  run.out = fs::absolute(options.out_dir);
+  run.out = OutFolder(fs::absolute(options.out_dir));
   run.self = platform::self_executable();
   return run;
+}
+
+void limit_own_memory() {
+#if !defined(_WIN32) && !defined(SHADOWLAB_GRADE_SANITIZED)
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0) return;
+  const auto wanted = static_cast<rlim_t>(kGraderAddressSpace);
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= wanted) return;  // already lower
+  limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+  ::setrlimit(RLIMIT_AS, &limit);
+#endif
 }
 
 }  // namespace
@@ -369,11 +440,12 @@ Run plan_run(const GradeOptions& options) {
 int run_grade(const GradeOptions& options) {
   // A task of a parallel or Slurm run: it goes when whoever started it goes, and takes its checks along.
   if (options.no_merge) platform::die_with_parent();
+  limit_own_memory();
   Run run;
   try {
     run = plan_run(options);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab grade: %s\n", e.what());
+    std::fprintf(stderr, "shadowlab grade: %s\n", report_text(e.what()).c_str());
     return kExitUsage;
   }
   try {
@@ -383,7 +455,14 @@ int run_grade(const GradeOptions& options) {
       if (options.jobs > 1 && options.submissions.size() > 1) {
         code = grade_with_parallel(run);
       } else {
-        for (const auto& s : options.submissions) code = std::max(code, grade_submission(run, s));
+        for (const auto& s : options.submissions) {
+          try {
+            code = std::max(code, grade_submission(run, s));
+          } catch (const std::exception& e) {  // its folder cannot be made or locked: the merge says "no result"
+            std::fprintf(stderr, "shadowlab grade: %s: %s\n", submission_name(s).c_str(), report_text(e.what()).c_str());
+            code = kExitGraderError;
+          }
+        }
       }
     }
     if (options.no_merge) return code;
@@ -391,13 +470,13 @@ int run_grade(const GradeOptions& options) {
     for (const auto& s : options.submissions) names.push_back(submission_name(s));
     const MergeSummary m = merge_grades(run.out, names, run.labs);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%d submissions: %d of %d labs passed, %d grader errors (%.0f s)\n", m.students,
-                m.passed, m.labs, m.grader_errors, seconds);
+    std::printf("%d submissions: %d of %d labs passed, %d missing, %d grader errors (%.0f s)\n", m.students,
+                m.passed, m.labs, m.missing, m.grader_errors, seconds);
     for (const auto& f : m.written) std::printf("wrote %s\n", f.c_str());
     if (m.grader_errors > 0) return kExitGraderError;
     return m.passed == m.labs ? kExitAllPassed : kExitSomeFailed;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shadowlab grade: %s\n", one_line_error(e.what()).c_str());
+    std::fprintf(stderr, "shadowlab grade: %s\n", report_text(one_line_error(e.what())).c_str());
     return kExitGraderError;
   }
 }

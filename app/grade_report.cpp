@@ -1,12 +1,23 @@
 #include "app/grade_report.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
-#include <ctime>
+#include <cstring>
 #include <fstream>
+#include <ctime>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+
+#if !defined(_WIN32)
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 #include "labs/lab.h"
 #include "renderer/image_io.h"
@@ -18,10 +29,7 @@ using nlohmann::json;
 
 namespace {
 
-json read_json(const fs::path& path) {
-  std::ifstream in(path);
-  return json::parse(in, nullptr, /*allow_exceptions=*/false);
-}
+constexpr std::uint64_t kMaxRecordBytes = 16ull << 20;  // a lab's record or a check's JSON: a few KB
 
 std::string lab_name(int lab) {
   const Lab* l = find_lab(lab);
@@ -41,10 +49,16 @@ std::string utc_now() {
 
 // ---- the formats --------------------------------------------------------------------------------
 
+// A CSV field: report_text, a newline shown as \n (one row is one line), quoted when it holds a comma
+// or a quote, and a text starting like a formula (= + - @) prefixed with ' so that a spreadsheet shows
+// it instead of computing it.
 std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string t;
+  for (char c : report_text(s)) t += c == '\n' ? std::string("\\n") : std::string(1, c);
+  if (!t.empty() && std::strchr("=+-@", t.front())) t.insert(0, "'");
+  if (t.find_first_of(",\"") == std::string::npos) return t;
   std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  for (char c : t) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
 }
 
@@ -56,19 +70,17 @@ std::string number_text(const json& v) {
   return s.str();
 }
 
-// XML 1.0 text: the five entities, and no control characters but tab and newline.
+// XML 1.0 text: report_text (no control characters left but tab and newline), and the five entities.
 std::string xml_text(const std::string& s) {
   std::string out;
-  for (unsigned char c : s) {
+  for (char c : report_text(s)) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&apos;"; break;
-      default:
-        if (c < 0x20 && c != '\t' && c != '\n') out += ' ';
-        else out += static_cast<char>(c);
+      default: out += c;
     }
   }
   return out;
@@ -83,64 +95,70 @@ std::string lab_output(const json& record) {
   return out;
 }
 
-void write_csv(const fs::path& path, const json& students) {
+void write_csv(const OutFolder& out, const std::string& file, const json& students) {
   std::string text = "student,lab,slug,status,criterion,value,op,limit,criterion_passed,seconds,peak_memory_mb,message\n";
   for (const auto& s : students) {
     for (const auto& r : s["labs"]) {
       const std::string head = csv_field(s.value("name", "")) + "," + std::to_string(r.value("lab", -1)) + "," +
-                               csv_field(r.value("slug", "")) + "," + r.value("status", "") + ",";
+                               csv_field(r.value("slug", "")) + "," + csv_field(r.value("status", "")) + ",";
       const std::string tail = "," + number_text(r["seconds"]) + "," + number_text(r["peak_memory_mb"]) + "," +
                                csv_field(r.value("message", "")) + "\n";
       const json criteria = r.value("criteria", json::array());
       if (criteria.empty()) text += head + ",,,," + tail;
       for (const auto& c : criteria)
-        text += head + csv_field(c.value("metric", "")) + "," + number_text(c["value"]) + "," + c.value("op", "") + "," +
-                number_text(c["limit"]) + "," + (c.value("passed", false) ? "true" : "false") + tail;
+        text += head + csv_field(c.value("metric", "")) + "," + number_text(c["value"]) + "," +
+                csv_field(c.value("op", "")) + "," + number_text(c["limit"]) + "," +
+                (c.value("passed", false) ? "true" : "false") + tail;
     }
   }
-  write_text_atomic(path, text);
+  out.write(file, text);
 }
 
-void write_junit(const fs::path& path, const json& students) {
-  int tests = 0, failures = 0, errors = 0;
+// One lab as a JUnit test case: passed, <skipped> (missing: not handed in), <error> (grader_error) or
+// <failure> (type: the status).
+std::string junit_case(const std::string& classname, const json& r) {
+  const std::string status = r.value("status", "");
+  std::string text = "    <testcase classname=\"" + classname + "\" name=\"" + xml_text(lab_name(r.value("lab", -1))) +
+                     "\" time=\"" + std::to_string(r.value("seconds", 0.0)) + "\"";
+  if (status == "passed") return text + "/>\n";
+  const std::string message = r.value("message", "");
+  const std::string first_line = xml_text(message.substr(0, message.find('\n')));
+  if (status == "missing") return text + ">\n      <skipped message=\"" + first_line + "\"/>\n    </testcase>\n";
+  const std::string tag = status == "grader_error" ? "error" : "failure";
+  return text + ">\n      <" + tag + " type=\"" + xml_text(status) + "\" message=\"" + first_line + "\">" +
+         xml_text(lab_output(r)) + "</" + tag + ">\n    </testcase>\n";
+}
+
+void write_junit(const OutFolder& out, const std::string& file, const json& students) {
+  std::map<std::string, int> all;  // tests, failures, errors, skipped
   std::string suites;
   for (const auto& s : students) {
-    int s_failures = 0, s_errors = 0;
-    double s_time = 0.0;
+    std::map<std::string, int> n;
+    double seconds = 0.0;
     std::string cases;
     const std::string name = xml_text(s.value("name", ""));
     for (const auto& r : s["labs"]) {
       const std::string status = r.value("status", "");
-      const double seconds = r.value("seconds", 0.0);
-      s_time += seconds;
-      cases += "    <testcase classname=\"" + name + "\" name=\"" + xml_text(lab_name(r.value("lab", -1))) + "\" time=\"" +
-               std::to_string(seconds) + "\"";
-      if (status == "passed") {
-        cases += "/>\n";
-        continue;
-      }
-      const bool error = status == "grader_error";
-      (error ? s_errors : s_failures)++;
-      const std::string tag = error ? "error" : "failure";
-      const std::string message = r.value("message", "");
-      cases += ">\n      <" + tag + " type=\"" + status + "\" message=\"" + xml_text(message.substr(0, message.find('\n'))) + "\">" +
-               xml_text(lab_output(r)) + "</" + tag + ">\n    </testcase>\n";
+      seconds += r.value("seconds", 0.0);
+      n["tests"]++;
+      if (status != "passed")
+        n[status == "grader_error" ? "errors" : status == "missing" ? "skipped" : "failures"]++;
+      cases += junit_case(name, r);
     }
-    const int n = static_cast<int>(s["labs"].size());
-    tests += n;
-    failures += s_failures;
-    errors += s_errors;
-    suites += "  <testsuite name=\"" + name + "\" tests=\"" + std::to_string(n) + "\" failures=\"" +
-              std::to_string(s_failures) + "\" errors=\"" + std::to_string(s_errors) + "\" time=\"" +
-              std::to_string(s_time) + "\">\n" + cases + "  </testsuite>\n";
+    for (const auto& [key, count] : n) all[key] += count;
+    suites += "  <testsuite name=\"" + name + "\" tests=\"" + std::to_string(n["tests"]) + "\" failures=\"" +
+              std::to_string(n["failures"]) + "\" errors=\"" + std::to_string(n["errors"]) + "\" skipped=\"" +
+              std::to_string(n["skipped"]) + "\" time=\"" + std::to_string(seconds) + "\">\n" + cases + "  </testsuite>\n";
   }
-  write_text_atomic(path, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab grade\" tests=\"" +
-                              std::to_string(tests) + "\" failures=\"" + std::to_string(failures) + "\" errors=\"" +
-                              std::to_string(errors) + "\">\n" + suites + "</testsuites>\n");
+  out.write(file, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"shadowlab grade\" tests=\"" +
+                      std::to_string(all["tests"]) + "\" failures=\"" + std::to_string(all["failures"]) +
+                      "\" errors=\"" + std::to_string(all["errors"]) + "\" skipped=\"" + std::to_string(all["skipped"]) +
+                      "\">\n" + suites + "</testsuites>\n");
 }
 
 // Gradescope's autograder results (https://gradescope-autograders.readthedocs.io, "Output format"):
-// one test per lab worth 1 point, passed or not, with what to change in its output.
+// one test per lab worth 1 point, passed or not (a missing lab is a failed test whose output says
+// "missing"), with what to change in its output.
 json gradescope_results(const json& student) {
   json tests = json::array();
   double score = 0;
@@ -165,7 +183,155 @@ json gradescope_results(const json& student) {
           {"tests", tests}};
 }
 
+// ---- report_text -------------------------------------------------------------------------------
+
+// The length of the valid UTF-8 sequence at the start of `s` (RFC 3629: no overlong forms, no
+// surrogates, nothing past U+10FFFF), or 0 when its first byte starts none.
+std::size_t utf8_sequence(std::string_view s) {
+  const auto c = static_cast<unsigned char>(s[0]);
+  if (c < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // the second byte's range
+  if (c >= 0xC2 && c <= 0xDF) n = 2;
+  else if (c == 0xE0) n = 3, lo = 0xA0;
+  else if (c == 0xED) n = 3, hi = 0x9F;
+  else if (c >= 0xE1 && c <= 0xEF) n = 3;
+  else if (c == 0xF0) n = 4, lo = 0x90;
+  else if (c == 0xF4) n = 4, hi = 0x8F;
+  else if (c >= 0xF1 && c <= 0xF3) n = 4;
+  if (n == 0 || s.size() < n) return 0;
+  const auto second = static_cast<unsigned char>(s[1]);
+  if (second < lo || second > hi) return 0;
+  for (std::size_t i = 2; i < n; ++i)
+    if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+// Puts every string and key of `value` through report_text, in place (a class's results.json is tens of
+// MB: no second copy of it).
+void make_printable(json& value) {
+  if (value.is_string()) {
+    std::string& text = value.get_ref<std::string&>();
+    if (std::string shown = report_text(text); shown != text) text = std::move(shown);
+    return;
+  }
+  if (value.is_array()) {
+    for (auto& v : value) make_printable(v);
+    return;
+  }
+  if (!value.is_object()) return;
+  bool keys_printable = true;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    make_printable(it.value());
+    keys_printable = keys_printable && report_text(it.key()) == it.key();
+  }
+  if (keys_printable) return;
+  json out = json::object();
+  for (auto it = value.begin(); it != value.end(); ++it) out[report_text(it.key())] = std::move(it.value());
+  value = std::move(out);
+}
+
+// ---- the merge ---------------------------------------------------------------------------------
+
+json read_json_in(const OutFolder& dir, const std::string& name) {
+  const std::optional<std::string> text = dir.read(name, kMaxRecordBytes);
+  return text ? json::parse(*text, nullptr, /*allow_exceptions=*/false) : json();
+}
+
+// A lab's record as the grader writes it (anything else in a student's folder is not one).
+bool is_record(const json& r) {
+  return r.is_object() && r.value("schema", json()) == "shadowlab-grade-lab" && r.contains("lab") &&
+         r["lab"].is_number_integer() && r.value("status", json()).is_string() && r.value("message", json()).is_string();
+}
+
+// One student's records from their folder (none when it is missing, or a link: nothing is read through
+// it), with a grader_error "no result" for each lab the grading planned (submission.json, written
+// before the first lab ran) and never recorded; for a student with neither, every lab of `labs`.
+std::map<int, json> student_records(const std::optional<OutFolder>& dir, const std::string& name, json& submission,
+                                    const std::vector<int>& labs) {
+  std::set<int> planned;
+  std::map<int, json> records;
+  if (dir) {
+    submission = read_json_in(*dir, "submission.json");
+    if (submission.is_object())
+      for (const auto& n : submission.value("labs", json::array()))
+        if (n.is_number_integer()) planned.insert(n.get<int>());
+    for (const auto& file : dir->names()) {
+      if (file.rfind("lab_", 0) != 0 || fs::path(file).extension() != ".json" || file.find(".check.") != std::string::npos)
+        continue;
+      const json r = read_json_in(*dir, file);
+      if (is_record(r)) records[r["lab"].get<int>()] = r;
+    }
+  }
+  if (planned.empty() && records.empty()) planned.insert(labs.begin(), labs.end());
+  for (int lab : planned)
+    if (!records.count(lab))
+      records[lab] = lab_record(lab, name, "grader_error",
+                                "no result: this lab's grading did not finish (the run was killed, or has not "
+                                "reached it); grade again to continue");
+  return records;
+}
+
+// The class's reports from the students as merged (results.json last: it takes `students` over).
+void write_reports(const OutFolder& out, json students, const std::set<int>& all_labs, const MergeSummary& summary,
+                   const std::map<std::string, int>& by_status) {
+  write_csv(out, "results.csv", students);
+  write_junit(out, "junit.xml", students);
+  const OutFolder gradescope = out.folder("gradescope");
+  for (const auto& s : students) gradescope.folder(s.value("name", "")).write("results.json", report_json(gradescope_results(s)));
+  json labs = json::array();
+  for (int n : all_labs) {
+    const Lab* l = find_lab(n);
+    labs.push_back({{"lab", n}, {"slug", l ? l->slug : ""}, {"title", l ? l->title : ""},
+                    {"files", l ? l->exercise_files : std::vector<std::string>{}}});
+  }
+  int all_passed = 0;
+  for (const auto& s : students) all_passed += s["score"] == s["max_score"];
+  json report = {{"schema", "shadowlab-grade"},
+                 {"version", kGradeSchemaVersion},
+                 {"generated", utc_now()},
+                 {"statuses", kGradeStatuses},
+                 {"labs", labs},
+                 {"summary",
+                  {{"students", summary.students},
+                   {"students_all_passed", all_passed},
+                   {"labs_graded", summary.labs},
+                   {"by_status", by_status}}}};
+  report["students"] = std::move(students);
+  out.write("results.json", report_json(std::move(report)));
+}
+
 }  // namespace
+
+std::string report_text(std::string_view text) {
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence(text.substr(i));
+    const auto c = static_cast<unsigned char>(text[i]);
+    const bool control = (n == 1 && ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f)) ||
+                         (n == 2 && c == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0);
+    const std::size_t take = n == 0 ? 1 : n;
+    if (n == 0 || control) {
+      for (std::size_t k = i; k < i + take; ++k) {
+        const auto b = static_cast<unsigned char>(text[k]);
+        out += "\\x";
+        out += hex[b >> 4];
+        out += hex[b & 15];
+      }
+    } else {
+      out.append(text.substr(i, take));
+    }
+    i += take;
+  }
+  return out;
+}
+
+std::string report_json(json value) {
+  make_printable(value);
+  return value.dump(2) + "\n";
+}
 
 json lab_record(int lab, const std::string& student, const std::string& status, const std::string& message) {
   const Lab* l = find_lab(lab);
@@ -178,12 +344,11 @@ json lab_record(int lab, const std::string& student, const std::string& status, 
           {"peak_memory_mb", 0.0},           {"criteria", json::array()},         {"images", json::array()}};
 }
 
-MergeSummary merge_grades(const fs::path& out_dir, const std::vector<std::string>& expected, const std::vector<int>& labs_expected) {
+MergeSummary merge_grades(const OutFolder& out, const std::vector<std::string>& expected, const std::vector<int>& labs_expected) {
   std::set<std::string> names(expected.begin(), expected.end());
-  const fs::path students_dir = out_dir / "students";
-  if (fs::is_directory(students_dir))
-    for (const auto& e : fs::directory_iterator(students_dir))
-      if (e.is_directory()) names.insert(e.path().filename().string());
+  const std::optional<OutFolder> students_dir = out.existing_folder("students");
+  if (students_dir)
+    for (const auto& name : students_dir->names(/*folders_only=*/true)) names.insert(name);
 
   MergeSummary summary;
   std::map<std::string, int> by_status;
@@ -191,28 +356,9 @@ MergeSummary merge_grades(const fs::path& out_dir, const std::vector<std::string
   std::set<int> all_labs;
   json students = json::array();
   for (const auto& name : names) {
-    const fs::path dir = students_dir / name;
-    const json submission = read_json(dir / "submission.json");
-    // The labs this student's grading planned (written before the first lab ran), and those recorded.
-    std::set<int> planned;
-    if (submission.is_object())
-      for (const auto& n : submission.value("labs", json::array())) planned.insert(n.get<int>());
-    std::map<int, json> records;
-    if (fs::is_directory(dir))
-      for (const auto& e : fs::directory_iterator(dir)) {
-        const std::string file = e.path().filename().string();
-        if (file.rfind("lab_", 0) != 0 || e.path().extension() != ".json" || file.find(".check.") != std::string::npos)
-          continue;
-        const json r = read_json(e.path());
-        if (r.is_object() && r.value("schema", "") == "shadowlab-grade-lab") records[r.value("lab", -1)] = r;
-      }
-    if (planned.empty() && records.empty())
-      planned.insert(labs_expected.begin(), labs_expected.end());
-    for (int lab : planned)
-      if (!records.count(lab))
-        records[lab] = lab_record(lab, name, "grader_error",
-                                  "no result: this lab's grading did not finish (the run was killed, or has not "
-                                  "reached it); grade again to continue");
+    json submission;
+    std::map<int, json> records =
+        student_records(students_dir ? students_dir->existing_folder(name) : std::nullopt, name, submission, labs_expected);
     json labs = json::array();
     int passed = 0;
     for (auto& [lab, r] : records) {
@@ -221,54 +367,263 @@ MergeSummary merge_grades(const fs::path& out_dir, const std::vector<std::string
       by_status[status]++;
       passed += status == "passed";
       summary.grader_errors += status == "grader_error";
+      summary.missing += status == "missing";
       r.erase("schema");
       r.erase("version");
       r.erase("student");
-      labs.push_back(r);
+      labs.push_back(std::move(r));
     }
     summary.labs += static_cast<int>(labs.size());
     summary.passed += passed;
     json student = {{"name", name},
-                    {"source", submission.is_object() ? submission.value("source", "") : ""},
+                    {"source", submission.is_object() ? submission.value("source", json("")) : json("")},
                     {"score", passed},
                     {"max_score", labs.size()},
                     {"labs", labs}};
     if (submission.is_object() && submission.contains("error")) student["error"] = submission["error"];
-    students.push_back(student);
+    students.push_back(std::move(student));
   }
   summary.students = static_cast<int>(students.size());
-
-  json labs = json::array();
-  for (int n : all_labs) {
-    const Lab* l = find_lab(n);
-    labs.push_back({{"lab", n}, {"slug", l ? l->slug : ""}, {"title", l ? l->title : ""},
-                    {"files", l ? l->exercise_files : std::vector<std::string>{}}});
-  }
-  int all_passed = 0;
-  for (const auto& s : students) all_passed += s["score"] == s["max_score"];
-  const json report = {{"schema", "shadowlab-grade"},
-                       {"version", kGradeSchemaVersion},
-                       {"generated", utc_now()},
-                       {"statuses", kGradeStatuses},
-                       {"labs", labs},
-                       {"summary",
-                        {{"students", summary.students},
-                         {"students_all_passed", all_passed},
-                         {"labs_graded", summary.labs},
-                         {"by_status", by_status}}},
-                       {"students", students}};
-  write_text_atomic(out_dir / "results.json", report.dump(2) + "\n");
-  write_csv(out_dir / "results.csv", students);
-  write_junit(out_dir / "junit.xml", students);
-  summary.written = {(out_dir / "results.json").string(), (out_dir / "results.csv").string(),
-                     (out_dir / "junit.xml").string()};
-  for (const auto& s : students) {
-    const fs::path dir = out_dir / "gradescope" / s.value("name", "");
-    fs::create_directories(dir);
-    write_text_atomic(dir / "results.json", gradescope_results(s).dump(2) + "\n");
-  }
-  summary.written.push_back((out_dir / "gradescope" / "<student>" / "results.json").string());
+  write_reports(out, std::move(students), all_labs, summary, by_status);
+  for (const char* file : {"results.json", "results.csv", "junit.xml"}) summary.written.push_back((out.path() / file).string());
+  summary.written.push_back((out.path() / "gradescope" / "<student>" / "results.json").string());
   return summary;
 }
+
+// ---- OutFolder ------------------------------------------------------------------------------------
+
+namespace {
+
+void check_name(const fs::path& folder, const std::string& name) {
+  if (name.empty() || name == "." || name == ".." || name.find_first_of(std::string("/\\") + '\0') != std::string::npos)
+    throw std::runtime_error((folder / report_text(name)).string() + ": not a name for a file in the output folder");
+}
+
+}  // namespace
+
+OutFolder::OutFolder(OutFolder&& other) noexcept : path_(std::move(other.path_)), fd_(other.fd_) { other.fd_ = -1; }
+
+OutFolder& OutFolder::operator=(OutFolder&& other) noexcept {
+  std::swap(path_, other.path_);
+  std::swap(fd_, other.fd_);
+  return *this;
+}
+
+std::optional<std::string> OutFolder::read(const std::string& name, std::uint64_t max_bytes) const {
+  return read_file(name, max_bytes, false);
+}
+
+std::string OutFolder::read_tail(const std::string& name, std::uint64_t max_bytes) const {
+  return read_file(name, max_bytes, true).value_or("");
+}
+
+#if !defined(_WIN32)
+
+namespace {
+
+[[noreturn]] void fail_at(const fs::path& path, const char* what) {
+  throw std::runtime_error(path.string() + ": " + what + ": " + std::strerror(errno));
+}
+
+// Removes `name` inside the folder `dir`: a folder with everything in it, anything else (a link
+// itself) unlinked; never follows a link. False when something could not be removed.
+bool remove_at(int dir, const char* name) {
+  struct stat st {};
+  if (::fstatat(dir, name, &st, AT_SYMLINK_NOFOLLOW) != 0) return errno == ENOENT;
+  if (!S_ISDIR(st.st_mode)) return ::unlinkat(dir, name, 0) == 0 || errno == ENOENT;
+  const int fd = ::openat(dir, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  DIR* entries = fd >= 0 ? ::fdopendir(fd) : nullptr;
+  if (!entries) {
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  bool ok = true;
+  while (const dirent* e = ::readdir(entries))
+    if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0) ok = remove_at(::dirfd(entries), e->d_name) && ok;
+  ::closedir(entries);
+  return ::unlinkat(dir, name, AT_REMOVEDIR) == 0 && ok;
+}
+
+bool write_all(int fd, std::string_view bytes) {
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
+OutFolder::OutFolder(const fs::path& dir) : path_(dir), fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+  if (fd_ < 0) fail_at(dir, "cannot open the output folder");
+}
+
+OutFolder::~OutFolder() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+OutFolder OutFolder::folder(const std::string& name, unsigned mode) const {
+  check_name(path_, name);
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const int fd = ::openat(fd_, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd >= 0) return OutFolder(path_ / name, fd);
+    if (errno == ELOOP || errno == ENOTDIR) remove_at(fd_, name.c_str());  // a planted link or file: replaced
+    else if (errno != ENOENT) break;
+    if (::mkdirat(fd_, name.c_str(), static_cast<mode_t>(mode)) != 0 && errno != EEXIST) break;
+  }
+  fail_at(path_ / name, "cannot make the folder");
+}
+
+std::optional<OutFolder> OutFolder::existing_folder(const std::string& name) const {
+  check_name(path_, name);
+  const int fd = ::openat(fd_, name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  return OutFolder(path_ / name, fd);
+}
+
+void OutFolder::write(const std::string& name, std::string_view text) const {
+  check_name(path_, name);
+  static std::atomic<unsigned> counter{0};
+  const std::string tmp = "." + name + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp";
+  const int fd = ::openat(fd_, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) fail_at(path_ / name, "cannot write");
+  bool ok = write_all(fd, text);
+  ok = ::close(fd) == 0 && ok;
+  // A rename replaces a file or a link; a folder planted in the file's place is removed first.
+  if (ok && ::renameat(fd_, tmp.c_str(), fd_, name.c_str()) != 0)
+    ok = (errno == EISDIR || errno == ENOTEMPTY || errno == EEXIST) && remove_at(fd_, name.c_str()) &&
+         ::renameat(fd_, tmp.c_str(), fd_, name.c_str()) == 0;
+  if (!ok) {
+    const int e = errno;
+    ::unlinkat(fd_, tmp.c_str(), 0);
+    errno = e;
+    fail_at(path_ / name, "cannot write");
+  }
+}
+
+void OutFolder::fresh_file(const std::string& name) const {
+  check_name(path_, name);
+  remove_at(fd_, name.c_str());
+  const int fd = ::openat(fd_, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) fail_at(path_ / name, "cannot create");
+  ::close(fd);
+}
+
+bool OutFolder::remove(const std::string& name) const {
+  check_name(path_, name);
+  return remove_at(fd_, name.c_str());
+}
+
+std::optional<std::string> OutFolder::read_file(const std::string& name, std::uint64_t max_bytes, bool tail) const {
+  check_name(path_, name);
+  struct stat st {};
+  // Checked before it is opened (a device is never opened), and again on the handle.
+  if (::fstatat(fd_, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+  const int fd = ::openat(fd_, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  std::optional<std::string> text;
+  const auto size = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::uint64_t>(st.st_size) : ~0ull;
+  if (size != ~0ull && (tail || size <= max_bytes)) {
+    const std::uint64_t from = size > max_bytes ? size - max_bytes : 0;
+    std::string bytes(static_cast<std::size_t>(size - from), '\0');
+    std::size_t got = 0;
+    while (got < bytes.size()) {
+      const ssize_t n = ::pread(fd, bytes.data() + got, bytes.size() - got, static_cast<off_t>(from + got));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    bytes.resize(got);
+    text = std::move(bytes);
+  }
+  ::close(fd);
+  return text;
+}
+
+std::vector<std::string> OutFolder::names(bool folders_only) const {
+  std::vector<std::string> out;
+  const int fd = ::openat(fd_, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);  // its own position in the listing
+  DIR* entries = fd >= 0 ? ::fdopendir(fd) : nullptr;
+  if (!entries) {
+    if (fd >= 0) ::close(fd);
+    fail_at(path_, "cannot list the folder");
+  }
+  while (const dirent* e = ::readdir(entries)) {
+    if (std::strcmp(e->d_name, ".") == 0 || std::strcmp(e->d_name, "..") == 0) continue;
+    struct stat st {};
+    if (folders_only && (::fstatat(fd_, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISDIR(st.st_mode))) continue;
+    out.emplace_back(e->d_name);
+  }
+  ::closedir(entries);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+#else  // by path: the same refusals, without the handles (a link swapped between check and use is not caught)
+
+OutFolder::OutFolder(const fs::path& dir) : path_(dir) {
+  if (!fs::is_directory(dir)) throw std::runtime_error(dir.string() + ": cannot open the output folder");
+}
+
+OutFolder::~OutFolder() = default;
+
+OutFolder OutFolder::folder(const std::string& name, unsigned) const {
+  check_name(path_, name);
+  const fs::path p = path_ / name;
+  std::error_code ec;
+  if (fs::is_symlink(p, ec) || (fs::exists(p, ec) && !fs::is_directory(p, ec))) fs::remove(p, ec);
+  fs::create_directory(p, ec);
+  if (!fs::is_directory(fs::symlink_status(p, ec))) throw std::runtime_error(p.string() + ": cannot make the folder");
+  return OutFolder(p, -1);
+}
+
+std::optional<OutFolder> OutFolder::existing_folder(const std::string& name) const {
+  check_name(path_, name);
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(path_ / name, ec))) return std::nullopt;
+  return OutFolder(path_ / name, -1);
+}
+
+void OutFolder::write(const std::string& name, std::string_view text) const {
+  check_name(path_, name);
+  remove(name);
+  write_text_atomic(path_ / name, std::string(text));
+}
+
+void OutFolder::fresh_file(const std::string& name) const { write(name, ""); }
+
+bool OutFolder::remove(const std::string& name) const {
+  check_name(path_, name);
+  std::error_code ec;
+  fs::remove_all(path_ / name, ec);  // a link itself, not what it points to
+  return !ec;
+}
+
+std::optional<std::string> OutFolder::read_file(const std::string& name, std::uint64_t max_bytes, bool tail) const {
+  check_name(path_, name);
+  std::error_code ec;
+  const fs::path p = path_ / name;
+  if (!fs::is_regular_file(fs::symlink_status(p, ec))) return std::nullopt;
+  const std::uint64_t size = fs::file_size(p, ec);
+  if (ec || (!tail && size > max_bytes)) return std::nullopt;
+  std::ifstream in(p, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(size > max_bytes ? size - max_bytes : 0));
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> OutFolder::names(bool folders_only) const {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(path_, ec))
+    if (!folders_only || fs::is_directory(e.symlink_status(ec))) out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+#endif
 
 }  // namespace shadowlab

@@ -28,10 +28,17 @@ bool is_archive_name(const std::filesystem::path& path);
 // anything but letters, digits and . _ - @ + replaced by _.
 std::string submission_name(const std::filesystem::path& path);
 
-// Unpacks `archive` into the empty folder `into`. Refuses (SubmissionError naming the entry) absolute
-// paths, entries that leave the folder, links, devices, and more than the limits allow; counts the bytes
-// actually written, not what the headers claim.
+// Unpacks `archive` into the empty folder `into`. Refuses (SubmissionError naming the entry, paths
+// relative to the submission) absolute paths, entries that leave the folder, links, devices, sparse
+// files and files with holes, an entry whose header declares more than the limits allow (before a byte
+// of it is written) or more bytes than it holds, and more than the limits allow in all; counts what is
+// really written, not what the headers claim.
 void unpack_archive(const std::filesystem::path& archive, const std::filesystem::path& into, const UnpackLimits& limits = {});
+
+// `text` with the grading machine's `folder` taken out of the paths in it, so that a student reads
+// "labs/02_ortho_fit/exercise.cpp", not where the submission was unpacked: every "<folder>/" (its
+// absolute path, and its real path) is removed.
+std::string relative_to(std::string text, const std::filesystem::path& folder);
 
 // The folder to grade inside an unpacked or given submission: the one holding labs/, either the
 // submission itself or its single top-level folder (archives often wrap everything in one). Throws

@@ -45,6 +45,24 @@ PY
 
 stock() { mkdir -p "$tmp/subs/stock" && cp -r "$src/labs" "$tmp/subs/stock/"; }  # the exercises as handed out
 
+hostile() { python3 "$src/tests/hostile_submissions.py" "$@"; }  # the cheat corpus: make OUT KIND... / check GRADES EXPECTED
+# peak_kb FILE COMMAND...: runs COMMAND; FILE gets the peak resident memory (KB) of it or of a process it waited for.
+peak_kb() {
+  python3 -c 'import resource, subprocess, sys
+code = subprocess.run(sys.argv[2:]).returncode
+open(sys.argv[1], "w").write("%d\n" % resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+sys.exit(code)' "$@"
+}
+# plant PATH dir|file: a link at $tmp/out/PATH to a canary of that kind outside --out ($tmp/outside/...).
+plant() {
+  local target
+  target="$tmp/outside/$(echo "$1" | tr / _)"
+  mkdir -p "$tmp/outside" "$(dirname "$tmp/out/$1")"
+  if [ "$2" = dir ]; then mkdir -p "$target" && echo canary >"$target/keep"; else echo canary >"$target"; fi
+  ln -s "$target" "$tmp/out/$1"
+}
+outside_state() { (cd "$tmp/outside" && find . -printf '%p %y %s\n' | sort && find . -type f -exec sha1sum {} + | sort); }
+
 case "$case_name" in
   grade_usage)  # usage errors exit 2 with one line naming the problem, before anything is graded
     mkdir -p "$tmp/a/alice/labs" "$tmp/b/alice/labs"
@@ -121,7 +139,7 @@ PY
     [ $? -eq 1 ] || fail "exit $? (expected 1): $(cat "$tmp/log")"
     [ "$(status_of "$tmp/out" plain 2)" = passed ] || fail "plain.zip: $(message_of "$tmp/out" plain 2)"
     [ "$(status_of "$tmp/out" wrapped 2)" = passed ] || fail "wrapped.tar.gz: $(message_of "$tmp/out" wrapped 2)"
-    for refused in "escape|leaves the submission's folder" "absolute|absolute path" "link|is a link" "bomb|more than 16 MB" "junk|cannot open as zip or tar"; do
+    for refused in "escape|leaves the submission's folder" "absolute|absolute path" "link|is a link" "bomb|more than the 16 MB a file may have" "junk|cannot open as zip or tar"; do
       name="${refused%%|*}" words="${refused#*|}"
       [ "$(status_of "$tmp/out" "$name" 2)" = failed ] || fail "$name: $(status_of "$tmp/out" "$name" 2)"
       message_has "$tmp/out" "$name" 2 "submission refused: " || fail "$name: $(message_of "$tmp/out" "$name" 2)"
@@ -246,6 +264,92 @@ PY
     expect_exit 1 "" "$bin" grade "$tmp/subs/hog" --lab 2 --out "$tmp/memory"
     [ "$(status_of "$tmp/memory" hog 2)" = crashed ] && message_has "$tmp/memory" hog 2 "SIGABRT" \
       || fail "memory: $(status_of "$tmp/memory" hog 2): $(message_of "$tmp/memory" hog 2)"
+    ;;
+  grade_hostile_text)  # names and bytes that are not UTF-8, ESC/CR/LF in an entry, a formula-like name: valid, exact reports
+    hostile make "$tmp/h" latin1_archive_name latin1_entry control_entry latin1_bytes formula_name file_for_folder not_archive \
+      syntax absent || fail "generator"
+    "$bin" grade "$tmp"/h/submissions/* --lab 0,2 --out "$tmp/out" >"$tmp/log" 2>&1
+    code=$?
+    [ "$code" -eq 1 ] || fail "exit $code (expected 1: some labs fail, none by the grader's fault): $(tail -3 "$tmp/log")"
+    hostile check "$tmp/out" "$tmp/h/expected.json" || fail "the reports (above)"
+    ;;
+  grade_archive_limits)  # sparse members, lying headers, a 1 GB file: refused unread and unwritten; the grader's memory stays small
+    hostile make "$tmp/h" sparse_1g sparse_4g liar_tar liar_zip_big liar_zip_small huge_file || fail "generator"
+    peak_kb "$tmp/peak" "$bin" grade "$tmp"/h/submissions/* --lab 0,2 --out "$tmp/out" >"$tmp/log" 2>&1
+    code=$?
+    [ "$code" -eq 1 ] || fail "exit $code (expected 1): $(tail -3 "$tmp/log")"
+    hostile check "$tmp/out" "$tmp/h/expected.json" || fail "the reports (above)"
+    peak=$(($(cat "$tmp/peak") / 1024))
+    echo "the grader's peak resident memory: $peak MB"
+    [ "$peak" -lt 200 ] || fail "the grader took $peak MB for submissions that are all refused"
+    big=$(find "$tmp/out" -type f -size +1M)
+    [ -z "$big" ] || fail "a refused member was written: $big"
+    ;;
+  grade_out_links)  # links planted in --out where grade writes: replaced, never followed; a planted grade is never read
+    stock
+    mkdir -p "$tmp/z" && cp -r "$src/labs" "$tmp/z/" && (cd "$tmp/z" && zip -qr "$tmp/subs/zipped.zip" labs) || fail "zip"
+    for p in students/stock gradescope/stock students/zipped/lab_00 students/zipped/lab_00.tmp students/zipped/unpacked; do
+      plant "$p" dir
+    done
+    for p in students/zipped/lab_00.log students/zipped/lab_00.check.json students/zipped/lab_00.json \
+             students/zipped/submission.json gradescope/zipped/results.json results.json results.csv junit.xml \
+             parallel.joblog .submissions.list; do
+      plant "$p" file
+    done
+    before=$(outside_state)
+    "$bin" grade "$tmp/subs/stock" "$tmp/subs/zipped.zip" --lab 0 --jobs 2 --images all --out "$tmp/out" >"$tmp/log" 2>&1 &
+    pid=$!
+    limit=unlimited  # the grader's own address space, read while it runs
+    while kill -0 "$pid" 2>/dev/null; do
+      l=$(awk '/^Max address space/ {print $4}' "/proc/$pid/limits" 2>/dev/null)
+      [ -n "$l" ] && [ "$l" != unlimited ] && limit=$l
+      sleep 0.05
+    done
+    wait "$pid"
+    code=$?
+    [ "$code" -eq 1 ] || fail "exit $code (expected 1): $(tail -3 "$tmp/log")"
+    [ "$(outside_state)" = "$before" ] || fail "written outside --out through a planted link: $(diff <(echo "$before") <(outside_state))"
+    for s in stock zipped; do [ "$(status_of "$tmp/out" $s 0)" = failed ] || fail "$s: $(status_of "$tmp/out" $s 0)"; done
+    left=$(cd "$tmp/out" && find . -type l)
+    [ -z "$left" ] || fail "links left in --out: $left"
+    [ -s "$tmp/out/parallel.joblog" ] && [ -s "$tmp/out/gradescope/zipped/results.json" ] && [ -n "$(ls "$tmp/out/students/zipped/lab_00/"*_diff.png)" ] \
+      || fail "the outputs are not where they belong: $(cd "$tmp/out" && find . | sort)"
+    if ldd "$bin" | grep -q libasan; then echo "sanitizer build: no memory limit of its own"; else
+      [ "$limit" != unlimited ] && [ "$limit" -le $((4 << 30)) ] || fail "the grader's own address space: $limit"
+      echo "the grader's own address-space limit: $((limit >> 20)) MB"
+    fi
+    # A students/ or gradescope/ folder that is a link, to a folder with a forged record that passes:
+    # nothing is read or written through it; the merge finds no result.
+    rm -rf "$tmp/out" "$tmp/outside"
+    plant gradescope dir
+    plant students dir
+    mkdir "$tmp/outside/students/stock"
+    echo '{"name": "stock", "labs": [0]}' >"$tmp/outside/students/stock/submission.json"
+    echo '{"schema": "shadowlab-grade-lab", "version": 2, "student": "stock", "lab": 0, "slug": "basic_shadow_map",
+           "status": "passed", "message": "forged", "criteria": []}' >"$tmp/outside/students/stock/lab_00.json"
+    before=$(outside_state)
+    expect_exit 3 "" "$bin" grade --merge "$tmp/subs/stock" --lab 0 --out "$tmp/out"
+    [ "$(outside_state)" = "$before" ] || fail "--merge wrote outside --out"
+    python3 -c "import json,sys; l=json.load(open(sys.argv[1]))['students'][0]['labs'][0]; assert l['status']=='grader_error' and 'no result' in l['message'], l" \
+      "$tmp/out/results.json" || fail "the merge read a record through a planted link"
+    expect_exit 1 "" "$bin" grade "$tmp/subs/stock" --lab 0 --out "$tmp/out"
+    [ "$(outside_state)" = "$before" ] || fail "grade wrote outside --out"
+    [ "$(status_of "$tmp/out" stock 0)" = failed ] && [ ! -L "$tmp/out/students" ] && [ ! -L "$tmp/out/gradescope" ] \
+      || fail "the planted students/ or gradescope/ link was used"
+    ;;
+  grade_hostile_class)  # one class: normal students graded right beside one hostile submission of each kind, through GNU parallel
+    hostile make "$tmp/h" right wrong absent syntax latin1_archive_name latin1_entry control_entry latin1_bytes formula_name \
+      sparse_1g sparse_4g liar_tar liar_zip_big liar_zip_small huge_file file_for_folder not_archive || fail "generator"
+    plant students/right/lab_02.log file
+    plant students/wrong/lab_00 dir
+    before=$(outside_state)
+    start=$(date +%s)
+    "$bin" grade "$tmp"/h/submissions/* --lab 0,2 --jobs 2 --out "$tmp/out" >"$tmp/log" 2>&1
+    code=$?
+    echo "17 submissions graded in $(($(date +%s) - start)) s through GNU parallel, exit $code"
+    [ "$code" -eq 1 ] || fail "exit $code (expected 1): $(tail -5 "$tmp/log")"
+    hostile check "$tmp/out" "$tmp/h/expected.json" || fail "the reports (above)"
+    [ "$(outside_state)" = "$before" ] || fail "written outside --out through a planted link"
     ;;
   grade_class_small)  # the class in small: 12 generated submissions, every status, GNU parallel, all reports
     # (SHADOWLAB_CLASS_SIZE=300 for the whole class; SHADOWLAB_CLASS_JOBS for other than 2 jobs)

@@ -8,7 +8,7 @@ Each lab of each student is one of:
   right          a correct answer from tests/answers/<NN_slug>/right/ (or the lab's solution)  -> passed
   wrong          a plausible wrong answer from tests/answers/<NN_slug>/wrong/                  -> failed
   stock          the exercise as handed out                                                      -> failed
-  missing        the file not submitted                                                          -> failed
+  missing        the file not submitted                                                          -> missing
   syntax_error   a right answer with a line that does not parse                                  -> compile_error
   semantic_error a right answer using an undeclared name inside the function                     -> compile_error
   endless_loop   a right answer that loops (nested loops, each too long to finish)               -> timed_out
@@ -106,7 +106,7 @@ def broken(text, kind, cpp, entry):
     raise ValueError(kind)
 
 
-EXPECTED = {"right": "passed", "wrong": "failed", "stock": "failed", "missing": "failed",
+EXPECTED = {"right": "passed", "wrong": "failed", "stock": "failed", "missing": "missing",
             "syntax_error": "compile_error", "semantic_error": "compile_error", "endless_loop": "timed_out",
             "crash": "crashed", "forbidden_call": "crashed"}
 
