@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -143,7 +142,7 @@ void classify(const Run& run, const platform::ChildOutcome& o, const OutFolder& 
   if (o.kind == Kind::TimedOut)
     return set("timed_out", "no result within " + std::to_string(static_cast<int>(run.options.timeout)) +
                                 " s (wall clock): the check was stopped");
-  if (o.kind == Kind::Signalled && (o.signal == SIGXCPU || (o.signal == SIGKILL && o.cpu_seconds >= run.options.cpu_time)))
+  if (platform::stopped_at_cpu_limit(o, run.options.cpu_time))
     return set("timed_out", "no result after " + std::to_string(static_cast<int>(run.options.cpu_time)) +
                                 " s of CPU time: the check was stopped (an endless loop, or an exercise far slower "
                                 "than the solution)");

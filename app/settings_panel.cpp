@@ -87,7 +87,10 @@ void SettingsSession::draw_presets(int lab, ParamSet& params) {
     }
     ImGui::EndCombo();
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Saved in %s", settings_.path().c_str());
+  if (ImGui::IsItemHovered()) {
+    const std::u8string path = settings_.path().u8string();  // ImGui's text is UTF-8; a Windows path is wide
+    ImGui::SetTooltip("Saved in %s", reinterpret_cast<const char*>(path.c_str()));
+  }
   if (!message_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.3f, 1.0f));
     ImGui::TextWrapped("%s", message_.c_str());

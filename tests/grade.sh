@@ -339,14 +339,15 @@ PY
     ;;
   grade_hostile_class)  # one class: normal students graded right beside one hostile submission of each kind, through GNU parallel
     hostile make "$tmp/h" right wrong absent syntax latin1_archive_name latin1_entry control_entry latin1_bytes formula_name \
-      sparse_1g sparse_4g liar_tar liar_zip_big liar_zip_small huge_file file_for_folder not_archive || fail "generator"
+      sparse_1g sparse_4g liar_tar liar_zip_big liar_zip_small huge_file file_for_folder not_archive \
+      cpp_main cpp_dup cpp_digraph_include cpp_escape_at_call || fail "generator"
     plant students/right/lab_02.log file
     plant students/wrong/lab_00 dir
     before=$(outside_state)
     start=$(date +%s)
     "$bin" grade "$tmp"/h/submissions/* --lab 0,2 --jobs 2 --out "$tmp/out" >"$tmp/log" 2>&1
     code=$?
-    echo "17 submissions graded in $(($(date +%s) - start)) s through GNU parallel, exit $code"
+    echo "21 submissions graded in $(($(date +%s) - start)) s through GNU parallel, exit $code"
     [ "$code" -eq 1 ] || fail "exit $code (expected 1): $(tail -5 "$tmp/log")"
     hostile check "$tmp/out" "$tmp/h/expected.json" || fail "the reports (above)"
     [ "$(outside_state)" = "$before" ] || fail "written outside --out through a planted link"

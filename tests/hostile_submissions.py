@@ -25,6 +25,15 @@ are not UTF-8 shown as \\xNN, control characters escaped):
   file_for_folder                a zip with a file where labs/ goes: refused, libarchive's message
                                  without the grading machine's path
   not_archive                    'notes.rar': neither a folder nor an archive, named without its path
+  cpp_main                       lab 2 with a main() of its own that forges lab 0's record (lab 0 is the
+                                 stock exercise, failed) and writes beside the class: compile_error
+                                 (the screen), and nothing forged or written
+  cpp_dup                        lab 2 replacing dup(), which the host calls before its own filter:
+                                 compile_error
+  cpp_digraph_include            lab 2 including the solution's source as %:include: compile_error, the
+                                 file not found (the build's sandbox has no renderer sources)
+  cpp_escape_at_call             lab 2 whose exercise function forges lab 0's record and writes beside
+                                 the class when called (it passes every screen): crashed, SIGSYS
 
 `check` reads results.json, results.csv, junit.xml, gradescope/<student>/results.json and every
 students/*/lab_NN.json: each is valid UTF-8 without raw ESC or CR; every status and message as
@@ -176,7 +185,45 @@ def make(out, kind):
         with open(os.path.join(subs, "notes.rar"), "w") as f:
             f.write("not a zip or tar")
         return "notes.rar", refused("notes.rar: neither a folder nor a .zip/.tar archive")
+    if kind.startswith("cpp_"):
+        return kind, cpp_attack(out, subs, kind)
     raise SystemExit("hostile_submissions: unknown kind " + kind)
+
+
+# What a hostile C++ exercise tries: lab 0's record in its own output folder (the check's TMPDIR is a
+# folder beside it) forged as passed, and a file written beside the class.
+ESCAPE = r"""
+  if (const char* tmp = std::getenv("TMPDIR")) {
+    if (std::FILE* f = std::fopen((std::string(tmp) + "/../lab_00.json").c_str(), "w"))
+      std::fputs("{\"lab\": 0, \"status\": \"passed\", \"message\": \"forged\"}", f);
+  }
+  if (std::FILE* f = std::fopen("%s", "w")) std::fputs("escaped", f);
+"""
+
+
+def cpp_attack(out, subs, kind):
+    escaped = os.path.join(os.path.abspath(out), "escaped_" + kind)
+    escape = (ESCAPE % escaped).encode()
+    head = b"#include <cstdio>\n#include <cstdlib>\n#include <string>\n#include <fcntl.h>\n#include <unistd.h>\n"
+    right = right_cpp()
+    if kind == "cpp_main":
+        text, labs2 = head + right + b"\nint main() {" + escape + b"  return 0;\n}\n", ("compile_error", ["defines main"])
+    elif kind == "cpp_dup":
+        text = head + right + b"\nextern \"C\" int dup(int fd) {" + escape + b"  return fcntl(fd, F_DUPFD, 0);\n}\n"
+        labs2 = ("compile_error", ["defines dup"])
+    elif kind == "cpp_digraph_include":
+        text, labs2 = b'%:include "renderer/light.cpp"\n' + right, ("compile_error", ["renderer/light.cpp: No such file"])
+    elif kind == "cpp_escape_at_call":
+        at = right.index(b"{", right.index(b"ortho_fit_exercise(")) + 1
+        text, labs2 = head + right[:at] + escape + right[at:], ("crashed", ["SIGSYS"])
+    else:
+        raise SystemExit("hostile_submissions: unknown kind " + kind)
+    folder(os.path.join(subs, kind), {LAB0: open(ROOT + "/" + LAB0, "rb").read(), LAB2: text})
+    MUST_NOT_EXIST.append(escaped)
+    return {"0": ("failed", ["criteria failed"]), "2": labs2}
+
+
+MUST_NOT_EXIST = []
 
 
 def main_make(out, kinds):
@@ -186,7 +233,7 @@ def main_make(out, kinds):
         student, labs = make(out, kind)
         expected[student] = {"kind": kind, "labs": {lab: {"status": s, "words": w} for lab, (s, w) in labs.items()}}
     with open(os.path.join(out, "expected.json"), "w") as f:
-        json.dump({"students": expected, "folders": [os.path.abspath(out)]}, f, indent=1)
+        json.dump({"students": expected, "folders": [os.path.abspath(out)], "must_not_exist": MUST_NOT_EXIST}, f, indent=1)
 
 
 def read_utf8(path, problems):
@@ -264,6 +311,7 @@ def main_check(grades, expected_path):
     problems = []
     check_json_reports(grades, spec["students"], spec["folders"] + [os.path.abspath(grades)], problems)
     check_csv_junit(grades, spec["students"], problems)
+    problems += ["written outside --out by a student's code: " + p for p in spec.get("must_not_exist", []) if os.path.exists(p)]
     for p in problems:
         print("PROBLEM:", p)
     print("%d hostile and normal submissions: %s" % (len(spec["students"]), "%d problems" % len(problems) if problems else "as expected"))
