@@ -1,6 +1,7 @@
 #include "labs/cpp_exercise.h"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -206,8 +207,10 @@ std::string command_line(const std::vector<std::string>& argv) {
 std::string build_file(const fs::path& out, const std::string& name) {
   const fs::path p = out / name;
   if (fs::is_symlink(p) || !fs::is_regular_file(p)) return "";
-  std::string text = read_file(p);
-  if (text.size() > (1u << 20)) text.resize(1u << 20);
+  std::ifstream in(p, std::ios::binary);
+  std::string text(1u << 20, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
   return text;
 }
 
