@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/imgui_gl.h"
 #include "renderer/gl.h"
 #include "renderer/gl_objects.h"
 #include "renderer/image_io.h"
@@ -36,7 +37,7 @@ UiFonts ImGuiOffscreen::use_fonts(const std::filesystem::path& folder, const UiS
   std::string warning;
   UiFonts fonts = build_ui_fonts(*ImGui::GetIO().Fonts, folder, scale.raster, &warning);
   if (!warning.empty()) std::fprintf(stderr, "shadowlab: warning: %s\n", warning.c_str());
-  ImGui_ImplOpenGL3_DestroyFontsTexture();  // made again, from the new atlas, by the next NewFrame
+  drop_font_texture();  // made again, from the new atlas, by the next NewFrame
   apply_ui_style(scale);
   return fonts;
 }

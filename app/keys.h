@@ -2,8 +2,9 @@
 // 1.86 (Debian 12) indexes keys by the platform backend's codes (GLFW_KEY_F12); 1.87 named every key
 // (ImGuiKey_F12) and 1.89 made ImGuiKey a strongly typed enum, so GLFW codes no longer compile there
 // (Ubuntu 24.04 and Debian 13 ship 1.90). Built here against 1.86; the 1.87+ branch follows ImGui's
-// documented API (imgui.h, ImGuiKey_; ocornut/imgui#4921) and is compiled against a stand-in of 1.89+'s
-// declarations (tests/compat/imgui190).
+// documented API (imgui.h, ImGuiKey_; ocornut/imgui#4921) and is compiled against stand-ins of 1.90's
+// and 1.92's declarations (tests/compat/imgui190, tests/compat/imgui192). Supported: 1.86 to 1.92; the
+// OpenGL side of the seam (texture IDs, the font texture) is app/imgui_gl.h.
 #pragma once
 
 #include <imgui.h>

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <cstdio>
 
 #include <imgui.h>
 
+#include "app/imgui_gl.h"
 #include "labs/check.h"
 #include "renderer/soft_truth.h"
 
@@ -91,8 +91,7 @@ bool draw_penumbra_window(PenumbraPanelState& state, const std::string& current_
       }
       const ImVec2 avail = ImGui::GetContentRegionAvail();
       const float scale = std::min(avail.x / static_cast<float>(m.width), std::max(avail.y, 60.0f) / static_cast<float>(m.height));
-      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(state.texture.id())),
-                   ImVec2(static_cast<float>(m.width) * scale, static_cast<float>(m.height) * scale));
+      gl_image(state.texture.id(), ImVec2(static_cast<float>(m.width) * scale, static_cast<float>(m.height) * scale));
     }
   }
   ImGui::End();

@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include "app/imgui_gl.h"
+
 namespace shadowlab {
 
 namespace {
@@ -145,8 +147,7 @@ void Magnifier::draw() const {
                    ImGuiWindowFlags_NoNav);
   const ImVec2 at = ImGui::GetCursorScreenPos();
   // The texture's rows run bottom-up: flip v.
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture_.id())), ImVec2(side, side), ImVec2(0, 1),
-               ImVec2(1, 0));
+  gl_image(texture_.id(), ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 c(at.x + side / 2, at.y + side / 2);
   draw->AddLine(ImVec2(c.x - 8, c.y), ImVec2(c.x + 8, c.y), IM_COL32(255, 60, 60, 255));

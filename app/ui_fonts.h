@@ -45,7 +45,7 @@ UiScale plan_ui_scale(float content_scale, float pixels_per_point, float text_si
 
 // Clears `atlas` and loads the fonts from `folder` (assets/fonts) at kBaseFontPixels x raster. When a
 // file is missing or unreadable, ImGui's default font is used in its place and `warning` (if given)
-// names the file. The caller recreates the GPU texture (ImGui_ImplOpenGL3_CreateFontsTexture).
+// names the file. The caller recreates the GPU texture (app/imgui_gl.h).
 UiFonts build_ui_fonts(ImFontAtlas& atlas, const std::filesystem::path& folder, float raster, std::string* warning = nullptr);
 
 // Resets the current ImGui context's style to the dark theme at ImGui's default sizes, then scales it.

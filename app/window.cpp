@@ -27,6 +27,7 @@
 #include "app/camera_input.h"
 #include "app/exit_codes.h"
 #include "app/headless.h"
+#include "app/imgui_gl.h"
 #include "app/input_script.h"
 #include "app/keys.h"
 #include "app/panel_lab.h"
@@ -334,8 +335,7 @@ void update_ui_scale(App& app) {
   std::string warning;
   app.fonts = build_ui_fonts(*ImGui::GetIO().Fonts, data_dir() / "assets" / "fonts", next.raster, &warning);
   if (!warning.empty()) std::fprintf(stderr, "shadowlab: warning: %s\n", warning.c_str());
-  ImGui_ImplOpenGL3_DestroyFontsTexture();
-  ImGui_ImplOpenGL3_CreateFontsTexture();
+  remake_font_texture();
   apply_ui_style(next);
   app.resize_panel = true;
 }
