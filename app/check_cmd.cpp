@@ -9,6 +9,7 @@
 #include "app/grade_report.h"
 #include "app/headless.h"
 #include "labs/check.h"
+#include "labs/platform_process.h"
 #include "renderer/context.h"
 #include "renderer/image_io.h"
 
@@ -63,6 +64,8 @@ void print_result(const CheckResult& r) {
 
 int run_check(const CheckOptions& options) {
   try {
+    if (!options.submission.empty() && !platform::grading_unavailable().empty())
+      throw std::runtime_error("--submission: " + platform::grading_unavailable());  // not a Linux build
     const std::vector<int> numbers = parse_lab_list(options.labs);
     if (numbers.empty()) throw std::runtime_error("no lab has a check yet");
     for (int number : numbers) {  // a bad --set is a usage error, found before anything renders

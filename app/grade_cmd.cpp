@@ -437,6 +437,12 @@ void limit_own_memory() {
 }  // namespace
 
 int run_grade(const GradeOptions& options) {
+  // Not a Linux build: said at once, before --out is made. A usage error (2), not a grader error (3):
+  // this build can never do it, and nothing was tried.
+  if (const std::string& why = platform::grading_unavailable(); !why.empty()) {
+    std::fprintf(stderr, "shadowlab grade: %s\n", why.c_str());
+    return kExitUsage;
+  }
   // A task of a parallel or Slurm run: it goes when whoever started it goes, and takes its checks along.
   if (options.no_merge) platform::die_with_parent();
   limit_own_memory();

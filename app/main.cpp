@@ -127,7 +127,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"exercise", "solution"}))
       ->capture_default_str();
   check_cmd->add_option("--submission", check.submission,
-                        "Grade the exercise files of this folder (laid out like the project: labs/NN_slug/...) instead of yours");
+                        "Grade the exercise files of this folder (laid out like the project: labs/NN_slug/...) instead of yours "
+                        "(Linux or WSL only)");
   check_cmd->add_option("--seed", check.seed, "Seed of the held-out conditions (light directions, map sizes, ...)")
       ->capture_default_str();
   check_cmd->add_option("--scene", check.scene_file, "glTF 2.0 file to grade on instead of the lab's scene");
@@ -158,7 +159,7 @@ int main(int argc, char** argv) {
   shadowlab::GradeOptions grade;
   CLI::App* grade_cmd = app.add_subcommand(
       "grade",
-      "Grade a class: each submission's labs, each in its own process with a time and a memory limit; writes "
+      "Grade a class (Linux or WSL only): each submission's labs, each in its own process with a time and a memory limit; writes "
       "results.json, results.csv, junit.xml, gradescope/<student>/results.json. Exit 0 all passed, 1 some did "
       "not, 2 usage error, 3 grader error");
   grade_cmd->add_option("submissions", grade.submissions,

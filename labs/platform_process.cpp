@@ -341,6 +341,11 @@ void die_with_parent() {
 
 fs::path self_executable() { return fs::read_symlink("/proc/self/exe"); }
 
+const std::string& grading_unavailable() {
+  static const std::string available;
+  return available;
+}
+
 fs::path make_private_temp_dir(const std::string& prefix) {
   std::string pattern = (fs::temp_directory_path() / (prefix + "-XXXXXX")).string();
   if (!::mkdtemp(pattern.data()))
@@ -358,11 +363,15 @@ namespace shadowlab::platform {
 
 namespace fs = std::filesystem;
 
-namespace {
-std::string needs_linux(const std::string& what) {
-  return what + ": grading submissions runs student code in confined processes, which needs Linux "
-                "(a Linux machine, WSL on Windows, or a Linux cluster); this build is not for Linux";
+const std::string& grading_unavailable() {
+  static const std::string reason =
+      "grading submissions runs student code in confined processes, which needs Linux (a Linux machine, WSL "
+      "on Windows, or a Linux cluster); this build is not for Linux";
+  return reason;
 }
+
+namespace {
+std::string needs_linux(const std::string& what) { return what + ": " + grading_unavailable(); }
 }  // namespace
 
 ChildOutcome run_child(const std::vector<std::string>& argv, const ChildLimits&, const fs::path&,

@@ -104,4 +104,8 @@ std::filesystem::path self_executable();
 // A new, empty folder only we can read, under the system's temporary folder (mkdtemp).
 std::filesystem::path make_private_temp_dir(const std::string& prefix);
 
+// Empty where this build can grade submissions (Linux); elsewhere the one sentence saying what grading
+// needs, which `shadowlab grade` and `check --submission` print before they do anything.
+const std::string& grading_unavailable();
+
 }  // namespace shadowlab::platform
