@@ -7,9 +7,10 @@
 //           creates and updates the atlas texture itself (IMGUI_HAS_TEXTURES,
 //           ImGuiBackendFlags_RendererHasTextures): ImGui_ImplOpenGL3_CreateFontsTexture and
 //           DestroyFontsTexture are gone.
-// Supported: ImGui 1.86 (Debian 12: built and run here) to 1.92. Compiled, never linked or run, against
-// stand-ins of 1.91.9's and 1.92's declarations (tests/compat/imgui191, tests/compat/imgui192; targets
-// imgui191_gl_check and imgui192_seam_check), written from ImGui's imgui.h and its changelog.
+// Supported: ImGui 1.86 (Debian 12: built and run here) to 1.92 (the program as a whole: to 1.91.9, which
+// vcpkg.json pins; README, Platforms). Compiled, never linked or run, against stand-ins of 1.91.9's and
+// 1.92's declarations (tests/compat/imgui191, tests/compat/imgui192; targets imgui191_gl_check and
+// imgui192_seam_check), written from ImGui's imgui.h and its changelog.
 #pragma once
 
 #include <cstdint>

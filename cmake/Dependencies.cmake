@@ -66,7 +66,8 @@ else()
 endif()
 
 # --- stb_image_write -------------------------------------------------------------------------------------
-# Debian: pkg-config `stb`, a library holding the implementations. vcpkg: headers only (find_package(Stb)).
+# Debian: pkg-config `stb`, a library holding the implementations. vcpkg: headers only (find_package(Stb)),
+# on macOS too: Homebrew has no stb, the README's Homebrew recipe takes vcpkg's (with ImGui and tinygltf).
 shadowlab_interface(stb)
 shadowlab_link_pkg(stb stb _found)
 if(_found)
@@ -148,9 +149,15 @@ if(NOT _found)
 endif()
 
 # --- libarchive -------------------------------------------------------------------------------------------
-# CMake's own FindLibArchive (LibArchive::LibArchive, CMake >= 3.17) finds Debian's, vcpkg's and Homebrew's.
+# CMake's own FindLibArchive (LibArchive::LibArchive, CMake >= 3.17) finds Debian's and vcpkg's. Homebrew's
+# is keg-only (macOS has a libarchive of its own, without its headers), so it is found where the README's
+# recipe says: -DLibArchive_ROOT=$(brew --prefix libarchive).
 shadowlab_interface(archive)
-find_package(LibArchive 3 REQUIRED)
+find_package(LibArchive 3)
+if(NOT LibArchive_FOUND)
+  message(FATAL_ERROR "libarchive 3 not found: install vcpkg's libarchive, Debian's libarchive-dev, or Homebrew's "
+                      "libarchive, which is keg-only: configure with -DLibArchive_ROOT=$(brew --prefix libarchive)")
+endif()
 target_link_libraries(shadowlab_dep_archive INTERFACE LibArchive::LibArchive)
 
 # --- EGL (headless GL without a display; Linux) ----------------------------------------------------------
