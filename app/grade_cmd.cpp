@@ -8,9 +8,6 @@
 #include <map>
 #include <set>
 
-#if !defined(_WIN32)
-#include <sys/resource.h>
-#endif
 
 #include <nlohmann/json.hpp>
 
@@ -424,13 +421,8 @@ Run plan_run(const GradeOptions& options) {
 }
 
 void limit_own_memory() {
-#if !defined(_WIN32) && !defined(SHADOWLAB_GRADE_SANITIZED)
-  struct rlimit limit {};
-  if (::getrlimit(RLIMIT_AS, &limit) != 0) return;
-  const auto wanted = static_cast<rlim_t>(kGraderAddressSpace);
-  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= wanted) return;  // already lower
-  limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
-  ::setrlimit(RLIMIT_AS, &limit);
+#if !defined(SHADOWLAB_GRADE_SANITIZED)
+  platform::limit_own_address_space(kGraderAddressSpace);
 #endif
 }
 

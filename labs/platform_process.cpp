@@ -339,6 +339,15 @@ void die_with_parent() {
   if (::getppid() != parent) ::raise(SIGKILL);  // it died before prctl
 }
 
+void limit_own_address_space(std::uint64_t bytes) {
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0) return;
+  const auto wanted = static_cast<rlim_t>(bytes);
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= wanted) return;  // already lower
+  limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+  ::setrlimit(RLIMIT_AS, &limit);
+}
+
 fs::path self_executable() { return fs::read_symlink("/proc/self/exe"); }
 
 const std::string& grading_unavailable() {
@@ -403,6 +412,8 @@ std::string describe_signal(int signal) { return "signal " + std::to_string(sign
 bool stopped_at_cpu_limit(const ChildOutcome&, double) { return false; }
 
 void die_with_parent() {}
+
+void limit_own_address_space(std::uint64_t) {}
 
 fs::path self_executable() { throw std::runtime_error(needs_linux("shadowlab grade")); }
 

@@ -98,6 +98,10 @@ bool stopped_at_cpu_limit(const ChildOutcome& o, double cpu_limit_seconds);
 // (the parent's process-group or job-object kill covers it).
 void die_with_parent();
 
+// Lowers this process's own address-space limit (soft only, so that a child can still be given its
+// own) to `bytes`, unless it is lower already. Linux: setrlimit(RLIMIT_AS); elsewhere nothing.
+void limit_own_address_space(std::uint64_t bytes);
+
 // The running executable (Linux: /proc/self/exe; macOS: _NSGetExecutablePath; Windows: GetModuleFileName).
 std::filesystem::path self_executable();
 
