@@ -3,20 +3,13 @@
 #include <initializer_list>
 #include <type_traits>
 
-#include "app/imgui_gl.h"
+#include "tests/compat/imgui_gl_calls.h"
 #include "app/keys.h"
 
 static_assert(IMGUI_VERSION_NUM >= 19200, "the stand-in header must be found before the real imgui.h");
 static_assert(std::is_same_v<ImTextureID, ImU64>);
 
 namespace shadowlab {
-
-void every_gl_call_of_the_seam(unsigned gl_name) {
-  gl_image(gl_name, ImVec2(64, 64));
-  gl_image(gl_name, ImVec2(64, 64), ImVec2(0, 1), ImVec2(1, 0));
-  remake_font_texture();
-  drop_font_texture();
-}
 
 bool any_key_of_the_window_pressed() {
   bool any = false;
