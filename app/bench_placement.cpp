@@ -24,12 +24,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kWidth = 480, kHeight = 270;  // as the CI test (tests/test_gl_stress.cpp)
+constexpr int kPlacementWidth = 480, kPlacementHeight = 270;  // as the CI test (tests/test_gl_stress.cpp)
 
 // The grid for one technique: the error at each point, the worst difference from the origin's over the
 // offsets and over the scales, and the error without the local origin at 1e6 on the diagonal.
 nlohmann::json sweep_technique(const PlacementTechnique& t, const std::vector<PlacementPoint>& grid) {
-  const PlacementSweep sweep = sweep_placements(t, grid, kWidth, kHeight);
+  const PlacementSweep sweep = sweep_placements(t, grid, kPlacementWidth, kPlacementHeight);
   nlohmann::json points = nlohmann::json::array();
   for (std::size_t i = 0; i < grid.size(); ++i)
     points.push_back({{"placement", grid[i].label},
@@ -130,7 +130,7 @@ int run_placement_bench(const BenchOptions& options) {
     nlohmann::json rows = nlohmann::json::array();
     std::printf("Every technique at offsets 1e3..1e7 (+x, +y, +z, -x+y-z) and scales 1e-4..1e5 (%zu placements, %dx%d), "
                 "error = acne + leak against the oracle:\n\n",
-                grid.size(), kWidth, kHeight);
+                grid.size(), kPlacementWidth, kPlacementHeight);
     std::printf("| technique | error at the origin | worst difference, offsets | worst difference, scales | error at 1e6 without the local origin |\n");
     std::printf("|---|---|---|---|---|\n");
     for (const PlacementTechnique& t : placement_techniques()) {

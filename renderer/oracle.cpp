@@ -26,8 +26,6 @@ namespace shadowlab {
 
 namespace {
 
-// Threads used by evaluate(): the lab's machines have two cores, and the output does not depend on it.
-constexpr unsigned kMaxThreads = 2;
 
 // Offset of a ray origin along the surface normal: a fixed fraction of the scene's size, plus a few
 // dozen float ulps of the point's own coordinates so scenes far from the origin do not self-shadow.
@@ -60,7 +58,6 @@ void cast_occluded(RTCScene scene, RTCRay& ray) {
 #endif
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 float max_abs(const glm::vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
@@ -417,11 +414,11 @@ struct Oracle::Impl::Job {
     return interior;
   }
 
-  // Every pixel, rows handed out one at a time to kMaxThreads threads; every pixel is independent, so
+  // Every pixel, rows handed out one at a time to kTruthThreads threads; every pixel is independent, so
   // the output does not depend on timing. Returns the rays cast.
   std::uint64_t all_pixels() const {
     const auto width = static_cast<std::size_t>(gbuffer.width), height = static_cast<std::size_t>(gbuffer.height);
-    return for_each_row_parallel(height, kMaxThreads, [&](std::size_t y) {
+    return for_each_row_parallel(height, kTruthThreads, [&](std::size_t y) {
       std::uint64_t rays = 0;
       for (std::size_t x = 0; x < width; ++x) rays += pixel(y * width + x);
       return rays;

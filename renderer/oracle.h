@@ -5,6 +5,7 @@
 // the interior of a lit or shadowed region or in the edge band, where a shadow map cannot be exact.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -15,6 +16,9 @@
 #include "renderer/scene.h"
 
 namespace shadowlab {
+
+// Every coordinate finite (no NaN, no infinity).
+inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // What the camera sees, one entry per pixel, row 0 at the bottom (OpenGL's readback order).
 struct GBuffer {

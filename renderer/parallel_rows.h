@@ -12,6 +12,10 @@
 
 namespace shadowlab {
 
+// Threads the ray-cast truths use (oracle.cpp's hard truth, soft_truth.cpp's soft one): the lab's
+// machines have two cores, and no output depends on it.
+inline constexpr unsigned kTruthThreads = 2;
+
 template <typename RowFn>
 std::uint64_t for_each_row_parallel(std::size_t height, unsigned max_threads, const RowFn& row) {
   std::atomic<std::size_t> next_row{0};

@@ -15,7 +15,6 @@
 namespace shadowlab {
 namespace {
 
-constexpr unsigned kMaxThreads = 2;  // as the hard truth: this machine's cores, and CI's
 constexpr int kPilots = 17;         // EdgeRefined's rays per pixel before it decides (see the header)
 // How many pixels away a neighbour's pilots count. 2 rather than 1: on the benchmark's palm island under
 // a 5-degree sun, 1 left 94 pixels off Full sampling's truth (worst 0.082) and 2 leaves 16 (worst 0.039),
@@ -32,7 +31,6 @@ float hash01(std::uint32_t x) {
   return static_cast<float>(x >> 8) * (1.0f / 16777216.0f);
 }
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Two unit vectors perpendicular to unit d and to each other.
 void basis(const glm::vec3& d, glm::vec3& e1, glm::vec3& e2) {
@@ -155,7 +153,7 @@ SoftTruth evaluate_soft(const Oracle& oracle, const GBuffer& gbuffer, const Orac
       offsets[1 + j] = radius * glm::vec2(std::cos(rim), std::sin(rim));
       offsets[9 + j] = 0.5f * radius * glm::vec2(std::cos(half), std::sin(half));
     }
-    pilot_rays = for_each_row_parallel(height, kMaxThreads, [&](std::size_t y) {
+    pilot_rays = for_each_row_parallel(height, kTruthThreads, [&](std::size_t y) {
       std::uint64_t rays = 0;
       for (std::size_t x = 0; x < width; ++x) {
         const std::size_t i = y * width + x;
@@ -185,7 +183,7 @@ SoftTruth evaluate_soft(const Oracle& oracle, const GBuffer& gbuffer, const Orac
   };
 
   std::atomic<std::size_t> refined{0};
-  out.rays = pilot_rays + for_each_row_parallel(height, kMaxThreads, [&](std::size_t y) {
+  out.rays = pilot_rays + for_each_row_parallel(height, kTruthThreads, [&](std::size_t y) {
                std::uint64_t rays = 0;
                std::size_t full = 0;
                for (std::size_t x = 0; x < width; ++x) {
