@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "labs/sandbox.h"
+#include "renderer/platform.h"
 #include "renderer/shader.h"
 
 namespace shadowlab {
@@ -108,7 +109,7 @@ void expect_success(const platform::ChildOutcome& o, const std::string& what, co
 }
 
 // The student's file as bytes, refused when it or a folder on its way is a link (it could name any
-// file the grader may read) or when it is too big to be an exercise.
+// file the grader may read), when it is not a regular file, or when it is too big to be an exercise.
 std::string read_submitted(const CppExerciseSpec& spec) {
   const std::string source = spec.source.generic_string(), name = fs::path(spec.display_name).generic_string();
   const bool named = source.size() > name.size() && source.compare(source.size() - name.size(), name.size(), name) == 0;
@@ -121,12 +122,13 @@ std::string read_submitted(const CppExerciseSpec& spec) {
       throw ExerciseError("compile_error", spec.display_name + ": error: " + inside.generic_string() +
                                                " is a link; submit the file itself");
   }
-  if (!fs::is_regular_file(spec.source))
-    throw ExerciseError("compile_error", spec.display_name + ": not in the submission");
-  if (fs::file_size(spec.source) > kMaxSourceBytes)
-    throw ExerciseError("compile_error", spec.display_name + ": error: larger than " +
-                                             std::to_string(kMaxSourceBytes >> 10) + " KB; an exercise is a few KB");
-  return read_file(spec.source);
+  try {  // a FIFO or a device is refused before it is opened, a file too large before it is read
+    return platform::read_regular_file(spec.source, kMaxSourceBytes);
+  } catch (const platform::FileError& e) {
+    if (e.problem() == platform::FileProblem::NotFound)
+      throw ExerciseError("compile_error", spec.display_name + ": not in the submission");
+    throw ExerciseError("compile_error", spec.display_name + ": error: " + e.what() + "; an exercise is a few KB of C++");
+  }
 }
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
