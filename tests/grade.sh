@@ -352,10 +352,24 @@ PY
     hostile check "$tmp/out" "$tmp/h/expected.json" || fail "the reports (above)"
     [ "$(outside_state)" = "$before" ] || fail "written outside --out through a planted link"
     ;;
-  grade_class_small)  # the class in small: 12 generated submissions, every status, GNU parallel, all reports
-    # (SHADOWLAB_CLASS_SIZE=300 for the whole class; SHADOWLAB_CLASS_JOBS for other than 2 jobs)
-    count=${SHADOWLAB_CLASS_SIZE:-12} jobs=${SHADOWLAB_CLASS_JOBS:-2}
+  grade_class_small)  # the class in small: 8 generated submissions, every status, GNU parallel, all reports
+    # (SHADOWLAB_CLASS_SIZE=300 for the whole class; SHADOWLAB_CLASS_JOBS for other than 2 jobs). 8 is the
+    # fewest that hold every rare kind (an endless loop in GLSL and C++, a crash, a forbidden call, a
+    # syntax error, a refused archive, a zip and a tar.gz): the generator's statuses are checked below.
+    count=${SHADOWLAB_CLASS_SIZE:-8} jobs=${SHADOWLAB_CLASS_JOBS:-2}
     python3 "$src/tests/make_submissions.py" --bin "$bin" --out "$tmp/class" --count "$count" --seed 15 >"$tmp/gen" || fail "generator: $(cat "$tmp/gen")"
+    python3 - "$tmp/class/expected.json" <<'PY' || fail "the generated class lacks a status or a form"
+import json, sys
+e = json.load(open(sys.argv[1]))["students"]
+statuses = {lab["status"] for s in e.values() for lab in s["labs"].values()}
+kinds = {lab["kind"] for s in e.values() for lab in s["labs"].values()}
+forms = {s["form"].split(" ")[0] for s in e.values()}
+need = {"passed", "failed", "missing", "compile_error", "timed_out", "crashed"}
+assert statuses >= need, "statuses missing: %s" % (need - statuses)
+assert kinds >= {"endless_loop", "crash", "forbidden_call", "syntax_error", "semantic_error", "refused", "stock", "wrong"}, kinds
+assert forms >= {"folder", "zip", "tar.gz", "refused.zip"}, forms
+print("class:", len(e), "submissions; statuses", sorted(statuses), "forms", sorted(forms))
+PY
     start=$(date +%s)
     "$bin" grade "$tmp"/class/submissions/* --out "$tmp/grades" --jobs "$jobs" >"$tmp/log" 2>&1
     code=$?

@@ -106,6 +106,12 @@ def broken(text, kind, cpp, entry):
     raise ValueError(kind)
 
 
+def builds_not(text):
+    """True for a corpus answer marked `// fails: compile_error` among its first lines (check_corpus's rule)."""
+    return any(line.strip().startswith("// fails:") and "compile_error" in line.split()
+               for line in text.split("\n")[:6])
+
+
 EXPECTED = {"right": "passed", "wrong": "failed", "stock": "failed", "missing": "missing",
             "syntax_error": "compile_error", "semantic_error": "compile_error", "endless_loop": "timed_out",
             "crash": "crashed", "forbidden_call": "crashed"}
@@ -197,6 +203,8 @@ def main():
                             entry["line"] = line + 1  # the name line below comes first
                     entry["variant"] = variant
                 files[ex] = "// %s: %s\n%s" % (name, variant, text)
+            if kind == "wrong" and any(builds_not(text) for _, text in chosen.values()):
+                entry["status"] = "compile_error"  # a wrong answer whose point is not to build (`// fails: compile_error`)
             record[str(n)] = entry
         kind = "folder"
         r = rng.random()
