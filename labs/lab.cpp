@@ -43,14 +43,6 @@ Features Lab::hooks_for(const SlotFiles& files) const {
   return hooks;
 }
 
-std::vector<ParamSpec> vsm_lab_bias_params() {
-  const ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
-  bias.default_value = 0.0005;
-  slope.default_value = 0.0;
-  return {bias, slope};
-}
-
 std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light) {
   return [=](const SlotFiles& files) {
     Features hooks;
@@ -74,6 +66,19 @@ const std::vector<Lab>& all_labs() {
 const Lab* find_lab(int number) {
   for (const auto& lab : all_labs())
     if (lab.number == number) return &lab;
+  return nullptr;
+}
+
+const Lab* find_lab_named(std::string_view slug) {
+  for (const auto& lab : all_labs())
+    if (lab.slug == slug) return &lab;
+  return nullptr;
+}
+
+const Lab* find_lab_offering(std::string_view bench_technique) {
+  for (const auto& lab : all_labs())
+    for (const auto& technique : lab.bench)
+      if (technique.name == bench_technique) return &lab;
   return nullptr;
 }
 

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -36,7 +37,7 @@ struct Preset {
 
 // What a lab adds to `shadowlab bench`: its solution with these parameters, measured as one technique.
 struct BenchTechnique {
-  std::string name;    // "hard", "pcf 3x3", "vsm r4", ...
+  std::string name;    // "hard", "pcf 3", "vsm r4", ...
   std::string family;  // the plot's colour group ("PCF"); the bench adds the lab's number
   std::map<std::string, std::string> sets;  // key -> value, as --set takes them
   bool uses_map = true;  // false: no shadow map (shadow volumes), measured once per scene, map size 0
@@ -84,7 +85,15 @@ struct Lab {
 // A folder's lab.cpp defines `Lab SHADOWLAB_LAB_MAKER()` and names its own files under
 // SHADOWLAB_LAB_FOLDER; the number and slug come from the folder's name.
 const std::vector<Lab>& all_labs();
+// The lab the user asked for by its number (--lab N, the number keys, a submission's lab). Code that needs
+// what a lab offers finds it by that instead (below): numbers follow the course's order and change with it.
 const Lab* find_lab(int number);
+// The lab of this slug (its folder's name without the number: "pcf"); the lowest-numbered one when a
+// copied folder kept its slug. Null when none.
+const Lab* find_lab_named(std::string_view slug);
+// The lab that offers this technique to `shadowlab bench` (a BenchTechnique's name: "hard", "pcf 3");
+// the lowest-numbered one when several do. Null when none.
+const Lab* find_lab_offering(std::string_view bench_technique);
 // Generated from the folders (build/labs/lab_list.cpp): each folder's lab, numbered by folder_lab.
 std::vector<Lab> folder_labs();
 Lab folder_lab(Lab lab, int number, std::string slug);
@@ -95,8 +104,5 @@ ParamSet lab_params(const Lab& lab);
 // Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
 // (unset: the light.type parameter decides).
 std::function<Features(const SlotFiles&)> visibility_lab_hooks(std::optional<LightType> light = std::nullopt);
-// shadow.bias and shadow.slope_bias as the VSM labs set them (lab 4's): a bias of 0.0005 on z, no slope
-// term (the moments' bias is the lesson there, not the slope).
-std::vector<ParamSpec> vsm_lab_bias_params();
 
 }  // namespace shadowlab

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "renderer/technique_params.h"
 #include "renderer/vsm_params.h"
@@ -11,18 +12,24 @@ namespace shadowlab {
 
 std::vector<PlacementTechnique> placement_techniques() {
   return {
-      {"depth map, directional (lab 1)", 1, {}},
-      {"fitted ortho box (lab 2, C++)", 2, {}},
-      {"PCF 3x3 (lab 6)", 6, {}},
-      {"VSM, blurred r2 (lab 5)", 5, {"vsm.blur_radius=2"}},
-      {"EVSM (lab 13)", 13, {}},
-      {"MSM (lab 14)", 14, {}},
-      {"cascaded shadow maps (lab 12, C++)", 12, {}},
-      {"spot light (lab 7)", 7, {}},
-      {"point light, cube (lab 8)", 8, {}},
-      {"shadow volumes, directional (lab 9)", 9, {"light.type=directional"}},
-      {"shadow volumes, point (lab 9)", 9, {"light.type=point"}},
+      {"depth map, directional (lab 1)", "bias_tuning", {}},
+      {"fitted ortho box (lab 2, C++)", "ortho_fit", {}},
+      {"PCF 3x3 (lab 6)", "pcf", {}},
+      {"VSM, blurred r2 (lab 5)", "moment_blur", {"vsm.blur_radius=2"}},
+      {"EVSM (lab 13)", "evsm", {}},
+      {"MSM (lab 14)", "msm", {}},
+      {"cascaded shadow maps (lab 12, C++)", "cascaded_shadow_maps", {}},
+      {"spot light (lab 7)", "spot_light", {}},
+      {"point light, cube (lab 8)", "point_light", {}},
+      {"shadow volumes, directional (lab 9)", "shadow_volumes", {"light.type=directional"}},
+      {"shadow volumes, point (lab 9)", "shadow_volumes", {"light.type=point"}},
   };
+}
+
+const Lab& placement_lab(const PlacementTechnique& technique) {
+  const Lab* lab = find_lab_named(technique.lab);
+  if (!lab) throw std::invalid_argument("placement technique \"" + technique.name + "\": no lab is named " + technique.lab);
+  return *lab;
 }
 
 namespace {
@@ -95,7 +102,7 @@ PlacementSweep sweep_placements(const PlacementTechnique& technique, const std::
                                 int height) {
   const Scene scene = make_default_scene();  // the context keeps a reference
   Renderer renderer;
-  CheckContext ctx(renderer, *find_lab(technique.lab), Impl::Solution, scene, {});
+  CheckContext ctx(renderer, placement_lab(technique), Impl::Solution, scene, {});
   PlacementSweep sweep;
   sweep.origin = measure_placement(ctx, technique, Placement{}, width, height);
   sweep.non_finite = sweep.origin.non_finite;

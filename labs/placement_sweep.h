@@ -17,13 +17,15 @@ namespace shadowlab {
 
 struct PlacementTechnique {
   std::string name;                      // "depth map, directional (lab 1)"
-  int lab = 0;                           // whose solution renders it
+  std::string lab;                       // whose solution renders it: the lab's slug ("bias_tuning")
   std::vector<std::string> assignments;  // over the lab's defaults (e.g. light.type=point)
 };
 // Every shadow technique with each light type it serves: depth map (lab 1's slope bias), the fitted
 // ortho box (lab 2's C++ fit), PCF, VSM blurred, EVSM, MSM, spot, point (cube), shadow volumes with a
 // directional and a point light.
 std::vector<PlacementTechnique> placement_techniques();
+// The lab whose solution renders the technique (std::invalid_argument when no lab has its slug).
+const Lab& placement_lab(const PlacementTechnique& technique);
 
 struct PlacementPoint {
   std::string label;  // "x 1e+06", "scale 1e-04", ...
@@ -42,7 +44,7 @@ struct PlacementOutcome {
   double graded = 0.0;    // valid pixels
 };
 // Renders the technique at this placement on the default scene (framed whole) at width x height and
-// measures it against the oracle, through ctx (whose lab must be technique.lab's).
+// measures it against the oracle, through ctx (whose lab must be placement_lab(technique)).
 PlacementOutcome measure_placement(CheckContext& ctx, const PlacementTechnique& technique, const Placement& placement,
                                    int width, int height);
 

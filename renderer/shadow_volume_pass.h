@@ -16,7 +16,7 @@
 // Alpha-tested (glTF MASK) casters get the volume of their whole triangles: a silhouette is found from
 // edges, and a cut-out's edges are in its texture. Their shadows are solid here (the lit passes still
 // discard their holes in the view); the map techniques cut the holes (AlphaMaskVariant). Leaving them
-// out instead would lose their shadows altogether; tests/test_materials.cpp measures both.
+// out instead would lose their shadows altogether; tests/test_gl_materials.cpp measures both.
 #pragma once
 
 #include <filesystem>

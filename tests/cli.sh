@@ -16,45 +16,18 @@ expect_error() {  # expect_error "message part" command...: non-zero exit, one c
   return 0
 }
 one_line() { [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line on stderr: $(cat "$tmp/err")"; }
-# A PNG reader for the window cases (8-bit RGBA as stb writes it): `from png_read import load` in python3.
-png_reader() {
-  cat >"$tmp/png_read.py" <<'PY'
-import struct, zlib
-def load(path):
-    """Returns (width, height, rows) with rows[y] a bytearray of RGBA, top row first."""
-    data = open(path, "rb").read()
-    pos, idat, w, h = 8, b"", 0, 0
-    while pos < len(data):
-        n, t = struct.unpack(">I4s", data[pos:pos + 8])
-        if t == b"IHDR": w, h = struct.unpack(">II", data[pos + 8:pos + 16])
-        if t == b"IDAT": idat += data[pos + 8:pos + 8 + n]
-        pos += 12 + n
-    raw, stride = zlib.decompress(idat), w * 4
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        f = raw[y * (stride + 1)]
-        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - 4] if i >= 4 else 0
-            b = prev[i]
-            c = prev[i - 4] if i >= 4 else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line); prev = line
-    return w, h, rows
-def differing(a, b, x0, y0, x1, y1, step=2, tol=24):
-    """Share of sampled pixels in the rectangle whose colours differ by more than tol (sum of RGB)."""
-    n = d = 0
-    for y in range(y0, y1, step):
-        for x in range(x0, x1, step):
-            n += 1
-            d += sum(abs(a[y][4 * x + c] - b[y][4 * x + c]) for c in range(3)) > tol
-    return d / max(n, 1)
-PY
+# python3 with tests/png_tools.py importable, for the cases that read PNGs (`from png_tools import load`).
+# Pillow is Debian's python3-pil (scripts/setup): when the python3 first on PATH lacks it (a pyenv, a
+# venv), the system's is used.
+png_python() {
+  local py
+  for py in python3 /usr/bin/python3; do
+    if "$py" -c "import PIL" 2>/dev/null; then
+      PYTHONPATH="$src/tests${PYTHONPATH:+:$PYTHONPATH}" "$py" "$@"
+      return
+    fi
+  done
+  fail "no python3 with Pillow (bash scripts/setup installs python3-pil)"
 }
 window() {  # window ARGS...: the window under Xvfb on a 1440x900 screen; stderr kept in $tmp/err
   command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
@@ -154,14 +127,12 @@ PY
     "$bin" check --lab 98 --impl solution >"$tmp/out" || fail "lab 98's solution does not pass: $(cat "$tmp/out")"
     "$bin" check --lab 98 --impl exercise >"$tmp/out"; rc=$?
     [ "$rc" -eq 1 ] || fail "lab 98's stock exercise: exit $rc, expected 1 (a failed check)"
-    png_reader
     window --lab 98 --frames 3 --screenshot "$tmp/lab98.png"
     window --lab 0 --frames 3 --screenshot "$tmp/lab0.png"
     window --lab 1 --script "frames:3,key:9,frames:1,key:8,frames:3,screenshot:$tmp/keys98.png"
-    python3 - "$tmp" <<'PY' || fail "the window does not show lab 98 (by --lab 98 and by the keys 9, 8)"
+    png_python - "$tmp" <<'PY' || fail "the window does not show lab 98 (by --lab 98 and by the keys 9, 8)"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 shot = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("lab98", "lab0", "keys98")}
 title = (20, 20, 430, 60)  # the panel's lab title
 d = {"lab98/lab0": differing(shot["lab98"], shot["lab0"], *title), "lab98/keys98": differing(shot["lab98"], shot["keys98"], *title)}
@@ -289,34 +260,12 @@ PY
     command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
     xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --frames 5 --screenshot "$tmp/window.png" || fail "window run failed"
     [ -s "$tmp/window.png" ] || fail "no screenshot"
-    python3 - "$tmp/window.png" <<'PY' || fail "panel not visible in the screenshot"
-import sys, zlib, struct
-# Decode the PNG (8-bit RGBA, as stb writes it) and look for the panel: ImGui's dark title bar and
-# text near the top-left corner differ from the scene's background colour.
-data = open(sys.argv[1], "rb").read()
-pos, idat, w, h = 8, b"", 0, 0
-while pos < len(data):
-    n, t = struct.unpack(">I4s", data[pos:pos + 8])
-    if t == b"IHDR": w, h = struct.unpack(">II", data[pos + 8:pos + 16])
-    if t == b"IDAT": idat += data[pos + 8:pos + 8 + n]
-    pos += 12 + n
-raw = zlib.decompress(idat)
-stride = w * 4
-rows, prev = [], bytearray(stride)
-for y in range(h):
-    f = raw[y * (stride + 1)]
-    line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-    for i in range(stride):
-        a = line[i - 4] if i >= 4 else 0
-        b = prev[i]
-        c = prev[i - 4] if i >= 4 else 0
-        if f == 1: line[i] = (line[i] + a) & 255
-        elif f == 2: line[i] = (line[i] + b) & 255
-        elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-        elif f == 4:
-            p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-    rows.append(line); prev = line
+    png_python - "$tmp/window.png" <<'PY' || fail "panel not visible in the screenshot"
+import sys
+from png_tools import load
+# Look for the panel: ImGui's dark title bar and text near the top-left corner differ from the scene's
+# background colour.
+w, h, rows = load(sys.argv[1])
 bg = (41, 46, 56)  # the renderer's clear colour, sRGB-encoded
 panel = sum(1 for y in range(20, 300) for x in range(20, 400)
             if abs(rows[y][4 * x] - bg[0]) + abs(rows[y][4 * x + 1] - bg[1]) + abs(rows[y][4 * x + 2] - bg[2]) > 30)
@@ -510,13 +459,11 @@ PY
     echo "bench --quick: ${elapsed} s"
     ;;
   window_keys_split)  # keys switch labs, S toggles the split view: the screenshots differ where they should
-    png_reader
     window --script "frames:3,screenshot:$tmp/lab0.png,key:1,frames:3,screenshot:$tmp/lab1.png,key:s,frames:3,screenshot:$tmp/split.png,key:s,frames:3,screenshot:$tmp/unsplit.png,key:n,frames:3,screenshot:$tmp/lab2.png"
     for f in lab0 lab1 split unsplit lab2; do [ -s "$tmp/$f.png" ] || fail "no $f.png"; done
-    python3 - "$tmp" <<'PY' || fail "screenshots do not differ as expected"
+    png_python - "$tmp" <<'PY' || fail "screenshots do not differ as expected"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 img = {n: load(f"{sys.argv[1]}/{n}.png") for n in ("lab0", "lab1", "split", "unsplit", "lab2")}
 w, h, _ = img["lab1"]
 r = {n: v[2] for n, v in img.items()}
@@ -557,14 +504,13 @@ PY
     # Lab 6 at LearnOpenGL's view, the line shown for 4 frames, then hidden (H) for 12.
     window --lab 6 --size 640x360 --camera "eye=-2,4,-1 target=0,0,0 fov=45" --set view.debug_quad=0 \
       --frame-report "$tmp/cost.json" --script "frames:4,key:h,frames:12,screenshot:$tmp/cost.png"
-    python3 - "$tmp" <<'PY' || fail "the interactive frame waits for the GPU, or --size/--camera were not applied"
-import json, struct, sys
+    png_python - "$tmp" <<'PY' || fail "the interactive frame waits for the GPU, or --size/--camera were not applied"
+import json, sys
+from png_tools import size
 t = sys.argv[1]
 r = json.load(open(f"{t}/cost.json"))
 print(r)
-with open(f"{t}/cost.png", "rb") as f:
-    head = f.read(24)
-w, h = struct.unpack(">II", head[16:24])
+w, h = size(f"{t}/cost.png")
 assert (w, h) == (640, 360), (w, h)
 hidden, shown = r["pass_line_hidden"], r["pass_line_shown"]
 assert hidden["frames"] >= 10 and shown["frames"] >= 3, r
@@ -576,12 +522,10 @@ else:  # a software rasteriser: exact times only while the line is shown, and th
 PY
     ;;
   window_hide_panel)  # H hides the panel (no ImGui window is built), a corner line says how to get it back, H shows it
-    png_reader
     window --script "frames:3,screenshot:$tmp/shown.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,frames:3,screenshot:$tmp/again.png"
-    python3 - "$tmp" <<'PY' || fail "H did not hide and restore the panel"
+    png_python - "$tmp" <<'PY' || fail "H did not hide and restore the panel"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/shown.png")
 r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("shown", "hidden", "again")}
 stats = {"panel hidden/shown": differing(r["hidden"], r["shown"], 20, 60, 430, 400),
@@ -594,12 +538,10 @@ assert stats["hint hidden/again"] > 0.03, "no 'press H' line in the corner while
 PY
     ;;
   window_check_async)  # Check runs on a worker thread: the window keeps drawing, with a progress bar, then the result
-    png_reader
     window --lab 5 --script "frames:3,screenshot:$tmp/before.png,check,frames:2,screenshot:$tmp/running.png,frames:2,screenshot:$tmp/running2.png,wait:12,frames:3,screenshot:$tmp/done.png"
-    python3 - "$tmp" <<'PY' || fail "the Check did not run alongside the frames"
+    png_python - "$tmp" <<'PY' || fail "the Check did not run alongside the frames"
 import os, sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load
+from png_tools import load
 d = sys.argv[1]
 r = {n: load(f"{d}/{n}.png")[2] for n in ("before", "running", "running2", "done")}
 # ImGui's progress bar fill (PlotHistogram, dark style: 230, 179, 0) in the panel; FAIL lines are red.
@@ -620,12 +562,10 @@ assert stats["red done"] > stats["red before"] + 20, "the result (the stock exer
 PY
     ;;
   window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size
-    png_reader
     window --lab 5 --script "frames:2,resize:800x500,frames:3,screenshot:$tmp/small.png,iconify,wait:0.5,restore,wait:0.3,frames:2,key:m,key:f11,frames:3,screenshot:$tmp/full.png,key:f11,frames:3,screenshot:$tmp/back.png"
-    python3 - "$tmp" <<'PY' || fail "wrong picture sizes"
+    png_python - "$tmp" <<'PY' || fail "wrong picture sizes"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load
+from png_tools import load
 sizes = {n: load(f"{sys.argv[1]}/{n}.png")[:2] for n in ("small", "full", "back")}
 print(sizes)
 assert sizes["small"] == (800, 500), sizes
@@ -634,13 +574,11 @@ assert sizes["back"] == (800, 500), sizes
 PY
     ;;
   window_drop)  # a bad file dropped on the window shows an error in the panel; a good one replaces the scene
-    png_reader
     echo "not a model" >"$tmp/bad.gltf"
     window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$src/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
-    python3 - "$tmp" <<'PY' || fail "drop not shown as expected"
+    png_python - "$tmp" <<'PY' || fail "drop not shown as expected"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "bad", "duck")}
 w, h = 1440, 860
 red = lambda rows: sum(1 for y in range(20, 400) for x in range(20, 430)
@@ -657,13 +595,11 @@ PY
     ;;
   window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
   render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words (as tall as the window)
-    png_reader
     "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 900 >/dev/null || fail "render failed"
     "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 900 >/dev/null || fail "render --panel failed"
-    python3 - "$tmp" <<'PY' || fail "panel not in final.png"
+    png_python - "$tmp" <<'PY' || fail "panel not in final.png"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
 w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
 assert (w, h) == (w2, h2) == (960, 900)
@@ -677,15 +613,13 @@ assert inside > 0.3 and outside < 0.02 and red > 100
 PY
     ;;
   render_penumbra)  # the Penumbra error window over the frame: measured against the exact soft shadow
-    png_reader
     "$bin" render --lab 0 --impl solution --panel --set light.size=3 --out "$tmp/plain" --width 1280 --height 720 >/dev/null \
       || fail "render --panel failed"
     "$bin" render --lab 0 --impl solution --panel --penumbra --set light.size=3 --out "$tmp/pen" --width 1280 --height 720 \
       >/dev/null || fail "render --panel --penumbra failed"
-    python3 - "$tmp" <<'PY' || fail "no Penumbra error window over the frame"
+    png_python - "$tmp" <<'PY' || fail "no Penumbra error window over the frame"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 _, _, plain = load(f"{sys.argv[1]}/plain/final.png")
 _, _, pen = load(f"{sys.argv[1]}/pen/final.png")
 window = differing(plain, pen, 760, 80, 1260, 500)  # where the window opens: right of the panel
@@ -695,7 +629,6 @@ PY
     expect_error "--penumbra requires --panel" "$bin" render --lab 0 --penumbra --out "$tmp/never"
     ;;
   render_bench_plot)  # the Speed against error window drawn over the frame from a bench.json; bad files refused
-    png_reader
     python3 - "$tmp/b.json" <<'PY'
 import json, sys
 pts = [dict(scene=s, technique=t, family=f, map_size=m, gpu_ms=ms, error=e)
@@ -709,10 +642,9 @@ PY
       || fail "render --panel --bench failed"
     "$bin" render --lab 1 --panel --bench "$src/docs/bench.json" --out "$tmp/docs" --width 1280 --height 720 >/dev/null \
       || fail "the shipped docs/bench.json does not load"
-    python3 - "$tmp" <<'PY' || fail "no plot window over the frame"
+    png_python - "$tmp" <<'PY' || fail "no plot window over the frame"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 _, _, plain = load(f"{sys.argv[1]}/plain/final.png")
 _, _, plot = load(f"{sys.argv[1]}/plot/final.png")
 window = differing(plain, plot, 660, 60, 1260, 540)  # where the window opens: right of the panel
@@ -728,14 +660,12 @@ PY
     expect_error "--panel" "$bin" render --bench "$tmp/b.json" --out "$tmp/never"
     ;;
   window_bench)  # --bench opens the plot window; a bad file stops before the window, settings untouched
-    png_reader
     cp "$src/docs/bench.json" "$tmp/b.json"
     window --frames 3 --screenshot "$tmp/plain.png"
     window --bench "$tmp/b.json" --frames 3 --screenshot "$tmp/plot.png"
-    python3 - "$tmp" <<'PY' || fail "no plot window in the screenshot"
+    png_python - "$tmp" <<'PY' || fail "no plot window in the screenshot"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 w, h, plain = load(f"{sys.argv[1]}/plain.png")
 _, _, plot = load(f"{sys.argv[1]}/plot.png")
 d = differing(plain, plot, w - 640, 60, w - 40, 500)
@@ -772,7 +702,6 @@ PY
     done <"$tmp/manifest"
     ;;
   concurrent_out)  # issue 18: two checks (of the solution, which passes) into one --out: both succeed, or one says the folder is in use
-    png_reader
     for round in 1 2 3 4 5; do
       "$bin" check --lab 1 --impl solution --out "$tmp/same" >"$tmp/a.out" 2>"$tmp/a.err" & a=$!
       "$bin" check --lab 1 --impl solution --out "$tmp/same" >"$tmp/b.out" 2>"$tmp/b.err" & b=$!
@@ -788,8 +717,8 @@ PY
         else fail "round $round: exit $code: $(cat "$tmp/$who.err")"; fi
       done
       [ "$ok" -ge 1 ] || fail "round $round: neither run succeeded"
-      python3 -c "import sys; sys.path.insert(0, sys.argv[1]); from png_read import load; w, h, _ = load(sys.argv[2]); assert w > 0 and h > 0" \
-        "$tmp" "$tmp/same/$(ls "$tmp/same" | grep -m1 'final.png$')" || fail "round $round: a corrupt PNG"
+      png_python -c "import sys; from png_tools import load; w, h, _ = load(sys.argv[1]); assert w > 0 and h > 0" \
+        "$tmp/same/$(ls "$tmp/same" | grep -m1 'final.png$')" || fail "round $round: a corrupt PNG"
       ls -A "$tmp/same" | grep -q "\.tmp-" && fail "round $round: temporary files left: $(ls -A "$tmp/same")"
       echo "round $round: $ok succeeded, $busy told the folder is in use"
     done
@@ -814,17 +743,15 @@ PY
   window_drop_hostile)  # issue 18: a dropped model with a huge or hostile error text: no abort, bounded panel text
     [ -x "${SHADOWLAB_HOSTILE_CASES:-}" ] || fail "SHADOWLAB_HOSTILE_CASES is not the hostile_cases tool"
     "$SHADOWLAB_HOSTILE_CASES" "$tmp/cases" >/dev/null || fail "could not write the cases"
-    png_reader
     window --script "frames:2,drop:$tmp/cases/long_uri.gltf,frames:2,drop:$tmp/cases/data_uri_60mb.gltf,frames:2,drop:$tmp/cases/data_uri_30mb.gltf,frames:2,drop:$tmp/cases/escape_uri.gltf,frames:2,drop:$tmp/cases/deep_extras.gltf,frames:2,screenshot:$tmp/shot.png"
     [ "$(grep -c "cannot open the dropped file" "$tmp/err")" -eq 5 ] || fail "not every error on the terminal: $(cat "$tmp/err")"
     [ "$(wc -c <"$tmp/err")" -lt 5000 ] || fail "$(wc -c <"$tmp/err") bytes of errors for 5 files"
     grep -qF '(20004 bytes)' "$tmp/err" || fail "the long URI is not cut: $(head -c 600 "$tmp/err")"
     grep -qF '\x1B[2J' "$tmp/err" || fail "the escape sequence is not shown escaped"
     LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$tmp/err" && fail "control characters on the terminal"
-    python3 - "$tmp" <<'PY' || fail "no error shown in the panel"
+    png_python - "$tmp" <<'PY' || fail "no error shown in the panel"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load
+from png_tools import load
 w, h, rows = load(f"{sys.argv[1]}/shot.png")
 red = sum(1 for y in range(20, 500) for x in range(20, 430)
           if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -285,14 +287,29 @@ TEST_F(StressGlTest, EveryTechniqueMatchesTheOriginAtAnyOffsetAndScale) {
   }
 }
 
+// Placement techniques name their lab by slug and the bench finds its labs by what they offer to it (the
+// hard shadow, PCF 3x3), never by number: every name resolves, to the lab that teaches it.
+TEST(LabsByWhatTheyOffer, PlacementTechniquesAndBenchFiguresFindTheirLabs) {
+  for (const PlacementTechnique& t : placement_techniques()) EXPECT_NO_THROW(placement_lab(t)) << t.name;
+  EXPECT_THROW(placement_lab({"nothing", "no_such_lab", {}}), std::invalid_argument);
+  const std::pair<const char*, const char*> offers[] = {{"hard", "bias_tuning"}, {"pcf 3", "pcf"}};
+  for (const auto& [technique, slug] : offers) {
+    const Lab* lab = find_lab_offering(technique);
+    ASSERT_NE(lab, nullptr) << technique;
+    EXPECT_EQ(lab->slug, slug) << technique;
+    EXPECT_EQ(find_lab_named(slug), lab);
+  }
+  EXPECT_EQ(find_lab_offering("no such technique"), nullptr);
+}
+
 // The same test fails without the local origin: the teaching toggle's "before" (float32 holds world
 // coordinates). Measured: the depth map's error at 1e6 on the diagonal is 0.9 against 0.003 at the origin.
 TEST_F(StressGlTest, WithoutTheLocalOriginAFarSceneBreaks) {
   const Scene scene = make_default_scene();
   for (const PlacementTechnique& t : placement_techniques()) {
-    if (t.lab != 1 && t.lab != 2) continue;
+    if (t.lab != "bias_tuning" && t.lab != "ortho_fit") continue;  // the depth map and the fitted box
     Renderer renderer;
-    CheckContext ctx(renderer, *find_lab(t.lab), Impl::Solution, scene, {});
+    CheckContext ctx(renderer, placement_lab(t), Impl::Solution, scene, {});
     const PlacementOutcome origin = measure_placement(ctx, t, Placement{}, 480, 270);
     Placement far;
     far.offset = glm::dvec3(-1e6, 1e6, -1e6);
@@ -316,9 +333,9 @@ TEST_F(StressGlTest, ASceneWithAFarOriginOfItsOwnRendersAsAtTheOrigin) {
   far.origin = glm::dvec3(1e6, -1e6, 1e6);
   const Scene plain = make_default_scene();
   Renderer renderer;
-  CheckContext at_origin(renderer, *find_lab(t.lab), Impl::Solution, plain, {});
+  CheckContext at_origin(renderer, placement_lab(t), Impl::Solution, plain, {});
   const PlacementOutcome reference = measure_placement(at_origin, t, Placement{}, 480, 270);
-  CheckContext moved(renderer, *find_lab(t.lab), Impl::Solution, far, {});
+  CheckContext moved(renderer, placement_lab(t), Impl::Solution, far, {});
   const PlacementOutcome on = measure_placement(moved, t, Placement{}, 480, 270);
   Placement naive;
   naive.local_origin = false;

@@ -14,6 +14,7 @@
 
 #include "labs/check.h"
 #include "labs/probe.h"
+#include "labs/vsm_features.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {
@@ -21,7 +22,7 @@ namespace shadowlab {
 namespace {
 
 constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
-constexpr const char* kSolution = "shaders/vsm/visibility.glsl";       // the renderer's own VSM test
+constexpr const char* kSolution = kVsmVisibility;                      // the renderer's own VSM test
 constexpr const char* kUnfixed = "labs/03_vsm_setup/visibility.glsl";  // lab 3's test: no bias, no remap
 
 // The targets: the fix must remove at least three quarters of the bleeding, and leave at most
@@ -201,12 +202,7 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"show remap", "Tint the pixels the remap changed.", {{"vsm.show_remap", "true"}}},
   };
   lab.offered_includes = {"lab/bias.glsl", "lab/chebyshev.glsl"};
-  lab.make_hooks = [](const SlotFiles& files) {
-    Features hooks;
-    hooks.technique = ShadowTechnique::Moments;
-    hooks.includes["lab/visibility.glsl"] = files.at(0).string();
-    return hooks;
-  };
+  lab.make_hooks = [](const SlotFiles& files) { return vsm_features(files.at(0)); };
   lab.check = check_light_bleeding;
   // One technique per blur radius; the quick run measures 0, 2 and 4.
   for (int r : {0, 1, 2, 4, 8}) {

@@ -13,6 +13,7 @@
 #include <random>
 
 #include "labs/check.h"
+#include "labs/vsm_features.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/vsm_params.h"

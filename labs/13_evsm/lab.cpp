@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "labs/check.h"
+#include "labs/vsm_features.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "labs/check.h"
+#include "labs/vsm_features.h"
 #include "renderer/vsm_params.h"
 
 namespace shadowlab {
@@ -37,7 +38,8 @@ void check_msm(CheckContext& ctx, CheckResult& result) {
   // 1. The default scene and a grazing light: a hard shadow's interior within lab 1's bounds.
   grade_default_and_grazing(ctx, result, params, hooks, "lab14");
 
-  // 2. The stacked occluders: MSM, then VSM (lab 4's solution) on the same frame, without and with the cut.
+  // 2. The stacked occluders: MSM, then VSM (the renderer's own test, lab 4's solution) on the same frame,
+  // without and with the cut.
   ctx.use_scene(make_stacked_occluders_scene());
   const Bounds view = shadows_on_receiver(
       ctx.scene(), direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation")));
@@ -46,7 +48,7 @@ void check_msm(CheckContext& ctx, CheckResult& result) {
   result.criteria.push_back({"stacked.bleeding_rate", m.metrics.bleeding_rate, Criterion::kAtMost, kMaxBleeding,
                              "at most 1 % of the shadowed interior bleeds (lab 4's bound)"});
   require_measurable(result, "stacked", m.metrics);
-  const Features vsm = find_lab(4)->hooks(Impl::Solution);
+  const Features vsm = vsm_features();
   std::printf("    stacked scene: MSM bleeding %.4f, mae_interior %.5f, mae_edge %.5f\n", m.metrics.bleeding_rate,
               m.metrics.mae_interior, m.metrics.mae_edge);
   for (double delta : kVsmDeltas) {

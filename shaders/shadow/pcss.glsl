@@ -100,7 +100,7 @@ float shadow_visibility(vec3 world_position, vec3 n, float n_dot_l) {
 
 // The debug view's colour for this pixel, after shadow_visibility ran (lit: whether it did, the surface
 // facing the light). False with pcss.view 0. A value t in [0, 1] is (t, t^2, 0.6 (1 - t)): dark blue to
-// yellow, t itself in the red channel (tests/test_soft_check.cpp reads it back).
+// yellow, t itself in the red channel (tests/test_gl_soft_check.cpp reads it back).
 bool technique_view(bool lit, out vec3 color) {
   color = vec3(0.0);
   if (u_pcss_view == 0) return false;

@@ -9,6 +9,7 @@
 
 #include "labs/check.h"
 #include "labs/lab.h"
+#include "labs/vsm_features.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/msm_pass.h"
@@ -321,6 +322,16 @@ TEST_F(VsmTest, Lab13SolutionPassesExerciseFails) {
   const CheckResult solution = run_check(13, Impl::Solution);
   EXPECT_TRUE(solution.passed()) << failed_criteria(solution);
   EXPECT_FALSE(run_check(13, Impl::Exercise).passed()) << "the stock exercise is VSM: it bleeds as much";
+}
+
+// Lab 14 measures MSM against VSM from the shared factory (labs/vsm_features.h), not through lab 4: the
+// factory's features are lab 4's solution's (technique and shader files), so lab 14's figures are the same.
+TEST(VsmFeatures, TheSharedVsmFeatureSetIsLab4sSolution) {
+  const Features shared = vsm_features();
+  const Features lab4 = find_lab(4)->hooks(Impl::Solution);
+  EXPECT_EQ(shared.technique, lab4.technique);
+  EXPECT_EQ(shared.includes, lab4.includes);
+  EXPECT_EQ(shared.includes.at("lab/visibility.glsl"), kVsmVisibility);
 }
 
 TEST_F(VsmTest, MsmStoresFourPowerMomentsAndStaysFinite) {

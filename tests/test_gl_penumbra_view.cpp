@@ -53,7 +53,7 @@ TEST_F(PenumbraViewTest, AHardMapIsShownTooDarkAndTooLightInTheSunsPenumbra) {
   // Measured at 320 x 180: 173 penumbra pixels, 0.242 error there, 77 drawn too dark and 95 too light.
   ASSERT_GT(sized.metrics.penumbra_pixels, 50u);
   // A hard edge through the penumbra: about half of it on each side (measured 0.22-0.26 at 2 degrees in
-  // the checks, tests/test_soft_check.cpp).
+  // the checks, tests/test_gl_soft_check.cpp).
   EXPECT_GT(sized.metrics.mae_penumbra, 0.1);
   EXPECT_GT(sized.metrics.too_dark, 0.0);
   EXPECT_GT(sized.metrics.too_light, 0.0);

@@ -1,0 +1,25 @@
+// Variance shadow maps as a feature set the labs share: lab 4 teaches the VSM test with it, lab 14 measures
+// MSM against it, and the VSM labs (4, 5, 13, 14) set the depth bias its way. A lab that needs VSM asks these
+// factories, never another lab: a lab's number is its place in the course, not a handle on its code.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "renderer/params.h"
+#include "renderer/renderer.h"
+
+namespace shadowlab {
+
+// The renderer's own VSM test (lab 4's solution): Chebyshev's bound on the biased depth, the bound remapped
+// from [vsm.bleed_delta, 1] to [0, 1].
+inline constexpr const char* kVsmVisibility = "shaders/vsm/visibility.glsl";
+
+// Two moments per texel (blurred by vsm.blur_*), read by `visibility`: the file behind "lab/visibility.glsl".
+Features vsm_features(const std::filesystem::path& visibility = kVsmVisibility);
+
+// shadow.bias and shadow.slope_bias as the VSM labs set them: a bias of 0.0005 on z, no slope term (the
+// moments' bias is the lesson there, not the slope).
+std::vector<ParamSpec> vsm_lab_bias_params();
+
+}  // namespace shadowlab
