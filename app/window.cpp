@@ -449,11 +449,12 @@ void save_screenshot(App& app, int width, int height) {
   try {
     const std::filesystem::path path = new_screenshot_file(app.lab->number);
     write_png(path, width, height, rgba);
-    const std::u8string shown = path.u8string();  // ImGui's text is UTF-8; a Windows path is wide
-    app.status = "saved " + std::string(reinterpret_cast<const char*>(shown.c_str()));
-    app.toast = "Screenshot saved to " + std::string(reinterpret_cast<const char*>(shown.c_str()));
+    const std::u8string utf8 = path.u8string();  // ImGui's text is UTF-8; a Windows path is wide
+    const std::string shown(reinterpret_cast<const char*>(utf8.c_str()));
+    app.status = "saved " + shown;
+    app.toast = "Screenshot saved to " + shown;
     app.toast_error = false;
-    std::printf("shadowlab: screenshot saved to %s\n", path.string().c_str());
+    std::printf("shadowlab: screenshot saved to %s\n", shown.c_str());
     std::fflush(stdout);
   } catch (const std::exception& e) {
     app.status = e.what();
