@@ -721,6 +721,14 @@ int run_window(const WindowOptions& options) {
     apply_preset_option(app.params, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(app.params, a);
     app.settings.give_one_off(lab->number, saved, app.params);
+    // Said in the panel, so that a value missing at the next start is no surprise.
+    std::string one_off;
+    if (!options.preset.empty()) one_off += "--preset " + options.preset;
+    for (const auto& a : options.assignments) one_off += (one_off.empty() ? "" : ", ") + ("--set " + a);
+    if (!options.camera.empty()) one_off += (one_off.empty() ? "" : ", ") + std::string("--camera");
+    if (!one_off.empty())
+      app.status = "For this run only, not saved unless you change them here: " +
+                   shortened(printable(one_off, kFullErrorBytes), kPanelErrorBytes);
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, drop_callback);  // ImGui's backend does not use this one
     try {
