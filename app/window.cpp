@@ -464,7 +464,7 @@ void save_screenshot(App& app, int width, int height) {
   }
 }
 
-// F12's answer over the view for a few seconds, at the bottom centre where the panel never is.
+// F12's answer over the view for a few seconds, at the bottom centre (over the view, in front of the panel).
 void draw_toast(const App& app) {
   constexpr double kToastSeconds = 5.0;
   if (app.toast.empty() || glfwGetTime() - app.toast_since > kToastSeconds) return;
