@@ -876,6 +876,13 @@ PY
     [ ! -e "$SHADOWLAB_SETTINGS" ] || fail "a window refused at the start wrote settings"
     expect_error "lab 0 (" "$bin" check --lab 0,1 --preset tuned
     grep -qF "(--preset applies to every lab --lab selects)" "$tmp/err" || fail "check --lab 0,1: $(cat "$tmp/err")"
+    # --help says it, for every command that takes it, and the window's keys include the camera reset.
+    "$bin" --help >"$tmp/main" && "$bin" render --help >"$tmp/render" && "$bin" check --help >"$tmp/check" &&
+      "$bin" labs --help >"$tmp/labs" || fail "--help failed"
+    for f in main render check; do grep -q -- "--preset" "$tmp/$f" || fail "$f --help lacks --preset"; done
+    grep -q -- "--impl" "$tmp/main" && grep -q "for this run" "$tmp/main" || fail "--help lacks the window's --impl or says not that options are one-off"
+    grep -q "^  R  *reset the camera" "$tmp/main" || fail "--help's window keys lack R"
+    grep -q -- "--presets" "$tmp/labs" || fail "labs --help lacks --presets"
     # The check grades with the preset: lab 1's solution with no bias at all fails, recorded with bias 0.
     "$bin" check --lab 1 --impl solution --preset acne --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 1 ] || fail "check --preset acne of lab 1's solution: exit $rc, expected 1: $(tail -3 "$tmp/out" "$tmp/err")"
