@@ -46,6 +46,14 @@ std::vector<int> parse_lab_list(const std::string& text) {
 
 namespace {
 
+// The lab's preset as `--set` assignments (none for an empty name; the name was checked before).
+std::vector<std::string> preset_assignments(const Lab& lab, const std::string& name) {
+  std::vector<std::string> sets;
+  if (!name.empty())
+    for (const auto& [key, value] : find_preset(lab, name).values) sets.push_back(key + "=" + value);
+  return sets;
+}
+
 void print_result(const CheckResult& r) {
   std::printf("lab %d %-18s %-8s %s  (%.1f s)\n", r.lab, r.slug.c_str(), impl_name(r.impl),
               r.passed() ? "PASS" : r.status() == CheckStatus::Failed ? "FAIL" : status_name(r.status()), r.seconds);
@@ -68,8 +76,14 @@ int run_check(const CheckOptions& options) {
       throw std::runtime_error("--submission: " + platform::grading_unavailable());  // not a Linux build
     const std::vector<int> numbers = parse_lab_list(options.labs);
     if (numbers.empty()) throw std::runtime_error("no lab has a check yet");
-    for (int number : numbers) {  // a bad --set is a usage error, found before anything renders
+    for (int number : numbers) {  // a bad --preset or --set is a usage error, found before anything renders
       ParamSet p = lab_params(*find_lab(number));
+      try {
+        apply_preset_option(p, *find_lab(number), options.preset);
+      } catch (const std::invalid_argument& e) {
+        if (numbers.size() == 1) throw;
+        throw std::invalid_argument(e.what() + std::string(" (--preset applies to every lab --lab selects)"));
+      }
       for (const auto& a : options.assignments) apply_set_option(p, a);
     }
     if (!options.submission.empty() && !fs::is_directory(options.submission))
@@ -113,7 +127,8 @@ int run_check(const CheckOptions& options) {
         run.impl = impl;
         run.submission = options.submission;
         run.seed = options.seed;
-        run.assignments = options.assignments;
+        run.assignments = preset_assignments(*find_lab(number), options.preset);  // the preset first, --set over it
+        run.assignments.insert(run.assignments.end(), options.assignments.begin(), options.assignments.end());
         run.out_dir = options.out_dir;
         const CheckResult result = run_lab_check(renderer, *find_lab(number), scene, run);
         print_result(result);

@@ -15,7 +15,8 @@ struct CheckOptions {
   std::string scene_file;
   std::string json_file;
   std::string out_dir;
-  std::vector<std::string> assignments;  // --set key=value, applied over each lab's defaults
+  std::string preset;                    // --preset NAME: each lab's preset of that name, over its defaults
+  std::vector<std::string> assignments;  // --set key=value, applied over each lab's defaults (and the preset)
 };
 
 // Exit codes: 0 every lab passed, 1 some lab failed (a criterion, or the student's file does not

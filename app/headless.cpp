@@ -82,6 +82,15 @@ void apply_set_option(ParamSet& params, const std::string& assignment) {
   }
 }
 
+void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name) {
+  if (name.empty()) return;
+  try {
+    apply_preset(params, find_preset(lab, name));
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("--preset " + name + ": " + e.what());
+  }
+}
+
 OrbitCamera camera_option(const std::string& spec, const Bounds& bounds) {
   const OrbitCamera framed = OrbitCamera::framing(bounds);
   if (spec.empty()) return framed;
@@ -167,6 +176,7 @@ int run_render(const RenderOptions& options) {
       throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
     }
     ParamSet params = lab_params(*lab);
+    apply_preset_option(params, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = load_scene_or_default(options.scene_file);
     const OrbitCamera camera = options.camera.empty() ? frame_scene_camera(scene, params)
@@ -297,18 +307,43 @@ int run_render(const RenderOptions& options) {
   }
 }
 
-int run_list_labs(bool show_params, bool json) {
-  if (json) {  // for scripts (graders, the corpus test): what a submission of each lab consists of
+namespace {
+
+// A lab's presets as `labs --presets --json` lists them: what each sets, the artifact it provokes and the
+// preset that fixes it (null where there is none), in the lab's order.
+nlohmann::json presets_json(const Lab& lab) {
+  nlohmann::json presets = nlohmann::json::array();
+  const auto or_null = [](const std::string& s) { return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s); };
+  for (const auto& p : lab.presets)
+    presets.push_back({{"name", p.name}, {"description", p.description}, {"values", p.values},
+                       {"provokes", or_null(p.artifact.provokes)}, {"fixed_by", or_null(p.artifact.fixed_by)}});
+  return presets;
+}
+
+}  // namespace
+
+int run_list_labs(bool show_params, bool json, bool show_presets) {
+  if (json) {  // for scripts (graders, the corpus test, lecture pictures): what each lab consists of
     nlohmann::json labs = nlohmann::json::array();
-    for (const auto& lab : all_labs())
+    for (const auto& lab : all_labs()) {
       labs.push_back({{"number", lab.number}, {"slug", lab.slug}, {"folder", lab.folder()}, {"title", lab.title},
                       {"exercise_files", lab.exercise_files}, {"solution_files", lab.solution_files},
                       {"offered_includes", lab.offered_includes}, {"has_check", static_cast<bool>(lab.check)}});
+      if (show_presets) labs.back()["presets"] = presets_json(lab);
+    }
     std::printf("%s\n", nlohmann::json{{"labs", labs}}.dump(2).c_str());
     return 0;
   }
   for (const auto& lab : all_labs()) {
     std::printf("%2d  %-22s %s\n", lab.number, lab.title.c_str(), lab.summary.c_str());
+    if (show_presets) {
+      for (const auto& p : lab.presets) {
+        std::string artifact;
+        if (!p.artifact.provokes.empty()) artifact = "  [" + p.artifact.provokes + "]";
+        if (!p.artifact.fixed_by.empty()) artifact += " fixed by '" + p.artifact.fixed_by + "'";
+        std::printf("      --preset '%s'%s  %s\n", p.name.c_str(), artifact.c_str(), p.description.c_str());
+      }
+    }
     if (!show_params) continue;
     const ParamSet params = lab_params(lab);
     for (const auto& s : params.specs()) {

@@ -11,9 +11,12 @@
 
 namespace shadowlab {
 
+struct Lab;
+
 struct RenderOptions {
   int lab = 0;
   std::string scene_file;  // empty: the built-in default scene
+  std::string preset;                    // --preset NAME: one of the lab's presets, under --set
   std::vector<std::string> assignments;  // --set key=value
   std::string camera;  // --camera "eye=x,y,z target=x,y,z fov=deg" (empty: the scene framed)
   int width = 1280;
@@ -47,6 +50,9 @@ std::string one_line_error(const std::string& message);
 
 // Applies one `--set key=value` (render and check): a bad one throws std::invalid_argument naming it.
 void apply_set_option(ParamSet& params, const std::string& assignment);
+// Applies `--preset NAME` (render, check, the window), the lab's preset of that name; an unknown one
+// throws std::invalid_argument naming the lab and listing its presets. An empty name does nothing.
+void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name);
 
 // The camera of `--camera "eye=x,y,z target=x,y,z fov=deg"` (render and the window): each part
 // optional, what is not given is the framing's (the scene framed from the default angle). A bad spec
@@ -56,6 +62,8 @@ OrbitCamera camera_option(const std::string& spec, const Bounds& bounds);
 void parse_size_option(const std::string& spec, int* width, int* height);
 // Exit codes (app/exit_codes.h): 0 written; 2 the command line cannot be used as given; 3 runtime error.
 int run_render(const RenderOptions& options);
-int run_list_labs(bool show_params, bool json = false);
+// `shadowlab labs`: every lab, with --params its parameters, with --presets its presets (the artifact each
+// provokes and the preset that fixes it); as JSON with --json.
+int run_list_labs(bool show_params, bool json = false, bool show_presets = false);
 
 }  // namespace shadowlab

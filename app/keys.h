@@ -19,7 +19,7 @@
 
 namespace shadowlab {
 
-enum class Key { F11, F12, N, P, S, M, H, T, PageUp, PageDown };
+enum class Key { F11, F12, N, P, S, M, H, T, R, PageUp, PageDown };
 
 inline bool key_pressed(Key key, bool repeat = false) {
   switch (key) {
@@ -31,6 +31,7 @@ inline bool key_pressed(Key key, bool repeat = false) {
     case Key::M: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_M, GLFW_KEY_M), repeat);
     case Key::H: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_H, GLFW_KEY_H), repeat);
     case Key::T: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_T, GLFW_KEY_T), repeat);
+    case Key::R: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_R, GLFW_KEY_R), repeat);
     case Key::PageUp: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_PageUp, GLFW_KEY_PAGE_UP), repeat);
     case Key::PageDown: return ImGui::IsKeyPressed(SHADOWLAB_KEY(ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN), repeat);
   }

@@ -50,6 +50,7 @@ std::string main_footer() {
          "  SHADOWLAB_SETTINGS        the window's settings file (default: settings.json in the user's config folder:\n"
          "                            $XDG_CONFIG_HOME/shadowlab or ~/.config/shadowlab on Linux,\n"
          "                            ~/Library/Application Support/shadowlab on macOS, %APPDATA%\\shadowlab on Windows)\n"
+         "  SHADOWLAB_SCREENSHOTS     the folder F12 saves in (default: shadowlab/ in the user's pictures folder)\n"
          "  DISPLAY, WAYLAND_DISPLAY  where the window opens (Linux); headless commands need none with EGL\n"
          "  MESA_GL_VERSION_OVERRIDE  with MESA_GLSL_VERSION_OVERRIDE, caps Mesa's OpenGL (4.1 / 410: macOS's level)\n"
          "\n"
@@ -57,9 +58,12 @@ std::string main_footer() {
          "\n"
          "Examples:\n"
          "  shadowlab --lab 1                          open the window on lab 1\n"
+         "  shadowlab --lab 1 --preset acne            ... showing acne, for this run only (nothing given on the\n"
+         "                                             command line is saved unless you change it in the window)\n"
          "  shadowlab check --lab 1                    grade your lab 1 exercise\n"
          "  shadowlab render --lab 4 --out out/lab4    one frame of lab 4, headless\n"
          "  shadowlab labs --params                    every lab and parameter\n"
+         "  shadowlab labs --presets --json            every preset, the artifact it provokes and its fix\n"
          "Each command has --help, with an example.";
 }
 
@@ -76,10 +80,17 @@ int main(int argc, char** argv) {
   shadowlab::WindowOptions window_options;
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
   app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
+  app.add_option("--preset", window_options.preset,
+                 "The lab's preset, over its saved values, for this run (see `shadowlab labs --presets`)");
   app.add_option("--set", window_options.assignments,
-                 "Parameter value over the lab's saved values, key=value (repeatable; see `shadowlab labs --params`)");
+                 "Parameter value over the lab's saved values (and --preset), key=value, for this run (repeatable; see "
+                 "`shadowlab labs --params`)");
+  app.add_option("--impl", window_options.impl, "Show the lab's exercise or its solution")
+      ->check(CLI::IsMember({"exercise", "solution"}))
+      ->capture_default_str();
   app.add_option("--camera", window_options.camera,
-                 "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
+                 "Camera for this run, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the kept one, "
+                 "else the scene framed)");
   app.add_option("--size", window_options.size, "Window size in pixels, WxH (default 1440x860)");
   app.add_option("--frames", window_options.frames, "Close the window after this many frames (for tests)")
       ->check(CLI::Range(1, 1000000));
@@ -95,6 +106,7 @@ int main(int argc, char** argv) {
   CLI::App* render_cmd = app.add_subcommand("render", "Render one frame headless: final.png, shadow_map.png, render.json");
   render_cmd->add_option("--lab", render.lab, "Lab whose features and parameters to use")->check(CLI::Range(0, 99));
   render_cmd->add_option("--scene", render.scene_file, "glTF 2.0 file (.gltf or .glb); default: the built-in scene");
+  render_cmd->add_option("--preset", render.preset, "The lab's preset (see `shadowlab labs --presets`); --set applies over it");
   render_cmd->add_option("--set", render.assignments, "Parameter value, key=value (repeatable; see `shadowlab labs --params`)");
   render_cmd->add_option("--camera", render.camera,
                          "Camera, \"eye=x,y,z target=x,y,z fov=deg\" (each part optional; default: the scene framed)");
@@ -116,8 +128,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--ui-scale", render.ui_scale, "With --panel: text and widget scale (2: as on a 200 % monitor)")
       ->check(CLI::Range(0.5, 4.0))
       ->needs(panel_flag);
-  render_cmd->footer("Exit: 0 written; 2 usage (bad option, unusable --scene/--out); 3 runtime error (no OpenGL context).\n"
+  render_cmd->footer("Exit: 0 written; 2 usage (bad option, an unknown --preset, unusable --scene/--out); 3 runtime error "
+                     "(no OpenGL context).\n"
                      "Example: shadowlab render --lab 1 --impl exercise --panel --check --out out/lab1\n"
+                     "         shadowlab render --lab 1 --preset acne --out out/acne   (a lecture's picture)\n"
                      "Headless through EGL on Linux (no display needed); elsewhere a hidden window (needs a display).");
 
   shadowlab::CheckOptions check;
@@ -134,9 +148,13 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--scene", check.scene_file, "glTF 2.0 file to grade on instead of the lab's scene");
   check_cmd->add_option("--json", check.json_file, "Write the results as JSON to this file");
   check_cmd->add_option("--out", check.out_dir, "Folder for renders and diff images");
-  check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults, key=value (repeatable)");
+  check_cmd->add_option("--preset", check.preset,
+                        "Grade with this preset over the lab's defaults (every lab --lab selects must have it; see "
+                        "`shadowlab labs --presets`)");
+  check_cmd->add_option("--set", check.assignments, "Parameter value over the lab's defaults (and --preset), key=value (repeatable)");
   check_cmd->footer("Exit: 0 all passed; 1 some failed (or your file does not build); 2 usage; 3 grader error.\n"
-                    "Example: shadowlab check --lab 1 --json out/check1.json");
+                    "Example: shadowlab check --lab 1 --json out/check1.json\n"
+                    "         shadowlab check --lab 1 --impl solution --preset tuned");
 
   shadowlab::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
@@ -180,9 +198,15 @@ int main(int argc, char** argv) {
   bool show_params = false;
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
   labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
+  bool show_presets = false;
+  labs_cmd->add_flag("--presets", show_presets,
+                     "Also list every preset (the names --preset takes) with the artifact it provokes and the preset that fixes it");
   bool labs_json = false;
-  labs_cmd->add_flag("--json", labs_json, "The labs as JSON: number, slug, folder, exercise and solution files");
-  labs_cmd->footer("Exit: 0.\nExample: shadowlab labs --params   (the keys --set takes, with their ranges)");
+  labs_cmd->add_flag("--json", labs_json,
+                     "The labs as JSON: number, slug, folder, exercise and solution files; with --presets each lab's presets "
+                     "(name, description, values, provokes, fixed_by: null where none)");
+  labs_cmd->footer("Exit: 0.\nExample: shadowlab labs --params   (the keys --set takes, with their ranges)\n"
+                   "         shadowlab labs --presets --json   (each preset's artifact and its fix, for scripts)");
 
   try {
     app.parse(argc, argv);
@@ -197,6 +221,6 @@ int main(int argc, char** argv) {
   if (*check_cmd) return shadowlab::run_check(check);
   if (*bench_cmd) return bench.placement_only ? shadowlab::run_placement_bench(bench) : shadowlab::run_bench(bench);
   if (*grade_cmd) return shadowlab::run_grade(grade);
-  if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json);
+  if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json, show_presets);
   return shadowlab::run_window(window_options);
 }

@@ -341,7 +341,8 @@ const std::vector<std::pair<std::string, std::string>>& window_keys() {
       {"H", "hide this panel and the pass-time line (H again shows them)"},
       {"T", "pass-time line on / off (a software rasteriser times passes only while it is shown)"},
       {"F11", "fullscreen"},
-      {"F12", "screenshot"},
+      {"R", "reset the camera (the scene framed)"},
+      {"F12", "screenshot into your pictures folder (its path is shown)"},
   };
   return keys;
 }

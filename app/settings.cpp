@@ -1,5 +1,6 @@
 #include "app/settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -77,6 +78,19 @@ std::vector<std::string> drop_bad_entries(nlohmann::json& doc) {
     if (std::string problem = camera_problem(doc["camera"]); !problem.empty()) {
       dropped.push_back("the camera " + problem);
       doc.erase("camera");
+    }
+  }
+  if (doc.contains("ui")) {
+    auto& ui = doc["ui"];
+    if (!ui.is_object()) {
+      dropped.push_back("\"ui\" is not an object");
+      doc.erase("ui");
+    } else if (ui.contains("text_size")) {
+      const auto& size = ui["text_size"];
+      if (!size.is_number() || !(size.get<double>() >= kMinTextSize && size.get<double>() <= kMaxTextSize)) {
+        dropped.push_back("the text size is not a number in 0.5-3");
+        ui.erase("text_size");
+      }
     }
   }
   return dropped;
@@ -329,6 +343,14 @@ std::optional<OrbitCamera> Settings::camera(const std::string& scene) const {
   return camera;
 }
 
+void Settings::store_text_size(float size) { doc_["ui"]["text_size"] = std::clamp(size, kMinTextSize, kMaxTextSize); }
+
+std::optional<float> Settings::text_size() const {
+  const auto ui = doc_.find("ui");
+  if (ui == doc_.end() || !ui->is_object() || !ui->contains("text_size")) return std::nullopt;
+  return ui->at("text_size").get<float>();  // checked when loaded (drop_bad_entries)
+}
+
 std::vector<std::string> Settings::preset_names(int lab) const {
   std::vector<std::string> names;
   const nlohmann::json* entry = find_lab_entry(lab);
@@ -411,6 +433,45 @@ void Settings::save() {
     throw std::runtime_error(target.string() + ": cannot write settings: " + e.what());
   }
   saved_ = doc_;
+}
+
+void OneOffValues::give(int lab, const ParamSet& before, const ParamSet& given) {
+  lab_ = lab;
+  values_.clear();
+  for (const auto& spec : given.specs()) {
+    const double was = before.get_or(spec.key, spec.default_value), now = given.get(spec.key);
+    if (now != was) values_.push_back({spec.key, was, now});
+  }
+}
+
+void OneOffValues::reapply(int lab, ParamSet& params) {
+  if (lab != lab_) return;
+  for (Value& v : values_) {
+    v.saved = params.get(v.key);  // what the settings hold now is what stays saved
+    params.set(v.key, v.given);
+  }
+}
+
+ParamSet OneOffValues::to_save(int lab, const ParamSet& params) {
+  if (lab != lab_ || values_.empty()) return params;
+  ParamSet saved = params;
+  std::erase_if(values_, [&](const Value& v) {
+    if (params.get(v.key) != v.given) return true;  // changed in the window: the user's own value now
+    saved.set(v.key, v.saved);
+    return false;
+  });
+  return saved;
+}
+
+bool OneOffValues::camera_given(const OrbitCamera& camera) {
+  if (!camera_) return false;
+  // The planes follow the orbit; where the camera is and looks decides whether the user moved it.
+  const OrbitCamera& c = *camera_;
+  if (camera.target == c.target && camera.distance == c.distance && camera.yaw_deg == c.yaw_deg &&
+      camera.pitch_deg == c.pitch_deg && camera.fov_y_deg == c.fov_y_deg)
+    return true;
+  camera_.reset();
+  return false;
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,7 @@
-// Settings that are never lost: each lab's parameter values, the user's named presets and the window's
-// camera (with the name of the scene it looked at: another scene opens framed), in one JSON file with a
-// version field.
+// Settings that are never lost: each lab's parameter values, the user's named presets, the window's
+// camera (with the name of the scene it looked at: another scene opens framed) and the panel's text
+// size, in one JSON file with a version field. What the command line gives the window (--set, --preset,
+// --camera) is for one run and not saved for itself (OneOffValues below).
 //
 //   file      $SHADOWLAB_SETTINGS, else settings.json in the user's config folder: on Linux
 //             $XDG_CONFIG_HOME/shadowlab/, else ~/.config/shadowlab/; on macOS
@@ -15,7 +16,7 @@
 //             this build does not know, "labs" not an object, larger than 4 MiB) is moved aside once to
 //             settings.json.bad-YYYYmmdd-HHMMSS, a warning says where, and defaults are used
 //   bad entry a lab, its params or presets, or one preset that is not an object, a camera that is not
-//             a camera (see camera_problem), or any value nested
+//             a camera (see camera_problem), a text size that is not a number in 0.5-3, or any value nested
 //             deeper than 32 levels, is dropped alone; the warning names each, every other lab's
 //             settings are kept, the file as it was is copied aside, and the next save writes the rest
 //   unreadable a FIFO, a folder, a file we may not read: defaults, a warning, and nothing is written
@@ -38,6 +39,8 @@
 namespace shadowlab {
 
 constexpr int kSettingsVersion = 1;
+// The panel's text size, 1 = 100 %: the range its control offers (app/panel_lab.cpp, 50-300 %).
+constexpr float kMinTextSize = 0.5f, kMaxTextSize = 3.0f;
 
 // Where settings live (see above); empty when neither SHADOWLAB_SETTINGS nor the variables the
 // folder is made from (XDG_CONFIG_HOME, HOME; APPDATA on Windows) are set.
@@ -79,6 +82,10 @@ class Settings {
   void store_camera(const std::string& scene, const OrbitCamera& camera);
   std::optional<OrbitCamera> camera(const std::string& scene) const;
 
+  // The panel's text size (1 = 100 %), one for every lab: nothing when none is stored.
+  void store_text_size(float size);
+  std::optional<float> text_size() const;
+
   // Merges this object's changes since it was loaded or last saved (the labs' entries and presets it
   // stored, changed or deleted, the camera) into the file as it is on disk now, under an exclusive lock
   // (settings.json.lock beside it), and writes the result atomically (creating its folder): two windows
@@ -107,6 +114,38 @@ class Settings {
   std::string copied_aside_;
   // False when a bad file could not be moved aside: saving would overwrite the only copy of it.
   bool may_write_ = true;
+};
+
+// What the command line gives the window for one run (--set, --preset, --camera) is shown but not saved
+// for itself: for each such value the settings keep the one it replaced, until the user changes that
+// setting in the window; from then on it is the user's own value, saved as any other. (The window
+// saves as the user goes, with no Save button, so "changed in the window" is what saving means there.)
+// --impl needs nothing here: the implementation shown is never saved. CPU only, tested on its own.
+class OneOffValues {
+ public:
+  // `before`: the lab's values as the settings gave them; `given`: after the command line's.
+  void give(int lab, const ParamSet& before, const ParamSet& given);
+  void give_camera(const OrbitCamera& camera) { camera_ = camera; }
+
+  // On (re)opening `lab`, whose saved values `params` holds: the given values are set again over them.
+  void reapply(int lab, ParamSet& params);
+  // What to save for `lab`: `params`, with each given value the user left alone put back to the one it
+  // replaced. A value the user changed stops being one-off here.
+  ParamSet to_save(int lab, const ParamSet& params);
+  // Whether `camera` is still the one given, then not to be kept; once the user moves it, never again.
+  bool camera_given(const OrbitCamera& camera);
+
+  bool empty() const { return values_.empty() && !camera_; }
+
+ private:
+  struct Value {
+    std::string key;
+    double saved;  // what the settings held, saved in its place
+    double given;  // what the command line set
+  };
+  int lab_ = -1;
+  std::vector<Value> values_;
+  std::optional<OrbitCamera> camera_;
 };
 
 }  // namespace shadowlab

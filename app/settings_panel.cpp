@@ -23,11 +23,12 @@ void SettingsSession::open_lab(int lab, ParamSet& params) {
     std::fprintf(stderr, "shadowlab: warning: %s\n", problem.c_str());
     message_ = problem;
   }
+  one_off_.reapply(lab, params);
 }
 
 void SettingsSession::leave_lab(int lab, const ParamSet& params) {
   if (!started_) return;
-  settings_.store_lab(lab, params);
+  settings_.store_lab(lab, one_off_.to_save(lab, params));
   if (settings_.dirty()) save_now();
 }
 
@@ -43,7 +44,16 @@ std::optional<OrbitCamera> SettingsSession::camera(const std::string& scene) con
 }
 
 void SettingsSession::keep_camera(const std::string& scene, const OrbitCamera& camera) {
-  if (started_) settings_.store_camera(scene, camera);
+  if (started_ && !one_off_.camera_given(camera)) settings_.store_camera(scene, camera);
+}
+
+std::optional<float> SettingsSession::text_size() const {
+  if (!started_) return std::nullopt;
+  return settings_.text_size();
+}
+
+void SettingsSession::keep_text_size(float size) {
+  if (started_) settings_.store_text_size(size);
 }
 
 void SettingsSession::save_now() {

@@ -155,6 +155,10 @@ struct App {
   OrbitCamera camera;
   LabText lab_text;
   std::string status;       // last screenshot path or error
+  // F12's answer, drawn over the view for a few seconds (panel shown or not): where the picture went.
+  std::string toast;
+  bool toast_error = false;
+  double toast_since = -1e9;
   std::string scene_error;  // the last dropped file that could not be opened
   bool screenshot_requested = false;
   bool panel_hidden = false;  // H: no ImGui window is built or drawn, nor the pass-time line
@@ -302,6 +306,8 @@ void handle_keys(App& app) {
     app.hidden_since = glfwGetTime();
   }
   if (key_pressed(Key::T)) app.pass_line = !app.pass_line;
+  // R: the camera a first start gives, the scene framed (lost in an orbit, or after --camera).
+  if (key_pressed(Key::R)) app.camera = frame_scene_camera(app.renderer->scene(), app.params);
 }
 
 // For a few seconds after the panel is hidden, one line in the corner says how to get it back; then
@@ -374,7 +380,10 @@ void draw_panel(App& app) {
   const bool bench_was_open = app.bench.open;
   const PanelActions actions = draw_lab_panel(model);
   app.resize_panel = false;
-  if (actions.text_size) app.text_size = *actions.text_size;  // fonts rebuilt before the next frame
+  if (actions.text_size) {
+    app.text_size = *actions.text_size;  // fonts rebuilt before the next frame
+    app.settings.keep_text_size(app.text_size);
+  }
   if (!actions.copied_link.empty()) app.status = "copied to the clipboard: " + actions.copied_link;
   if (actions.load_bench || (app.bench.open && !bench_was_open && !app.bench_plots && app.bench.error.empty()))
     app.load_bench();
@@ -391,6 +400,33 @@ void draw_panel(App& app) {
   if (actions.fullscreen) toggle_fullscreen(app);
 }
 
+// Where F12 saves: $SHADOWLAB_SCREENSHOTS, else a shadowlab folder in the user's pictures folder (see
+// platform::user_pictures_folder), else (no home folder) the working folder. Not the working folder
+// first: a window started from a launcher or an IDE has one the user never sees (the build folder, /).
+std::filesystem::path screenshot_folder() {
+  if (std::filesystem::path p = platform::env_path("SHADOWLAB_SCREENSHOTS"); !p.empty()) return p;
+  const std::filesystem::path pictures = platform::user_pictures_folder();
+  return pictures.empty() ? std::filesystem::current_path() : pictures / "shadowlab";
+}
+
+// A new file there, made with its folder: shadowlab-lab01-20261127-201501.png (-2, -3... within a second).
+std::filesystem::path new_screenshot_file(int lab) {
+  const std::filesystem::path folder = std::filesystem::absolute(screenshot_folder());
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec || !std::filesystem::is_directory(folder))
+    throw std::runtime_error(folder.string() + ": cannot create the screenshot folder" + (ec ? ": " + ec.message() : std::string()));
+  char stem[64];
+  const std::tm now = platform::local_time(std::time(nullptr));
+  const int used = std::snprintf(stem, sizeof stem, "shadowlab-lab%02d-", lab);
+  std::strftime(stem + used, sizeof stem - static_cast<std::size_t>(used), "%Y%m%d-%H%M%S", &now);
+  for (int n = 1; n < 1000; ++n) {
+    const std::filesystem::path path = folder / (std::string(stem) + (n > 1 ? "-" + std::to_string(n) : "") + ".png");
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return path;
+  }
+  throw std::runtime_error(folder.string() + ": no free name for a screenshot");
+}
+
 void save_screenshot(App& app, int width, int height) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -398,19 +434,52 @@ void save_screenshot(App& app, int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   flip_rows(rgba, width, height, 4);
-  std::string path = app.screenshot_path;
-  if (path.empty()) {
-    char name[64];
-    const std::tm now = platform::local_time(std::time(nullptr));
-    std::strftime(name, sizeof name, "shadowlab-%Y%m%d-%H%M%S.png", &now);
-    path = name;
+  // A path given by --screenshot or a script is the caller's: written there, nothing shown over the view.
+  if (!app.screenshot_path.empty()) {
+    try {
+      write_png(app.screenshot_path, width, height, rgba);
+      app.status = "saved " + std::filesystem::absolute(app.screenshot_path).string();
+    } catch (const std::exception& e) {
+      app.status = e.what();
+    }
+    return;
   }
+  // F12 or the panel's button: a new file in the screenshot folder, and its full path over the view.
+  app.toast_since = glfwGetTime();
   try {
+    const std::filesystem::path path = new_screenshot_file(app.lab->number);
     write_png(path, width, height, rgba);
-    app.status = "saved " + std::filesystem::absolute(path).string();
+    const std::u8string utf8 = path.u8string();  // ImGui's text is UTF-8; a Windows path is wide
+    const std::string shown(reinterpret_cast<const char*>(utf8.c_str()));
+    app.status = "saved " + shown;
+    app.toast = "Screenshot saved to " + shown;
+    app.toast_error = false;
+    std::printf("shadowlab: screenshot saved to %s\n", shown.c_str());
+    std::fflush(stdout);
   } catch (const std::exception& e) {
     app.status = e.what();
+    app.toast = "Screenshot not saved: " + shortened(printable(e.what(), kFullErrorBytes), kPanelErrorBytes);
+    app.toast_error = true;
+    std::fprintf(stderr, "shadowlab: screenshot not saved: %s\n", e.what());
   }
+}
+
+// F12's answer over the view for a few seconds, at the bottom centre (over the view, in front of the panel).
+void draw_toast(const App& app) {
+  constexpr double kToastSeconds = 5.0;
+  if (app.toast.empty() || glfwGetTime() - app.toast_since > kToastSeconds) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10.0f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::PushTextWrapPos(display.x * 0.8f);  // a long path wraps rather than leaving the window
+  ImGui::Begin("##screenshot", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  if (app.toast_error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.45f, 1.0f));
+  ImGui::TextUnformatted(app.toast.c_str());
+  if (app.toast_error) ImGui::PopStyleColor();
+  ImGui::End();
+  ImGui::PopTextWrapPos();
 }
 
 // One frame of the 3D view: the left (or only) side, the right side of a split, the magnifier's crop,
@@ -508,6 +577,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     }
     if (!app.panel_hidden) draw_panel(app);
     else draw_hidden_hint(app);
+    draw_toast(app);
     if (script.take_check_request()) app.check_requested = true;
     if (app.penumbra_requested) {
       app.measure_penumbra(width, height);
@@ -583,6 +653,7 @@ int run_window(const WindowOptions& options) {
   try {
     if (!options.size.empty()) parse_size_option(options.size, &width, &height);
     ParamSet check = lab_params(*lab);
+    apply_preset_option(check, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(check, a);
     camera = options.camera.empty() ? frame_scene_camera(scene, check)
                                     : camera_option(options.camera, frame_scene_bounds(scene, check));
@@ -635,12 +706,29 @@ int run_window(const WindowOptions& options) {
     app.bench.path = options.bench_file.empty() ? (data_dir() / "docs" / "bench.json").string() : options.bench_file;
     app.bench_plots = std::move(bench);
     app.bench.open = app.bench_plots.has_value();
+    app.impl = options.impl == "solution" ? Impl::Solution : Impl::Exercise;  // never saved: one-off as it is
     app.settings.start();  // only now: a run that failed to start never touches the settings file
-    // The camera kept for this scene, unless --camera chose one.
-    if (options.camera.empty())
+    if (const auto size = app.settings.text_size()) app.text_size = *size;
+    // The camera kept for this scene, unless --camera chose one (for this run: kept once the user moves it).
+    if (options.camera.empty()) {
       if (const auto kept = app.settings.camera(scene.name)) app.camera = *kept;
+    } else {
+      app.settings.give_one_off_camera(camera);
+    }
     app.open_lab(*lab);
-    for (const auto& a : options.assignments) apply_set_option(app.params, a);  // over the saved values
+    // --preset, then --set, over the saved values: shown in this run, saved only if changed in the window.
+    const ParamSet saved = app.params;
+    apply_preset_option(app.params, *lab, options.preset);
+    for (const auto& a : options.assignments) apply_set_option(app.params, a);
+    app.settings.give_one_off(lab->number, saved, app.params);
+    // Said in the panel, so that a value missing at the next start is no surprise.
+    std::string one_off;
+    if (!options.preset.empty()) one_off += "--preset " + options.preset;
+    for (const auto& a : options.assignments) one_off += (one_off.empty() ? "" : ", ") + ("--set " + a);
+    if (!options.camera.empty()) one_off += (one_off.empty() ? "" : ", ") + std::string("--camera");
+    if (!one_off.empty())
+      app.status = "For this run only, not saved unless you change them here: " +
+                   shortened(printable(one_off, kFullErrorBytes), kPanelErrorBytes);
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, drop_callback);  // ImGui's backend does not use this one
     try {

@@ -9,9 +9,13 @@ namespace shadowlab {
 struct WindowOptions {
   int lab = 0;
   std::string scene_file;
-  // As `render` takes them: parameter values over the lab's (and its saved settings'), the camera
-  // ("eye=x,y,z target=x,y,z fov=deg"), the window's size in pixels.
+  // As `render` takes them: a preset and parameter values over the lab's (and its saved settings'), the
+  // implementation shown, the camera ("eye=x,y,z target=x,y,z fov=deg"), the window's size in pixels.
+  // All of them are for this run: none is saved unless the user changes it in the window (see
+  // OneOffValues, app/settings.h).
+  std::string preset;
   std::vector<std::string> assignments;
+  std::string impl = "exercise";
   std::string camera;
   std::string size;  // "WxH"; empty: 1440x860
   // For tests and documentation: quit after this many frames (0: run until closed), saving the last

@@ -1,6 +1,7 @@
 #include "labs/lab.h"
 
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 
 #include "renderer/shader.h"
@@ -21,6 +22,21 @@ ParamSet lab_params(const Lab& lab) {
   ParamSet set(renderer_param_specs());
   for (const auto& spec : lab.params) set.declare(spec);
   return set;
+}
+
+const Preset& find_preset(const Lab& lab, const std::string& name) {
+  std::string names;
+  for (const auto& preset : lab.presets) {
+    if (preset.name == name) return preset;
+    names += (names.empty() ? "'" : ", '") + preset.name + "'";
+  }
+  const std::string which = "lab " + std::to_string(lab.number) + " (" + lab.title + ")";
+  if (names.empty()) throw std::invalid_argument(which + " has no presets");
+  throw std::invalid_argument(which + " has no preset '" + name + "'; its presets: " + names);
+}
+
+void apply_preset(ParamSet& params, const Preset& preset) {
+  for (const auto& [key, value] : preset.values) params.set_from_string(key, value);
 }
 
 SlotFiles Lab::files(Impl impl) const {

@@ -29,10 +29,22 @@ struct BuildError : std::runtime_error {
 };
 const char* impl_name(Impl impl);
 
+// What a preset teaches, declared beside its values: the artifact it provokes with the lab's solution,
+// and the preset of the same lab that fixes it. Both empty for a preset that provokes none (a fix, a
+// debug view, a setting to compare); fixed_by empty where no preset fixes it (the fix is in the code).
+// Artifacts are named in lower case as the course names them: "acne", "peter-panning", "aliasing",
+// "perspective aliasing", "light bleeding", ... `shadowlab labs --presets --json` lists them, and a
+// test checks that every fixed_by names a preset of its lab.
+struct Artifact {
+  std::string provokes = {};
+  std::string fixed_by = {};
+};
+
 struct Preset {
   std::string name;         // "acne", "peter-panning", ...
   std::string description;  // what it shows
   std::map<std::string, std::string> values;  // key -> value, as --set takes them
+  Artifact artifact = {};   // e.g. {.provokes = "acne", .fixed_by = "tuned"}
 };
 
 // What a lab adds to `shadowlab bench`: its solution with these parameters, measured as one technique.
@@ -100,6 +112,12 @@ Lab folder_lab(Lab lab, int number, std::string slug);
 
 // The renderer's parameters with the lab's declared on top (its defaults win).
 ParamSet lab_params(const Lab& lab);
+
+// The lab's preset called `name` (as `--preset` takes it); throws std::invalid_argument naming the lab
+// and listing its presets when it has none of that name.
+const Preset& find_preset(const Lab& lab, const std::string& name);
+// Sets the preset's values in `params`, over what they hold (as its button in the panel does).
+void apply_preset(ParamSet& params, const Preset& preset);
 
 // Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
 // (unset: the light.type parameter decides).

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <deque>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -560,6 +561,36 @@ fs::path user_config_folder() {
   if (const fs::path xdg = env_path("XDG_CONFIG_HOME"); !xdg.empty()) return xdg / "shadowlab";
   const fs::path home = env_path("HOME");
   return home.empty() ? fs::path() : home / ".config" / "shadowlab";
+#endif
+}
+
+fs::path user_pictures_folder() {
+#if defined(_WIN32)
+  const fs::path profile = env_path("USERPROFILE");  // C:\Users\NAME
+  return profile.empty() ? fs::path() : profile / "Pictures";
+#elif defined(__APPLE__)
+  const fs::path home = env_path("HOME");
+  return home.empty() ? fs::path() : home / "Pictures";
+#else
+  if (const fs::path xdg = env_path("XDG_PICTURES_DIR"); !xdg.empty()) return xdg;
+  const fs::path home = env_path("HOME");
+  if (home.empty()) return {};
+  // xdg-user-dirs writes lines such as XDG_PICTURES_DIR="$HOME/Bilder" (a path under $HOME, or absolute).
+  const fs::path config = env_path("XDG_CONFIG_HOME").empty() ? home / ".config" : env_path("XDG_CONFIG_HOME");
+  constexpr std::uint64_t kMaxUserDirsBytes = 64 * 1024;  // a few hundred bytes; anything larger is not it
+  try {
+    std::istringstream lines(read_regular_file(config / "user-dirs.dirs", kMaxUserDirsBytes));
+    const std::string key = "XDG_PICTURES_DIR=\"";
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind(key, 0) != 0 || line.size() < key.size() + 1 || line.back() != '"') continue;
+      const std::string value = line.substr(key.size(), line.size() - key.size() - 1);
+      if (value.rfind("$HOME/", 0) == 0 && value.size() > 6) return home / value.substr(6);
+      if (!value.empty() && value[0] == '/') return fs::path(value);
+    }
+  } catch (const FileError&) {
+    // No such file (no xdg-user-dirs): the default below.
+  }
+  return home / "Pictures";
 #endif
 }
 

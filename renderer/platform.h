@@ -119,6 +119,12 @@ std::filesystem::path env_path(const char* name);
 // elsewhere. Empty when the variables it is made from are not set.
 std::filesystem::path user_config_folder();
 
+// The user's pictures folder, where the window's screenshots go: %USERPROFILE%\Pictures on Windows,
+// ~/Pictures on macOS, elsewhere $XDG_PICTURES_DIR, else the one xdg-user-dirs names in
+// $XDG_CONFIG_HOME/user-dirs.dirs (~/.config/user-dirs.dirs; localised names such as ~/Bilder), else
+// ~/Pictures. Empty when the variables it is made from are not set. Not created here.
+std::filesystem::path user_pictures_folder();
+
 // Local time, thread-safe (localtime_r; localtime_s on Windows).
 std::tm local_time(std::time_t t);
 

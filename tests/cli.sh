@@ -396,9 +396,10 @@ PY
     [ ! -s "$tmp/err" ] || fail "unexpected warning: $(cat "$tmp/err")"
     python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['labs']['1']; assert p['params']['shadow.bias'] == 0.02 and 'mine' in p['presets'], p" \
       "$SHADOWLAB_SETTINGS" || fail "the lab's value or preset was lost"
-    # The camera is kept with the scene; a run that fails to start (a bad --camera) writes nothing.
-    xvfb-run -a "$bin" --lab 1 --frames 2 --camera "eye=0,1,3 target=0,1,2 fov=40" >/dev/null 2>"$tmp/err" ||
-      fail "camera run failed: $(cat "$tmp/err")"
+    # The camera is kept with the scene (as a window keeps one moved there: --camera is for one run, see
+    # window_one_off); a run that fails to start (a bad --camera) writes nothing.
+    python3 -c "import json,sys; j=json.load(open(sys.argv[1])); j['camera'].update(target=[0, 1, 2], distance=1, fov_y_deg=40); json.dump(j, open(sys.argv[1], 'w'))" \
+      "$SHADOWLAB_SETTINGS" || fail "no camera kept by the runs before"
     python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 40 and abs(c['distance'] - 1) < 1e-5 and c['target'] == [0, 1, 2] and c['scene'], c" \
       "$SHADOWLAB_SETTINGS" || fail "the camera was not kept: $(cat "$SHADOWLAB_SETTINGS")"
     cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
@@ -757,6 +758,125 @@ red = sum(1 for y in range(20, 500) for x in range(20, 430)
           if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
 print("red pixels in the panel:", red)
 assert red > 200
+PY
+    ;;
+  labs_presets)  # issue 35: every lab's presets as JSON, each with the artifact it provokes and the preset that fixes it
+    "$bin" labs --presets --json >"$tmp/presets.json" || fail "labs --presets --json: exit $?"
+    python3 - "$tmp/presets.json" <<'PY' || fail "labs --presets --json has the wrong shape"
+import json, sys
+labs = json.load(open(sys.argv[1]))["labs"]
+assert len(labs) >= 17, len(labs)
+provoked = set()
+for lab in labs:
+    presets = lab["presets"]
+    names = [p["name"] for p in presets]
+    assert presets and len(names) == len(set(names)), (lab["number"], names)
+    for p in presets:
+        where = (lab["number"], p.get("name"))
+        assert set(p) == {"name", "description", "values", "provokes", "fixed_by"}, (where, sorted(p))
+        assert isinstance(p["name"], str) and p["name"] and isinstance(p["description"], str) and p["description"], where
+        assert p["values"] and all(isinstance(k, str) and isinstance(v, str) for k, v in p["values"].items()), where
+        assert p["provokes"] is None or (isinstance(p["provokes"], str) and p["provokes"] == p["provokes"].strip().lower() != ""), where
+        if p["fixed_by"] is not None:
+            assert p["provokes"] is not None, (where, "a fix for no artifact")
+            assert p["fixed_by"] in names and p["fixed_by"] != p["name"], (where, "fixed_by names no other preset of the lab", p["fixed_by"])
+            fix = presets[names.index(p["fixed_by"])]
+            assert fix["provokes"] != p["provokes"], (where, "the fix provokes the same artifact")
+        if p["provokes"]: provoked.add(p["provokes"])
+for artifact in ("acne", "peter-panning", "light bleeding"):
+    assert artifact in provoked, (artifact, sorted(provoked))
+print(sum(len(l["presets"]) for l in labs), "presets; artifacts:", sorted(provoked))
+PY
+    "$bin" labs --presets >"$tmp/text" || fail "labs --presets: exit $?"
+    grep -qF -- "--preset 'acne'  [acne] fixed by 'tutorial'" "$tmp/text" || fail "labs --presets: $(head -5 "$tmp/text")"
+    ;;
+  preset_option)  # issue 35: render, check and the window take --preset (--set over it); an unknown one names the lab and its presets
+    "$bin" render --lab 1 --preset acne --set shadow.slope_bias=1 --out "$tmp/acne" --width 64 --height 64 >/dev/null || fail "render --preset failed"
+    python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['parameters']; assert p['shadow.bias'] == 0 and p['shadow.slope_bias'] == 1, p" \
+      "$tmp/acne/render.json" || fail "render --preset acne --set shadow.slope_bias=1 not applied in that order"
+    want="--preset nope: lab 1 (Bias: acne vs peter-panning) has no preset 'nope'; its presets: 'acne', 'peter-panning', 'tuned'"
+    for cmd in "render --out $tmp/o" "check" ""; do
+      expect_error "$want" "$bin" $cmd --lab 1 --preset nope; one_line
+      "$bin" $cmd --lab 1 --preset nope >/dev/null 2>&1; rc=$?
+      [ "$rc" -eq 2 ] || fail "'$cmd --preset nope': exit $rc, expected 2 (usage)"
+    done
+    [ ! -e "$SHADOWLAB_SETTINGS" ] || fail "a window refused at the start wrote settings"
+    expect_error "lab 0 (" "$bin" check --lab 0,1 --preset tuned
+    grep -qF "(--preset applies to every lab --lab selects)" "$tmp/err" || fail "check --lab 0,1: $(cat "$tmp/err")"
+    # --help says it, for every command that takes it, and the window's keys include the camera reset.
+    "$bin" --help >"$tmp/main" && "$bin" render --help >"$tmp/render" && "$bin" check --help >"$tmp/check" &&
+      "$bin" labs --help >"$tmp/labs" || fail "--help failed"
+    for f in main render check; do grep -q -- "--preset" "$tmp/$f" || fail "$f --help lacks --preset"; done
+    grep -q -- "--impl" "$tmp/main" && grep -q "for this run" "$tmp/main" || fail "--help lacks the window's --impl or says not that options are one-off"
+    grep -q "^  R  *reset the camera" "$tmp/main" || fail "--help's window keys lack R"
+    grep -q -- "--presets" "$tmp/labs" || fail "labs --help lacks --presets"
+    # The check grades with the preset: lab 1's solution with no bias at all fails, recorded with bias 0.
+    "$bin" check --lab 1 --impl solution --preset acne --json "$tmp/check.json" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    [ "$rc" -eq 1 ] || fail "check --preset acne of lab 1's solution: exit $rc, expected 1: $(tail -3 "$tmp/out" "$tmp/err")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['parameters']['shadow.bias'] == 0 and not r['passed'], r['parameters']" \
+      "$tmp/check.json" || fail "the check did not grade with the preset"
+    ;;
+  window_one_off)  # issue 35: --set, --preset, --impl, --camera are for one run: the settings file is as it was after it
+    png_reader
+    window --lab 1 --frames 3 --screenshot "$tmp/plain1.png"  # the first run writes the lab's values and the camera
+    [ -s "$SHADOWLAB_SETTINGS" ] || fail "no settings written by a plain run"
+    cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
+    window --lab 1 --frames 3 --screenshot "$tmp/given.png" --preset peter-panning --set view.debug_quad_size=0.8 \
+      --impl solution --camera "eye=0,1,3 target=0,1,2 fov=40"
+    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" ||
+      fail "a run with --set/--preset/--impl/--camera changed the settings: $(diff "$tmp/kept.json" "$SHADOWLAB_SETTINGS" | head -20)"
+    window --lab 1 --frames 3 --screenshot "$tmp/plain2.png"
+    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" || fail "the run after the one-off run changed the settings"
+    python3 - "$tmp" <<'PY' || fail "the one-off values were not shown, or they persisted"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+w, h, _ = load(f"{sys.argv[1]}/plain1.png")
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain1", "given", "plain2")}
+view = (460, 60, w - 20, h - 60)
+stats = {"given/plain1": differing(r["given"], r["plain1"], *view), "plain2/plain1": differing(r["plain2"], r["plain1"], *view)}
+print(stats)
+assert stats["given/plain1"] > 0.2, "the command line's values were not shown"
+assert stats["plain2/plain1"] < 0.01, "the command line's values came back at the next start"
+PY
+    # A camera moved in the window (R: the scene framed, 45 degrees) is kept, --camera or not.
+    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1])); j["camera"]["fov_y_deg"] = 30; json.dump(j, open(sys.argv[1], "w"))
+PY
+    window --lab 1 --camera "eye=0,1,3 target=0,1,2 fov=40" --script "frames:2,key:r,frames:2"
+    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 45, c" "$SHADOWLAB_SETTINGS" ||
+      fail "the camera reset by R was not kept: $(cat "$SHADOWLAB_SETTINGS")"
+    ;;
+  window_details)  # issue 35: F12 saves in the pictures folder and says where over the view; the text size is kept
+    png_reader
+    mkdir -p "$tmp/home"
+    # F12 with no SHADOWLAB_SCREENSHOTS: the pictures folder (here ~/Pictures: no xdg-user-dirs file in this home).
+    HOME="$tmp/home" XDG_CONFIG_HOME= XDG_PICTURES_DIR= window --lab 1 \
+      --script "frames:3,screenshot:$tmp/before.png,key:f12,frames:2,screenshot:$tmp/toast.png"
+    shots=("$tmp"/home/Pictures/shadowlab/shadowlab-lab01-*.png)
+    [ "${#shots[@]}" -eq 1 ] && [ -s "${shots[0]}" ] || fail "F12 saved no picture in ~/Pictures/shadowlab: $(ls -R "$tmp/home")"
+    grep -qF "screenshot saved to ${shots[0]}" "$tmp/out" || fail "F12 did not say where: $(cat "$tmp/out")"
+    SHADOWLAB_SCREENSHOTS="$tmp/shots" window --lab 1 --script "frames:2,key:f12,frames:2,key:f12,frames:2"
+    [ "$(ls "$tmp/shots" | grep -c '^shadowlab-lab01-.*\.png$')" -eq 2 ] || fail "two F12s, not two pictures in \$SHADOWLAB_SCREENSHOTS: $(ls "$tmp/shots")"
+    # The text size kept in the settings is the panel's at the next start, and stays kept.
+    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1])); j.setdefault("ui", {})["text_size"] = 2; json.dump(j, open(sys.argv[1], "w"))
+PY
+    window --lab 1 --frames 3 --screenshot "$tmp/large.png"
+    python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['ui']['text_size'] == 2" "$SHADOWLAB_SETTINGS" || fail "text size lost"
+    python3 - "$tmp" <<'PY' || fail "no feedback over the view after F12, or the kept text size was not used"
+import sys
+sys.path.insert(0, sys.argv[1])
+from png_read import load, differing
+w, h, _ = load(f"{sys.argv[1]}/before.png")
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "toast", "large")}
+stats = {"toast: bottom centre": differing(r["toast"], r["before"], w // 2 - 200, h - 40, w // 2 + 200, h - 12, step=1),
+         "text size 2: panel": differing(r["large"], r["before"], 20, 60, 430, 400)}
+print(stats)
+assert stats["toast: bottom centre"] > 0.05, "F12 showed nothing at the bottom of the view"
+assert stats["text size 2: panel"] > 0.2, "the kept text size was not used"
 PY
     ;;
   *) fail "unknown case $case_name" ;;

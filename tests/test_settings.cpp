@@ -320,6 +320,74 @@ TEST_F(SettingsTest, BadCameraIsDroppedAlone) {
   EXPECT_FLOAT_EQ(s.camera("default")->distance, 3.0f);
 }
 
+// The panel's text size is kept for every lab, round trip exact; one that is not a number in 0.5-3 is
+// dropped alone (the labs' values stay), named in the warning.
+TEST_F(SettingsTest, TextSizeIsKept) {
+  {
+    Settings s = Settings::load(file);
+    EXPECT_FALSE(s.text_size().has_value()) << "none stored yet";
+    s.store_text_size(1.75f);
+    s.save();
+  }
+  EXPECT_EQ(Settings::load(file).text_size(), 1.75f);
+  for (const std::string bad : {R"("big")", "9", "0.1", "null"}) {
+    write_all(file, R"({"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.02}}}, "ui": {"text_size": )" + bad + "}}");
+    const Settings s = Settings::load(file);
+    EXPECT_NE(s.warning().find("the text size is not a number in 0.5-3"), std::string::npos) << bad << ": " << s.warning();
+    EXPECT_FALSE(s.text_size().has_value()) << bad;
+    ParamSet p = params();
+    EXPECT_TRUE(s.apply_lab(1, p).empty());
+    EXPECT_DOUBLE_EQ(p.get("shadow.bias"), 0.02) << "the labs' values stay";
+  }
+}
+
+// The command line's values are shown, not saved: what is saved for each is the value it replaced,
+// until the user changes it in the window; then the user's value is saved, as any other.
+TEST(OneOffValues, SavedOnlyOnceChangedInTheWindow) {
+  ParamSet saved(renderer_param_specs());
+  saved.set("shadow.bias", 0.002);  // as the settings file had them
+  saved.set("shadow.slope_bias", 2.0);
+  ParamSet given = saved;
+  given.set("shadow.bias", 0.05);   // --set shadow.bias=0.05
+  given.set("shadow.slope_bias", 0.0);  // --preset's second value
+  OneOffValues one_off;
+  one_off.give(1, saved, given);
+
+  ParamSet shown = given;
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, shown).get("shadow.bias"), 0.002) << "the --set value must not be saved";
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, shown).get("shadow.slope_bias"), 2.0);
+  EXPECT_DOUBLE_EQ(one_off.to_save(2, shown).get("shadow.bias"), 0.05) << "one-off values are the given lab's";
+
+  shown.set("shadow.bias", 0.01);  // the user moves the slider: the value is theirs now
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, shown).get("shadow.bias"), 0.01);
+  shown.set("shadow.bias", 0.05);  // and back to the command line's value: still theirs
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, shown).get("shadow.bias"), 0.05);
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, shown).get("shadow.slope_bias"), 2.0)
+      << "the value the user left alone is still one-off";
+
+  // Leaving the lab and coming back: the settings' values, then the given ones still one-off over them.
+  ParamSet reopened(renderer_param_specs());
+  reopened.set("shadow.slope_bias", 3.0);
+  one_off.reapply(1, reopened);
+  EXPECT_DOUBLE_EQ(reopened.get("shadow.slope_bias"), 0.0);
+  EXPECT_DOUBLE_EQ(one_off.to_save(1, reopened).get("shadow.slope_bias"), 3.0);
+}
+
+TEST(OneOffValues, CameraKeptOnceMoved) {
+  OneOffValues one_off;
+  OrbitCamera given;
+  given.fov_y_deg = 40.0f;
+  EXPECT_FALSE(one_off.camera_given(given)) << "no --camera: every camera is kept";
+  one_off.give_camera(given);
+  OrbitCamera same = given;
+  same.near_plane = 0.5f;  // the planes follow the orbit; the camera did not move
+  EXPECT_TRUE(one_off.camera_given(same));
+  OrbitCamera moved = given;
+  moved.yaw_deg += 10.0f;
+  EXPECT_FALSE(one_off.camera_given(moved));
+  EXPECT_FALSE(one_off.camera_given(given)) << "once moved, the camera is the user's, even back where it was";
+}
+
 // A value nested 100,000 deep (a 200 KB file) used to crash every start: it is dropped alone, the
 // rest kept. A file that is nothing but nesting is moved aside once.
 TEST_F(SettingsTest, DeepNestingIsDroppedNotCrashedOn) {

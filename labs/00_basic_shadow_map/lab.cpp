@@ -120,8 +120,10 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
   lab.presets = {
-      {"acne", "No bias: surfaces shadow themselves in stripes.", {{"shadow.bias", "0"}}},
-      {"peter-panning", "A huge bias: shadows detach from the objects casting them.", {{"shadow.bias", "0.05"}}},
+      {"acne", "No bias: surfaces shadow themselves in stripes.", {{"shadow.bias", "0"}},
+       {.provokes = "acne", .fixed_by = "tutorial"}},
+      {"peter-panning", "A huge bias: shadows detach from the objects casting them.", {{"shadow.bias", "0.05"}},
+       {.provokes = "peter-panning", .fixed_by = "tutorial"}},
       {"tutorial", "The tutorial's constant bias of 0.005.", {{"shadow.bias", "0.005"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};

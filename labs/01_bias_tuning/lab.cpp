@@ -157,8 +157,10 @@ Lab SHADOWLAB_LAB_MAKER() {
   elevation.default_value = 10.0;
   lab.params = {bias, slope, elevation};
   lab.presets = {
-      {"acne", "No bias at all: stripes of self-shadowing.", {{"shadow.bias", "0"}, {"shadow.slope_bias", "0"}}},
-      {"peter-panning", "A large bias: shadows detach from their casters.", {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}}},
+      {"acne", "No bias at all: stripes of self-shadowing.", {{"shadow.bias", "0"}, {"shadow.slope_bias", "0"}},
+       {.provokes = "acne", .fixed_by = "tuned"}},
+      {"peter-panning", "A large bias: shadows detach from their casters.", {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}},
+       {.provokes = "peter-panning", .fixed_by = "tuned"}},
       {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {

@@ -182,7 +182,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.params.push_back(*base.find("view.flat_normals"));  // the facets the volumes are extruded from
   lab.presets = {
       {"point light", "A point light among the objects.", {{"light.type", "point"}}},
-      {"z-pass", "Count the faces in front: right until the camera enters a volume.", {{"volume.method", "z-pass"}}},
+      {"z-pass", "Count the faces in front: right until the camera enters a volume.", {{"volume.method", "z-pass"}},
+       {.provokes = "z-pass failure"}},
       {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}}},
       {"flat normals", "Each triangle in the colour of its face normal, computed by a geometry shader; the vertex "
        "normals as lines over it.", {{"view.flat_normals", "true"}, {"view.normals", "true"}}},

@@ -408,7 +408,8 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"octaves", "The octave sum; then the octaves apart in red, green, blue.", {{"noise.view", "octave sum"}}},
       {"plain rings", "No turbulence: the rings alone.", {{"noise.view", "wood"}, {"noise.turbulence", "0"}}},
       {"acne on wood", "Lab 1's acne under a grazing light, on the busy floor.",
-       {{"noise.view", "wood"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"}}},
+       {{"noise.view", "wood"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"}},
+       {.provokes = "acne"}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {

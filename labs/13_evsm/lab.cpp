@@ -109,10 +109,13 @@ Lab SHADOWLAB_LAB_MAKER() {
     if (spec.key == "vsm.warp") spec.default_value = 1.0;  // exponential
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
-      {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, for comparison.", {{"vsm.warp", "none"}}},
+      {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, for comparison.", {{"vsm.warp", "none"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
       {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}}},
-      {"small c", "c = 5 (the RG16F limit): less sharpening, more bleeding.", {{"vsm.evsm_exponent", "5"}}},
-      {"half floats", "RG16F: c is clamped to 5.", {{"vsm.format", "RG16F"}}},
+      {"small c", "c = 5 (the RG16F limit): less sharpening, more bleeding.", {{"vsm.evsm_exponent", "5"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
+      {"half floats", "RG16F: c is clamped to 5.", {{"vsm.format", "RG16F"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {

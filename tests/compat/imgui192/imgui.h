@@ -56,6 +56,7 @@ enum ImGuiKey : int {
   ImGuiKey_M,
   ImGuiKey_N,
   ImGuiKey_P,
+  ImGuiKey_R,
   ImGuiKey_S,
   ImGuiKey_T,
   ImGuiKey_F11,
