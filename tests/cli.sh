@@ -817,7 +817,6 @@ PY
       "$tmp/check.json" || fail "the check did not grade with the preset"
     ;;
   window_one_off)  # issue 35: --set, --preset, --impl, --camera are for one run: the settings file is as it was after it
-    png_reader
     window --lab 1 --frames 3 --screenshot "$tmp/plain1.png"  # the first run writes the lab's values and the camera
     [ -s "$SHADOWLAB_SETTINGS" ] || fail "no settings written by a plain run"
     cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
@@ -827,10 +826,9 @@ PY
       fail "a run with --set/--preset/--impl/--camera changed the settings: $(diff "$tmp/kept.json" "$SHADOWLAB_SETTINGS" | head -20)"
     window --lab 1 --frames 3 --screenshot "$tmp/plain2.png"
     cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" || fail "the run after the one-off run changed the settings"
-    python3 - "$tmp" <<'PY' || fail "the one-off values were not shown, or they persisted"
+    png_python - "$tmp" <<'PY' || fail "the one-off values were not shown, or they persisted"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/plain1.png")
 r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain1", "given", "plain2")}
 view = (460, 60, w - 20, h - 60)
@@ -849,7 +847,6 @@ PY
       fail "the camera reset by R was not kept: $(cat "$SHADOWLAB_SETTINGS")"
     ;;
   window_details)  # issue 35: F12 saves in the pictures folder and says where over the view; the text size is kept
-    png_reader
     mkdir -p "$tmp/home"
     # F12 with no SHADOWLAB_SCREENSHOTS: the pictures folder (here ~/Pictures: no xdg-user-dirs file in this home).
     HOME="$tmp/home" XDG_CONFIG_HOME= XDG_PICTURES_DIR= window --lab 1 \
@@ -866,10 +863,9 @@ j = json.load(open(sys.argv[1])); j.setdefault("ui", {})["text_size"] = 2; json.
 PY
     window --lab 1 --frames 3 --screenshot "$tmp/large.png"
     python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['ui']['text_size'] == 2" "$SHADOWLAB_SETTINGS" || fail "text size lost"
-    python3 - "$tmp" <<'PY' || fail "no feedback over the view after F12, or the kept text size was not used"
+    png_python - "$tmp" <<'PY' || fail "no feedback over the view after F12, or the kept text size was not used"
 import sys
-sys.path.insert(0, sys.argv[1])
-from png_read import load, differing
+from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/before.png")
 r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "toast", "large")}
 stats = {"toast: bottom centre": differing(r["toast"], r["before"], w // 2 - 200, h - 40, w // 2 + 200, h - 12, step=1),
