@@ -37,7 +37,8 @@ using CascadeFitFn =
 // The solution: C_i = lambda * n (f / n)^(i / N) + (1 - lambda) * (n + (f - n) i / N).
 std::vector<float> practical_splits(float near_plane, float far_plane, int count, float lambda);
 // The solution: the slice's bounding sphere (centre the corners' mean, radius the largest distance to
-// it), a square box of side 2 r, its centre snapped down to whole texels (2 r / map_size) along the
+// it), a square box one texel wider than the sphere on every side (map_size texels of 2 r / (map_size - 2)
+// each: the snap moves the box by up to a texel), its centre snapped down to whole texels along the
 // light's image axes; depth over the scene's box.
 LightView fit_cascade_sphere(const FrustumCorners& slice, const glm::vec3& to_light, int map_size, const Bounds& scene);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -80,23 +81,31 @@ LightView fixed_tutorial_ortho(const glm::vec3& to_light) {
 }
 
 namespace {
-// Nearest and farthest distance from a point to a box, along nothing in particular: the box's distance
-// field. Near is 0 when the point is inside.
-std::pair<float, float> distance_range(const Bounds& bounds, const glm::vec3& p) {
-  const glm::vec3 outside = glm::max(glm::max(bounds.min - p, p - bounds.max), glm::vec3(0.0f));
+// The distance from a point to the box's farthest corner. A distance is never less than the depth along
+// any axis, so this far plane clips nothing, whichever way the light looks.
+float farthest_corner(const Bounds& bounds, const glm::vec3& p) {
   float far_distance = 0.0f;
   for (int i = 0; i < 8; ++i) far_distance = std::max(far_distance, glm::distance(bounds.corner(i), p));
-  return {glm::length(outside), far_distance};
+  return std::max(far_distance, 1e-6f);
 }
 }  // namespace
 
 LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const glm::vec3& direction, float cone_deg) {
-  auto [near_distance, far_distance] = distance_range(bounds, position);
-  far_distance = std::max(far_distance, 1e-6f);
-  // Small margins so the box's nearest and farthest points are not clipped by rounding.
-  const float far_plane = far_distance * 1.001f;
-  const float near_plane = std::max(near_distance * 0.999f, far_plane / kMaxFarOverNear);
-  const glm::mat3 basis = orthonormal_basis(-glm::normalize(direction));  // the light looks down -Z
+  const glm::vec3 axis = glm::normalize(direction);
+  // A perspective near plane is a plane across the axis, not a sphere around the light: a point r away
+  // and theta off the axis lies at depth r cos(theta), nearer than r. So near is the least depth along
+  // the axis over the box, which (depth being linear) a corner attains; the distance to the box is only
+  // an upper bound and clips a caster off the axis. In double: the corners' offsets from a light far from
+  // them keep their small differences.
+  double nearest_depth = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 8; ++i)
+    nearest_depth = std::min(nearest_depth, glm::dot(glm::dvec3(bounds.corner(i)) - glm::dvec3(position), glm::dvec3(axis)));
+  // Small margins so the box's nearest and farthest points are not clipped by rounding. A corner at or
+  // behind the light's plane (the light inside the box, or low beside it): nothing can be assumed about
+  // the nearest depth inside the cone, and only a small fraction of far is safe.
+  const float far_plane = farthest_corner(bounds, position) * 1.001f;
+  const float near_plane = std::max(static_cast<float>(nearest_depth) * 0.999f, far_plane / kMaxFarOverNear);
+  const glm::mat3 basis = orthonormal_basis(-axis);  // the light looks down -Z
   LightView lv;
   lv.view = glm::mat4(glm::transpose(basis));
   lv.view[3] = glm::vec4(-(glm::transpose(basis) * position), 1.0f);
@@ -108,12 +117,16 @@ LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const 
 }
 
 CubeLightViews point_light_views(const Bounds& bounds, const glm::vec3& position) {
-  auto [near_distance, far_distance] = distance_range(bounds, position);
   CubeLightViews cube;
-  cube.far_plane = std::max(far_distance, 1e-6f) * 1.001f;
-  // Six faces see every direction, so the nearest geometry may be anywhere: near cannot exceed the
-  // distance to the box, and inside the box only a small fraction of far is safe.
-  cube.near_plane = std::max(near_distance * 0.999f, cube.far_plane / kMaxFarOverNear);
+  cube.far_plane = farthest_corner(bounds, position) * 1.001f;
+  // The six faces are the world's axes, and a point lies in the face of its largest offset from the
+  // light, at depth max(|dx|, |dy|, |dz|) along that face's axis: as little as 1/sqrt(3) of its distance.
+  // The least such depth over the box is the largest of its per-axis gaps to the box (the box's
+  // Chebyshev distance; 0 inside, where only a small fraction of far is safe). The Euclidean distance to
+  // the box is only an upper bound, and clips a caster toward a face's corner.
+  const glm::vec3 gap = glm::max(glm::max(bounds.min - position, position - bounds.max), glm::vec3(0.0f));
+  const float nearest_depth = std::max(gap.x, std::max(gap.y, gap.z));
+  cube.near_plane = std::max(nearest_depth * 0.999f, cube.far_plane / kMaxFarOverNear);
   cube.projection = glm::perspective(glm::radians(kCubeFaceFovDeg), 1.0f, cube.near_plane, cube.far_plane);
   // GL's cube-map faces: direction and up for +X, -X, +Y, -Y, +Z, -Z (the up vectors point down on the
   // side faces because cube maps are addressed with t growing downward).

@@ -43,13 +43,17 @@ LightView fit_light_ortho(const Bounds& bounds, const glm::vec3& to_light);
 LightView fixed_tutorial_ortho(const glm::vec3& to_light);
 
 // A spot light at `position` looking along `direction` (unit) with a cone of `cone_deg` half-angle: a
-// perspective projection whose near and far planes are fitted to the scene's box (as tight as the box
-// allows: depth precision is spread between them). The light's own view of the box decides near; a
-// light inside the box gets near = far / 1000.
+// perspective projection whose near and far planes are fitted to the scene's box (depth precision is
+// spread between them). Near: the least depth along the axis of the box's 8 corners (a perspective near
+// plane is a plane across the axis, so the distance to the box would clip a caster off the axis); when a
+// corner is at or behind the light's plane (the light inside the box or beside it), far / 1000, never
+// less. Far: the distance to the farthest corner, never less than a depth along the axis.
 LightView fit_spot_light(const Bounds& bounds, const glm::vec3& position, const glm::vec3& direction, float cone_deg);
 
 // The six 90-degree views of a point light, in GL's cube-map face order (+X, -X, +Y, -Y, +Z, -Z) with
-// GL's face orientations, near and far fitted to the box as for the spot light.
+// GL's face orientations, near and far fitted to the box as for the spot light, with the faces' axes:
+// near is the largest of the light's per-axis gaps to the box (the least depth any face sees in it,
+// down to 1/sqrt(3) of the distance to the box), never less than far / 1000 (its value inside the box).
 struct CubeLightViews {
   glm::mat4 view[6];
   glm::mat4 projection{1.0f};

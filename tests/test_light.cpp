@@ -1,7 +1,10 @@
 // Light maths: directions, the orthonormal basis, the fitted ortho projection, the orbit camera.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <vector>
 
 #include "renderer/light.h"
 
@@ -123,8 +126,8 @@ TEST(SpotLight, SeesItsTargetAndFitsNearFar) {
     EXPECT_GT(c.w, 0.0f);
     EXPECT_LE(std::abs(c.z / c.w), 1.0f) << i;
   }
-  // Near is the light's distance to the box top (7, less a 0.1 % margin), not a tiny default: the top
-  // lands just inside the near plane. (Perspective depth changes by 2f/((f-n)n) ~ 0.62 per unit there.)
+  // Near is the nearest corners' depth along the axis (the box top, 7, less a 0.1 % margin), not a tiny
+  // default: the top lands just inside the near plane. (Perspective depth changes by 2f/((f-n)n) ~ 0.62 per unit there.)
   const glm::vec4 top = lv.view_projection() * glm::vec4(0, 3, 0, 1);
   EXPECT_GT(top.z / top.w, -1.0f);
   EXPECT_LT(top.z / top.w, -0.99f);
@@ -137,6 +140,134 @@ TEST(SpotLight, StraightDownAndInsideTheBoxStayFinite) {
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(m[c][r]));
   }
+}
+
+// A perspective near plane is a plane at an axial depth, not a sphere: a caster off the axis at
+// Euclidean distance r lies at axial depth r cos(angle), closer than r. Every point of the box that the
+// frustum's sides let through must therefore lie between its near and far planes, or it is clipped out
+// of the map (and casts no shadow). The light's distance to the box (the rule before issue 36) clips
+// such points; the smallest axial depth of the box's corners does not.
+struct ClipMiss {
+  int tested = 0;  // points of the box inside the frustum's four sides, in front of the light
+  int clipped = 0;  // of those, beyond the near or the far plane
+  glm::vec3 first{0.0f};
+  float first_depth = 0.0f;  // its window depth, z / w (outside [-1, 1])
+};
+
+// Tests the box's corners and `samples` points spread through it (a seeded lattice of random points).
+ClipMiss clip_misses(const Bounds& box, const glm::mat4& view_projection, int samples, std::mt19937& rng) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < 8; ++i) points.push_back(box.corner(i));
+  for (int i = 0; i < samples; ++i) points.push_back(box.min + glm::vec3(unit(rng), unit(rng), unit(rng)) * box.extent());
+  ClipMiss miss;
+  for (const glm::vec3& p : points) {
+    const glm::vec4 c = view_projection * glm::vec4(p, 1.0f);
+    if (!(c.w > 0.0f) || std::abs(c.x) > c.w || std::abs(c.y) > c.w) continue;
+    ++miss.tested;
+    if (std::abs(c.z) > c.w) {
+      if (miss.clipped++ == 0) {
+        miss.first = p;
+        miss.first_depth = c.z / c.w;
+      }
+    }
+  }
+  return miss;
+}
+
+// The near plane's distance along the axis, read back from a GL perspective matrix.
+float near_of(const glm::mat4& projection) { return projection[3][2] / (projection[2][2] - 1.0f); }
+
+TEST(SpotLight, NearPlaneClipsNothingInsideTheCone) {
+  // The review's case (lab-texts-2026-11-27, finding 4): the default scene, a spot 6 units from the
+  // box's centre, 60 degrees up, its azimuth toward the sphere, cone 40. The sphere's top lies 23.5
+  // degrees off the axis, at axial depth 3.69, while the light's distance to the box is 3.996.
+  const Bounds scene = make_default_scene().bounds();
+  const glm::vec3 centre = scene.center();
+  const glm::vec3 toward_sphere = glm::normalize(glm::vec3(1, 0, -1));
+  const float elevation = glm::radians(60.0f);
+  const glm::vec3 position = centre + 6.0f * (std::cos(elevation) * toward_sphere + glm::vec3(0, std::sin(elevation), 0));
+  const glm::vec3 axis = glm::normalize(centre - position);
+  const LightView lv = fit_spot_light(scene, position, axis, 40.0f);
+  const glm::vec3 sphere_top(1.8f, 2.4f, -1.8f);
+  const float top_depth = glm::dot(sphere_top - position, axis);
+  EXPECT_NEAR(top_depth, 3.69f, 0.01f);
+  EXPECT_LT(glm::degrees(std::acos(top_depth / glm::distance(sphere_top, position))), 40.0f) << "inside the cone";
+  const glm::vec4 top = lv.view_projection() * glm::vec4(sphere_top, 1.0f);
+  EXPECT_GE(top.z, -top.w) << "the sphere's top (axial depth " << top_depth << ") is clipped by the near plane at "
+                           << near_of(lv.projection);
+  EXPECT_LE(near_of(lv.projection), top_depth);
+
+  // Spots all around the box, near it and far from it, above and below, each aimed near the centre
+  // with its own cone: no point of the box inside the frustum's sides is clipped.
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::normal_distribution<float> gauss;
+  const float radius = 0.5f * glm::length(scene.extent());
+  int tested = 0;
+  for (int i = 0; i < 300; ++i) {
+    const glm::vec3 from = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
+    const glm::vec3 light = centre + radius * (0.6f + 2.4f * unit(rng)) * from;
+    const glm::vec3 aim = centre + 0.3f * radius * glm::vec3(gauss(rng), gauss(rng), gauss(rng));
+    const float cone = 10.0f + 60.0f * unit(rng);
+    const LightView spot = fit_spot_light(scene, light, glm::normalize(aim - light), cone);
+    const ClipMiss miss = clip_misses(scene, spot.view_projection(), 400, rng);
+    tested += miss.tested;
+    EXPECT_EQ(miss.clipped, 0) << "spot at (" << light.x << ", " << light.y << ", " << light.z << "), cone " << cone
+                               << ", near " << near_of(spot.projection) << ": " << miss.clipped << " of " << miss.tested
+                               << " points clipped, first (" << miss.first.x << ", " << miss.first.y << ", "
+                               << miss.first.z << ") at window depth " << miss.first_depth;
+  }
+  EXPECT_GT(tested, 10000) << "enough of the box inside the cones to mean something";
+}
+
+TEST(SpotLight, NearPlaneIsTheNearestCornerAlongTheAxis) {
+  // Conservative but not wasteful: with the whole box in front of the light, near is its nearest
+  // corner's axial depth (less the 0.1 % margin), so some corner lands just inside the near plane.
+  const Bounds scene = make_default_scene().bounds();
+  const glm::vec3 position(7, 5, 6), axis = glm::normalize(scene.center() - position);
+  const LightView lv = fit_spot_light(scene, position, axis, 45.0f);
+  float nearest = 1e30f;
+  for (int i = 0; i < 8; ++i) nearest = std::min(nearest, glm::dot(scene.corner(i) - position, axis));
+  EXPECT_NEAR(near_of(lv.projection), 0.999f * nearest, 1e-4f * nearest);
+  // A corner behind the light's plane (a spot low beside the box, looking across it): nothing safe can
+  // be said about the nearest depth in the cone, so near falls back to far / 1000.
+  const glm::vec3 beside(7, 0.5f, 0), across = glm::normalize(glm::vec3(-1, 0, 1));
+  const LightView low = fit_spot_light(scene, beside, across, 45.0f);
+  const float far_plane = low.projection[3][2] / (low.projection[2][2] + 1.0f);
+  EXPECT_NEAR(near_of(low.projection), far_plane / 1000.0f, 1e-4f * far_plane / 1000.0f);
+}
+
+TEST(PointLight, NearPlaneClipsNothingOnAnyFace) {
+  // A cube face sees a point at axial depth max(|dx|, |dy|, |dz|) (the face is the largest component),
+  // down to D / sqrt(3) for a point at Euclidean distance D. A light outside a corner of the box: the
+  // box's nearest corner (5, 1, 5) lies 45 degrees off the +X and -Z faces' axes, at axial depth 3,
+  // while the light's distance to the box is 4.24.
+  std::mt19937 rng(36);
+  const glm::vec3 corner_light(8, 1, 8);
+  const CubeLightViews corner = point_light_views(unit_scene(), corner_light);
+  EXPECT_LE(corner.near_plane, 3.0f);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::normal_distribution<float> gauss;
+  const Bounds scene = unit_scene();
+  const float radius = 0.5f * glm::length(scene.extent());
+  std::vector<glm::vec3> lights = {corner_light, {0, 1, 0}, {0, 10, 0}, {6, 4, 6}, {-5.5f, -1, 5.5f}};
+  for (int i = 0; i < 100; ++i)
+    lights.push_back(scene.center() + radius * (0.3f + 2.7f * unit(rng)) *
+                                          glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng))));
+  int tested = 0;
+  for (const glm::vec3& light : lights) {
+    const CubeLightViews cube = point_light_views(scene, light);
+    for (int f = 0; f < 6; ++f) {
+      const ClipMiss miss = clip_misses(scene, cube.projection * cube.view[f], 400, rng);
+      tested += miss.tested;
+      EXPECT_EQ(miss.clipped, 0) << "point light at (" << light.x << ", " << light.y << ", " << light.z << "), face "
+                                 << f << ", near " << cube.near_plane << ": " << miss.clipped << " of " << miss.tested
+                                 << " points clipped, first (" << miss.first.x << ", " << miss.first.y << ", "
+                                 << miss.first.z << ") at window depth " << miss.first_depth;
+    }
+  }
+  EXPECT_GT(tested, 20000);
 }
 
 TEST(PointLight, SixFacesCoverEveryDirectionOnce) {
