@@ -64,7 +64,7 @@ void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampl
 
 std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sweep) {
   constexpr int kSteps = 600;
-  constexpr double kNdotL[] = {1.0, 0.5};
+  const std::vector<double>& kNdotL = sweep.n_dot_l;
   std::vector<double> offsets;
   for (int j = 0; j < kSteps; ++j) offsets.push_back(sweep.distance * std::pow(10.0, -5.0 + 5.0 * j / (kSteps - 1)));
   ProbeRequest request;
@@ -86,7 +86,7 @@ std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sw
   const auto v = run_probe(hooks, request);
   std::vector<BiasThreshold> out;
   for (std::size_t pass = 0; pass < v.size(); ++pass)
-    for (std::size_t k = 0; k < std::size(kNdotL); ++k) {
+    for (std::size_t k = 0; k < kNdotL.size(); ++k) {
       double bias = std::numeric_limits<double>::infinity();
       for (int j = 0; j < kSteps; ++j)
         if (!(v[pass][k * kSteps + static_cast<std::size_t>(j)] >= 0.5f)) {
@@ -103,6 +103,9 @@ constexpr double kMinBiasRatio = 0.5;         // below: acne
 constexpr double kMaxBiasRatio = 4.0;         // above: peter-panning
 constexpr double kMaxBiasRatioSpread = 1.4;   // per n.l, largest over least ratio across distances and texel sizes
 constexpr double kMinBiasSlopeGrowth = 1.5;   // bias(n.l = 0.5) / bias(n.l = 1), median
+// The course's cap on tan(angle of incidence) (lab 1; shaders/shadow/slope.glsl:MAX_TAN_INCIDENCE): the
+// footprint a grazing case is graded against stops growing there, as the solutions' bias does.
+constexpr double kMaxTanIncidence = 10.0;
 
 void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>& thresholds, double slope) {
   double least = std::numeric_limits<double>::infinity(), most = 0.0;
@@ -110,7 +113,7 @@ void grade_bias_thresholds(CheckResult& result, const std::vector<BiasThreshold>
   std::map<double, std::vector<double>> by_n_dot_l;
   nlohmann::json list = nlohmann::json::array();
   for (const auto& t : thresholds) {
-    const double tan_a = std::sqrt(1.0 - t.n_dot_l * t.n_dot_l) / t.n_dot_l;
+    const double tan_a = std::min(std::sqrt(1.0 - t.n_dot_l * t.n_dot_l) / t.n_dot_l, kMaxTanIncidence);
     const double footprint = t.distance * t.texel_angle * (1.0 + slope * tan_a);
     const double ratio = t.bias / footprint;
     least = std::min(least, ratio);

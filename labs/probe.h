@@ -45,12 +45,15 @@ void bind_probe_shadow_map(GLuint program, const GlTexture& depth, const GlSampl
 // The bias a positional light's shadow test really applies, in world units, found by sweeping points away
 // from a stored occluder: `setup` binds an occluder at `distance` from the light (a uniform map) and the
 // uniforms of one texel angle; the points lie along `direction` from the light at distance + x, for x
-// from 1e-5 to 1 times the distance (log-spaced), with n . l = 1 and 0.5. Per (n . l, texel angle): the
-// first x at which the point is shadowed (0 when shadowed at once, +inf when never).
+// from 1e-5 to 1 times the distance (log-spaced), at each n . l of `n_dot_l`. Per (n . l, texel angle):
+// the first x at which the point is shadowed (0 when shadowed at once, +inf when never).
 struct BiasSweep {
   double distance = 5.0;
   glm::vec3 direction{0, 0, -1};  // unit, from the light
   std::vector<float> texel_angles;
+  // The angles of incidence probed; 1 and 0.5 must be among them (bias.slope_growth compares the two).
+  // A probe that stops at 0.5 (60 degrees) never sees a slope term that is wrong only at grazing light.
+  std::vector<double> n_dot_l{1.0, 0.5};
   std::function<void(GLuint program, double distance, float texel_angle)> setup;
 };
 struct BiasThreshold {
@@ -59,7 +62,8 @@ struct BiasThreshold {
 std::vector<BiasThreshold> sweep_bias(const Features& hooks, const BiasSweep& sweep);
 
 // Grades the thresholds against the footprint bias the lab teaches, distance x texel angle x
-// (1 + slope x tan(angle of incidence)): adds bias.too_small (least ratio, >= 0.5), bias.too_large
+// (1 + slope x tan(angle of incidence)), tan capped at 10 as lab 1 teaches (shaders/shadow/slope.glsl; the
+// cap matters only below n . l = 0.0995, 84.3 degrees): adds bias.too_small (least ratio, >= 0.5), bias.too_large
 // (largest, <= 4), bias.not_proportional (per n . l, largest over least ratio, <= 1.4: it must scale with
 // distance and texel size as a texel's footprint does) and bias.slope_growth (the bias at n . l = 0.5
 // over the bias at 1, >= 1.5).

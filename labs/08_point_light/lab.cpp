@@ -36,10 +36,13 @@ constexpr float kCameraPitch = 60.0f;
 
 // The bias alone (labs/probe.h): a point light at the origin, a cube map whose every texel holds an
 // occluder at one of three distances, at two map sizes' texel angles (2 / size), along a direction
-// that lands on the -Y face off its centre.
+// that lands on the -Y face off its centre, at angles of incidence from head-on down to grazing (n . l
+// 0.05 is 87 degrees, past the course's cap on tan at 84): a slope term wrong only at grazing light (tan
+// capped at 45 degrees, say) passes n . l = 1 and 0.5 alone.
 constexpr double kProbeDistances[] = {1.0, 3.0, 8.0};
 constexpr int kProbeMapSizes[] = {512, 1024};
 constexpr double kProbeSlope = 2.0;
+constexpr double kProbeNdotL[] = {1.0, 0.5, 0.2, 0.05};
 
 // Six layers of size x size texels, layer-major (layer 0 first), bottom row first; nearest, clamped.
 GlTexture probe_faces(const std::vector<float>& texels, int size) {
@@ -77,6 +80,7 @@ void probe_bias(CheckContext& ctx, CheckResult& result) {
     sweep.distance = distance;
     sweep.direction = glm::normalize(glm::vec3(0.3f, -0.8f, 0.5f));
     sweep.texel_angles = angles;
+    sweep.n_dot_l.assign(std::begin(kProbeNdotL), std::end(kProbeNdotL));
     sweep.setup = [&](GLuint program, double, float angle) {
       bind_probe_faces(program, faces);
       set_uniform(program, "u_light_position", glm::vec3(0.0f));
