@@ -38,6 +38,16 @@ constexpr double kMinZPassInsideError = 0.05;
 // with several times the sides (and fill); how a student caps the volumes is graded by the images.
 constexpr double kMaxSidesRatio = 1.0;
 
+// The held-out suns' elevation bands (degrees), one sun drawn in each, so that every seed grades a low
+// sun: its shadows are 3.5 to 7 times as long as their casters are high, and a volume that stops short of
+// infinity ends inside them (the corpus's extruded_finite_distance). The lowest band starts where the
+// solution was measured to pass at every azimuth the draw allows (INSTRUCTOR.md).
+struct HeldOutSun {
+  const char* name;  // the tag is held_out_<name>zfail
+  float min_elevation, max_elevation;
+};
+constexpr HeldOutSun kHeldOutSuns[] = {{"", 16.0f, 80.0f}, {"low_", 8.0f, 16.0f}};
+
 // Inside the big box's shadow (light at azimuth 35, elevation 50): a point 0.3 above the ground just
 // beyond the box, looking away from it across the shadow it casts.
 const glm::vec3 kInsideEye{-3.67f, 0.3f, -0.68f};
@@ -124,21 +134,25 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
                                  "every edge gives the same shadows with several times the triangles and fill."});
     }
   }
-  // A held-out directional light, drawn from the seed, within 60 degrees of the lab's azimuth (from
-  // farther round, the shadows fall behind the objects as the camera sees them).
+  // Held-out directional lights, drawn from the seed, within 60 degrees of the lab's azimuth (from
+  // farther round, the shadows fall behind the objects as the camera sees them): one sun in each band of
+  // kHeldOutSuns, so that every seed also grades a low sun, whose long shadows reach far from their casters.
   {
     std::mt19937 rng = ctx.held_out_rng();
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    ParamSet p = base;
-    p.set_from_string("light.type", "directional");
-    p.set_from_string("volume.method", "z-fail");
-    const float azimuth = std::fmod(base.get_float("light.azimuth") + 120.0f * (unit(rng) - 0.5f) + 360.0f, 360.0f);
-    const float elevation = 25.0f + 55.0f * unit(rng);
-    p.set("light.azimuth", azimuth);
-    p.set("light.elevation", elevation);
-    grade(result, "held_out_zfail", ctx.measure(p, hooks, "lab09_held_out_" + std::string(impl_name(ctx.impl)), nullptr, band),
-          true);
-    result.conditions.push_back({{"tag", "held_out_zfail"}, {"light_azimuth", azimuth}, {"light_elevation", elevation}});
+    for (const auto& sun : kHeldOutSuns) {
+      ParamSet p = base;
+      p.set_from_string("light.type", "directional");
+      p.set_from_string("volume.method", "z-fail");
+      const float azimuth = std::fmod(base.get_float("light.azimuth") + 120.0f * (unit(rng) - 0.5f) + 360.0f, 360.0f);
+      const float elevation = sun.min_elevation + (sun.max_elevation - sun.min_elevation) * unit(rng);
+      p.set("light.azimuth", azimuth);
+      p.set("light.elevation", elevation);
+      const std::string tag = std::string("held_out_") + sun.name + "zfail";
+      grade(result, tag, ctx.measure(p, hooks, "lab09_held_out_" + std::string(sun.name) + impl_name(ctx.impl), nullptr, band),
+            true);
+      result.conditions.push_back({{"tag", tag}, {"light_azimuth", azimuth}, {"light_elevation", elevation}});
+    }
   }
   report_adjacency(ctx, result);
 
