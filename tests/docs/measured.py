@@ -35,9 +35,11 @@ VARIANTS = [
     # Lab 1: a constant bias alone, swept with the stock exercise's formula at the check's light.
     *[(1, f"exercise_constant_{c}", "check", ["--impl", "exercise", "--set", f"shadow.bias={c}"])
       for c in ("0.0005", "0.002", "0.005", "0.01", "0.02", "0.04")],
-    # Lab 1: the solution's formula with front faces culled in the shadow pass.
-    *[(1, f"solution_cull_front_slope_{k}", "check", ["--impl", "solution", "--set", "shadow.cull=front",
-                                                      "--set", f"shadow.slope_bias={k}"]) for k in ("1", "2")],
+    # Lab 1: the solution's formula with front (or back) faces culled in the shadow pass. Lab 1 takes the
+    # culling from the #define SHADOW_PASS_CULL line of the graded file, which overrides --set shadow.cull,
+    # so these are submissions: the solution with that one line changed (see SUBMISSIONS).
+    *[(1, f"solution_cull_{cull}_slope_{k}", "submission", [f"cull_{cull}", "--set", f"shadow.slope_bias={k}"])
+      for cull, k in (("front", "1"), ("front", "2"), ("back", "2"))],
     # Lab 3: the minimum variance swept (the solution; the check's oracle case), and half floats.
     *[(3, f"solution_min_variance_{v}", "check", ["--impl", "solution", "--set", f"vsm.min_variance={v}"])
       for v in ("1e-7", "1e-5", "1e-4", "1e-3")],
@@ -49,6 +51,30 @@ VARIANTS = [
     *[(12, f"solution_count_{n}", "check", ["--impl", "solution", "--set", f"csm.count={n}"]) for n in ("1", "2", "8")],
     *[(12, f"solution_lambda_{l}", "check", ["--impl", "solution", "--set", f"csm.lambda={l}"]) for l in ("0", "0.5", "1")],
 ]
+
+# A "submission" run's first argument names one of these: {exercise slot: (the project file it is made
+# from, the line replaced, its replacement)}, graded with `check --submission` (a folder laid out like the
+# project; it holds the edited slots only).
+SUBMISSIONS = {
+    f"cull_{cull}": {"labs/01_bias_tuning/exercise.glsl": ("labs/01_bias_tuning/solution.glsl",
+                                                          "#define SHADOW_PASS_CULL NONE",
+                                                          f"#define SHADOW_PASS_CULL {cull.upper()}")}
+    for cull in ("front", "back")
+}
+
+
+def make_submission(root, name, folder):
+    """The submission folder for SUBMISSIONS[name], and how it was made (kept in the record)."""
+    made = {}
+    for slot, (source, line, replacement) in SUBMISSIONS[name].items():
+        text = (root / source).read_text()
+        if line not in text:
+            raise RuntimeError(f"{source}: no line {line!r} to replace for the submission {name}")
+        target = folder / slot
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(text.replace(line, replacement, 1))
+        made[slot] = f"{source} with {line!r} replaced by {replacement!r}"
+    return made
 
 
 def lab_folders(root):
@@ -93,16 +119,22 @@ def runs_for(lab):
             yield name, kind, args
 
 
-def record_lab(binary, lab):
+def record_lab(binary, lab, root):
     runs = {}
     for name, kind, args in runs_for(lab):
+        made = None
         with tempfile.TemporaryDirectory() as tmp:
-            command, result = (run_check if kind == "check" else run_render)(binary, lab, args, tmp)
-        # The outputs' temporary folder is no part of the record.
+            if kind == "submission":
+                made = make_submission(root, args[0], pathlib.Path(tmp) / "submission")
+                args = ["--submission", str(pathlib.Path(tmp) / "submission"), *args[1:]]
+            command, result = (run_render if kind == "render" else run_check)(binary, lab, args, tmp)
+        # The outputs' (and a submission's) temporary folder is no part of the record.
         command = [c for c in command if not c.startswith(tempfile.gettempdir())]
-        if kind == "check":
+        if kind != "render":
             result.pop("images", None)
         runs[name] = {"command": ["shadowlab", *command], "result": result}
+        if made:
+            runs[name]["submission"] = made
         print(f"lab {lab} {name}: {result.get('status', 'rendered')}", flush=True)
     return runs
 
@@ -169,7 +201,7 @@ def record(binary, root, only=None):
     for lab in lab_folders(root):
         if only and lab not in only:
             continue
-        data = {"recorded": block, "runs": record_lab(binary, lab)}
+        data = {"recorded": block, "runs": record_lab(binary, lab, root)}
         derived = derive(lab, data["runs"])
         if derived:
             data["derived"] = derived
@@ -197,7 +229,7 @@ def replay(binary, root, only=None):
     for file in files:
         lab = int(re.match(r"lab_(\d+)\.json", file).group(1))
         old = json.loads((folder / file).read_text())
-        new = {"runs": record_lab(binary, lab)}
+        new = {"runs": record_lab(binary, lab, root)}
         new["derived"] = derive(lab, new["runs"])
         for where, printed, _, pointer, scale in (m for m in markers if m[2] == file):
             parts = pointer.strip("/").split("/")
