@@ -34,6 +34,8 @@ constexpr SpotPlace kPlaces[] = {{"high", 5.0f, 7.0f, 4.0f, 40.0f}, {"low", -4.0
 constexpr double kProbeNear = 1.0, kProbeFar = 21.0, kProbeCone = 30.0, kProbeSlope = 2.0;
 constexpr double kProbeDistances[] = {2.0, 5.0, 10.0, 18.0};
 constexpr int kProbeMapSizes[] = {512, 1024};
+// Angles of incidence, head-on down to grazing (n . l 0.05 is 87 degrees, past the course's cap on tan).
+constexpr double kProbeNdotL[] = {1.0, 0.5, 0.2, 0.05};
 // The held-out places (from, to): distance from the scene's centre, elevation and cone in degrees; map sizes.
 constexpr float kHeldOutDistance[] = {6.0f, 9.0f}, kHeldOutElevation[] = {25.0f, 60.0f}, kHeldOutCone[] = {40.0f, 60.0f};
 constexpr const char* kHeldOutSizes[] = {"512", "1024", "2048"};
@@ -53,6 +55,7 @@ void probe_bias(CheckContext& ctx, CheckResult& result) {
     BiasSweep sweep;
     sweep.distance = distance;
     sweep.texel_angles = angles;
+    sweep.n_dot_l.assign(std::begin(kProbeNdotL), std::end(kProbeNdotL));
     sweep.setup = [&](GLuint program, double, float angle) {
       bind_probe_shadow_map(program, map, compare);
       set_uniform(program, "u_light_tex_matrix", to_texture * projection);
