@@ -51,10 +51,10 @@ float draw_colour_legend(ImDrawList* draw, const ColourLegend& legend, ImVec2 po
     }
     if (draw) draw->AddRect(ImVec2(x - 1, y - 1), ImVec2(x + inner + 1, y + bar + 1), IM_COL32(255, 255, 255, 200));
     // Tick marks at the ends and inside, the values under them.
-    const float tick = std::round(font_size * 0.35f);
+    const float tick = std::round(font_size * 0.35f), bar_bottom = y + bar;
     auto mark = [&](float t) {
       const float at = x + inner * std::clamp(t, 0.0f, 1.0f);
-      if (draw) draw->AddLine(ImVec2(at, y + bar), ImVec2(at, y + bar + tick), kText, 2.0f);
+      if (draw) draw->AddLine(ImVec2(at, bar_bottom), ImVec2(at, bar_bottom + tick), kText, 2.0f);
       return at;
     };
     mark(0.0f);

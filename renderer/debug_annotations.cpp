@@ -55,8 +55,8 @@ std::optional<ColourLegend> pcss_view_legend(const ParamSet& params) {
   legend.low = "0";
   if (view == "kernel width") {
     legend.title = "PCSS kernel width";
-    legend.units = "filter diameter, shadow-map texels (log scale)";
-    legend.high = number(range) + " texels (the cap)";
+    legend.units = "the filter's diameter in shadow-map texels, log scale";
+    legend.high = number(range) + " (the cap)";
     // Where the shader puts a width w: log2(1 + w) / log2(1 + range).
     for (float w : {4.0f, 16.0f})
       legend.ticks.emplace_back(std::log2(1.0f + w) / std::log2(1.0f + range), number(w));
