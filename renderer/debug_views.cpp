@@ -174,8 +174,9 @@ void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit)
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
   std::vector<DebugQuadLabel>* labels = ctx.annotations ? &ctx.annotations->quads : nullptr;
-  shadow.draw_debug_quads(
-      {lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao, {}, labels});
+  // Beside the flashlight's map, the frame light's says whose it is too.
+  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao,
+                           ctx.flashlight_pass ? "sun" : "", labels});
   // The flashlight's map left of the sun's.
   if (ctx.flashlight_pass)
     ctx.flashlight_pass->draw_debug_quads({lit.width() - side - 8, lit.height(), side, "depth", ctx.empty_vao, "flashlight", labels});
