@@ -16,6 +16,7 @@
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
 #include "app/split_view.h"
+#include "app/view_annotations.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
@@ -247,6 +248,8 @@ int run_render(const RenderOptions& options) {
         }
         color = offscreen.render(
             [&] {
+              draw_view_annotations(renderer.annotations(), options.width, options.height, 0.0f,
+                                    static_cast<float>(options.width));
               draw_lab_panel(model);
               draw_pass_overlay(stats, nullptr);
             },

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "app/imgui_gl.h"
+#include "app/view_annotations.h"
 #include "labs/check.h"
 #include "renderer/soft_truth.h"
 
@@ -89,6 +90,12 @@ bool draw_penumbra_window(PenumbraPanelState& state, const std::string& current_
         ImGui::TextWrapped("The view or a parameter has changed since: measure again.");
         ImGui::PopStyleColor();
       }
+      // The colour bar of the picture below (the mapping soft_diff_image uses, renderer/debug_annotations.h).
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      const float legend_width = std::min(ImGui::GetContentRegionAvail().x, 30.0f * ImGui::GetFontSize());
+      const float legend_height = draw_colour_legend(ImGui::GetWindowDrawList(), penumbra_error_legend(), at,
+                                                     legend_width, ImGui::GetFontSize(), false);
+      ImGui::Dummy(ImVec2(legend_width, legend_height));
       const ImVec2 avail = ImGui::GetContentRegionAvail();
       const float scale = std::min(avail.x / static_cast<float>(m.width), std::max(avail.y, 60.0f) / static_cast<float>(m.height));
       gl_image(state.texture.id(), ImVec2(static_cast<float>(m.width) * scale, static_cast<float>(m.height) * scale));

@@ -31,6 +31,8 @@ class SplitView {
   // holds the left side; then draws the divider and the labels (ImGui background list).
   void compose(const ParamSet& right, const FrameRequest& request, const CompareState& state, const Lab& lab, Impl impl);
   const FrameStats* stats() const { return renderer_ ? &renderer_->stats() : nullptr; }
+  // The right side's words over the view (its quads' labels, its legends); null when not split.
+  const DebugAnnotations* annotations() const { return renderer_ ? &renderer_->annotations() : nullptr; }
   void set_timing(TimingMode mode) {
     if (renderer_) renderer_->set_timing(mode);
   }

@@ -33,6 +33,7 @@
 #include "app/panel_lab.h"
 #include "app/settings_panel.h"
 #include "app/split_view.h"
+#include "app/view_annotations.h"
 #include "labs/check.h"
 #include "labs/lab.h"
 #include "renderer/context.h"
@@ -497,6 +498,12 @@ void render_view(App& app, int width, int height) {
     app.magnifier.capture(width, height);
     app.magnifier.draw();
   }
+  // The debug quads' labels and the false-colour legends, each side's over its own part of the view.
+  const float display_width = ImGui::GetIO().DisplaySize.x;
+  const DebugAnnotations* right = app.compare.split ? app.split.annotations() : nullptr;
+  const float divider = right ? app.compare.divider * display_width : display_width;
+  draw_view_annotations(app.renderer->annotations(), width, height, 0.0f, divider);
+  if (right) draw_view_annotations(*right, width, height, divider, display_width);
   if (app.pass_line_shown()) draw_pass_overlay(app.renderer->stats(), app.compare.split ? app.split.stats() : nullptr);
 }
 
@@ -603,7 +610,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     side.gl_finishes += FrameCost::finishes(app) - finishes_before;
     side.blocking_reads += FrameCost::blocking(app) - blocking_before;
     ImGui::Render();
-    // With the panel hidden and no line or hint shown there is nothing over the view to draw.
+    // With the panel hidden and no line, hint, label or legend shown there is nothing over the view to draw.
     if (ImGui::GetDrawData()->TotalVtxCount > 0) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     ++frame;
     script.frame_drawn();

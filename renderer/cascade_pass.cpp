@@ -142,8 +142,10 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
 }
 
 void CascadePass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (csm_param(ctx.params, "csm.show_cascades") != 0.0)
+  if (csm_param(ctx.params, "csm.show_cascades") != 0.0) {
     ctx.timed("cascade_view", [&] { lit.draw(ctx, *this, LitVariant::CascadeView); });
+    if (ctx.annotations) ctx.annotations->legends.push_back(cascade_view_legend(count_));
+  }
 }
 
 void CascadePass::draw_debug_quads(const DebugQuadArea& area) {
@@ -157,7 +159,8 @@ void CascadePass::draw_debug_quads(const DebugQuadArea& area) {
   quad_u_.maps.set(0);
   glBindVertexArray(area.empty_vao);
   for (int i = 0; i < count_; ++i) {
-    glViewport(area.width - (i + 1) * (side + 4) - 4, 8, side, side);
+    area.place(area.width - (i + 1) * (side + 4) - 4, 8, side, side,
+               "cascade " + std::to_string(i + 1) + " of " + std::to_string(count_));
     quad_u_.layer.set(static_cast<float>(i));
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

@@ -104,7 +104,9 @@ void CubeShadowPass::draw_debug_quads(const DebugQuadArea& area) {
   face_quad_u_.far_plane.set(std::max(far_plane_, 1e-6f));
   glBindVertexArray(area.empty_vao);
   for (int f = 0; f < 6; ++f) {
-    glViewport(area.width - 8 - (3 - f % 3) * (cell + 4), 8 + (f < 3 ? cell + 4 : 0), cell, cell);
+    static constexpr const char* kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};  // GL's layer order
+    area.place(area.width - 8 - (3 - f % 3) * (cell + 4), 8 + (f < 3 ? cell + 4 : 0), cell, cell,
+               std::string(kFaceNames[f]) + " face: distance");
     face_quad_u_.face.set(f);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

@@ -162,16 +162,24 @@ void DebugViews::light_volume(PassContext& ctx, LitPass& lit) {
   glEnable(GL_DEPTH_TEST);
 }
 
+void DebugQuadArea::place(int x, int y, int quad_width, int quad_height, const std::string& label) const {
+  glViewport(x, y, quad_width, quad_height);
+  if (labels) labels->push_back({x, y, quad_width, quad_height, light.empty() ? label : light + ": " + label});
+}
+
 void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // the quads must not overwrite the G-buffer
   glDisable(GL_DEPTH_TEST);
   // Squares along the bottom right (clear of an overlay on the left), view.debug_quad_size of the frame height.
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
-  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao});
+  std::vector<DebugQuadLabel>* labels = ctx.annotations ? &ctx.annotations->quads : nullptr;
+  // Beside the flashlight's map, the frame light's says whose it is too.
+  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao,
+                           ctx.flashlight_pass ? "sun" : "", labels});
   // The flashlight's map left of the sun's.
   if (ctx.flashlight_pass)
-    ctx.flashlight_pass->draw_debug_quads({lit.width() - side - 8, lit.height(), side, "depth", ctx.empty_vao});
+    ctx.flashlight_pass->draw_debug_quads({lit.width() - side - 8, lit.height(), side, "depth", ctx.empty_vao, "flashlight", labels});
   glEnable(GL_DEPTH_TEST);
   glViewport(0, 0, lit.width(), lit.height());
 }

@@ -123,7 +123,7 @@ void DepthMapPass::lit_constants(const ParamSet& params, LitConstants& out) cons
 void DepthMapPass::draw_debug_quads(const DebugQuadArea& area) {
   if (quad_u_.generation != quad_.generation())
     quad_u_ = {quad_.generation(), Uniform(quad_.id(), "u_depth_map"), Uniform(quad_.id(), "u_rect")};
-  glViewport(area.width - area.side - 8, 8, area.side, area.side);
+  area.place(area.width - area.side - 8, 8, area.side, area.side, "shadow map depth (light's view)");
   glUseProgram(quad_.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, depth_texture_.id());

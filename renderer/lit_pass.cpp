@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "renderer/image_io.h"
+#include "renderer/debug_annotations.h"
 #include "renderer/technique_params.h"
 
 namespace shadowlab {
@@ -46,6 +47,11 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
   if (own_shadow_coords && !remap) d.defines.emplace_back(kOwnShadowCoordsDefine, "1");
+  // The overlays' colours and their ranges, from the constants their legends read.
+  if (variant == LitVariant::CascadeView)
+    for (auto& define : cascade_view_defines()) d.defines.push_back(std::move(define));
+  if (variant == LitVariant::RemapView)
+    for (auto& define : remap_view_defines()) d.defines.push_back(std::move(define));
   set_material_define(d, materials);
   return d;
 }
@@ -237,6 +243,9 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
   set_uniforms(ctx, shadow, p.u);
+  // A shadow test with PCSS's debug view (it reads u_pcss_view) shows a colour ramp: its legend, once.
+  if (ctx.annotations && p.u.pcss_view.present() && ctx.annotations->legends.empty())
+    if (auto legend = pcss_view_legend(ctx.params)) ctx.annotations->legends.push_back(std::move(*legend));
   bind_material(p.program, ctx);
   ctx.gpu_scene.bind();
   if (!materials_) {
@@ -393,7 +402,7 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.pcss_blocker_samples.set(static_cast<int>(technique_param(params, "pcss.blocker_samples")));
   u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
   u.pcss_view.set(static_cast<int>(technique_param(params, "pcss.view")));
-  u.pcss_view_range.set(static_cast<float>(technique_param(params, "pcss.view_range")));
+  u.pcss_view_range.set(pcss_view_range(params));  // the legend's high end too (debug_annotations.h)
   if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
     const FrameLight& f = *ctx.flashlight;
     const glm::mat4& fp = f.view.projection;

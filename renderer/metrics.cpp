@@ -227,6 +227,18 @@ nlohmann::json to_json(const SoftMetrics& m) {
                         {"penumbra_pixels", m.penumbra_pixels}};
 }
 
+DiffColor soft_diff_colour(float fraction, double signed_error) {
+  const float f = std::clamp(fraction, 0.0f, 1.0f);
+  const DiffColor& toward = signed_error < 0.0 ? kDiffAcne : kDiffLeak;
+  const float t = static_cast<float>(std::min(1.0, std::abs(signed_error) / kSoftDiffFullError));
+  DiffColor c{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const float grey = static_cast<float>(kDiffShadowed[k]) + f * static_cast<float>(kDiffLit[k] - kDiffShadowed[k]);
+    c[k] = static_cast<std::uint8_t>(std::lround(grey + t * (static_cast<float>(toward[k]) - grey)));
+  }
+  return c;
+}
+
 std::vector<std::uint8_t> soft_diff_image(const SoftTruth& truth, const std::vector<float>& visibility) {
   check_sizes(truth, visibility);
   const std::size_t width = static_cast<std::size_t>(truth.width);
@@ -239,14 +251,8 @@ std::vector<std::uint8_t> soft_diff_image(const SoftTruth& truth, const std::vec
       std::uint8_t* px = out_row + x * 4;
       px[3] = 255;
       if (!truth.valid[i]) continue;  // black
-      const float f = std::clamp(truth.visible[i], 0.0f, 1.0f);
-      const double e = soft_signed_error(visibility[i], truth.visible[i]);
-      const DiffColor& toward = e < 0.0 ? kDiffAcne : kDiffLeak;
-      const float t = static_cast<float>(std::min(1.0, std::abs(e) / kSoftDiffFullError));
-      for (int k = 0; k < 3; ++k) {
-        const float grey = static_cast<float>(kDiffShadowed[k]) + f * static_cast<float>(kDiffLit[k] - kDiffShadowed[k]);
-        px[k] = static_cast<std::uint8_t>(std::lround(grey + t * (static_cast<float>(toward[k]) - grey)));
-      }
+      const DiffColor c = soft_diff_colour(truth.visible[i], soft_signed_error(visibility[i], truth.visible[i]));
+      for (int k = 0; k < 3; ++k) px[k] = c[static_cast<std::size_t>(k)];
     }
   }
   return image;

@@ -102,5 +102,8 @@ nlohmann::json to_json(const SoftMetrics& m);
 // kSoftDiffFullError or more; invalid pixels black. Agrees with compare_soft pixel by pixel.
 inline constexpr float kSoftDiffFullError = 0.25f;
 std::vector<std::uint8_t> soft_diff_image(const SoftTruth& truth, const std::vector<float>& visibility);
+// One valid pixel of it: the truth's visible fraction and the signed error (visibility - fraction, as
+// soft_signed_error gives it). The legend (renderer/debug_annotations.h) samples the same function.
+DiffColor soft_diff_colour(float fraction, double signed_error);
 
 }  // namespace shadowlab

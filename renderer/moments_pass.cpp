@@ -219,17 +219,25 @@ void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
 }
 
 void MomentsPass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (vsm_param(ctx.params, "vsm.show_remap") != 0.0)
+  if (vsm_param(ctx.params, "vsm.show_remap") != 0.0) {
     ctx.timed("remap_view", [&] { lit.draw(ctx, *this, LitVariant::RemapView); });
+    if (ctx.annotations) ctx.annotations->legends.push_back(remap_view_legend());
+  }
 }
 
 void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {
   // "all": E[z], E[z^2] and the variance left to right; else the one channel ("depth" is E[z]).
   const int only = area.channel == "moment 2" ? 1 : area.channel == "variance" ? 2 : area.channel == "all" ? -1 : 0;
   const int count = only < 0 ? 3 : 1;
+  // With a warp (EVSM) the moments are those of the warped depth w = exp(c z).
+  const bool warped = warp_exponent_ != 0.0f;
+  const char* labels[3] = {warped ? "warped moments: E[w]" : "moments: E[z]",
+                           warped ? "warped moments: E[w²]" : "moments: E[z²]",
+                           warped ? "variance E[w²] - E[w]² (red: negative)" : "variance E[z²] - E[z]² (red: negative)"};
   for (int i = 0; i < count; ++i) {
-    glViewport(area.width - (count - i) * (area.side + 8), 8, area.side, area.side);
-    draw_debug_quad(only < 0 ? i : only, area.empty_vao);
+    const int channel = only < 0 ? i : only;
+    area.place(area.width - (count - i) * (area.side + 8), 8, area.side, area.side, labels[channel]);
+    draw_debug_quad(channel, area.empty_vao);
   }
 }
 

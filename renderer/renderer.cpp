@@ -276,6 +276,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
+  annotations_.clear();
+  ctx.annotations = &annotations_;
   if (billboards_ && shadow_entry_ == &shadow_pass_entry(ShadowTechnique::Depth, light_.type)) {
     billboards_->set_points(features_.billboards, placement_);
     ctx.billboards = billboards_.get();

@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/cascades.h"
+#include "renderer/debug_annotations.h"
 #include "renderer/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gl_objects.h"
@@ -209,6 +210,9 @@ class Renderer {
   int width() const { return width_; }
   int height() const { return height_; }
   const FrameStats& stats() const { return stats_; }
+  // The last frame's words over the view: its debug quads' labels and its false-colour views' legends
+  // (renderer/debug_annotations.h); the app draws them (app/view_annotations.h).
+  const DebugAnnotations& annotations() const { return annotations_; }
 
   // The flashlight of the last frame (null unless the features have one), in the local frame but for
   // scene_position; its map's depths (bottom row first) and its map as a picture (as the debug quad).
@@ -293,6 +297,7 @@ class Renderer {
   glm::mat4 camera_view_{1.0f}, camera_projection_{1.0f};
   int width_ = 0, height_ = 0;
   FrameStats stats_;
+  DebugAnnotations annotations_;
 };
 
 }  // namespace shadowlab

@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/cascades.h"
+#include "renderer/debug_annotations.h"
 #include "renderer/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_mesh.h"
@@ -103,6 +104,8 @@ struct PassContext {
   const FrameLight* flashlight = nullptr;
   ShadowPass* flashlight_pass = nullptr;
   GLuint flashlight_map = 0;  // its depth texture
+  // The frame's words (debug quads' labels, false-colour legends), filled as the passes draw (null: none).
+  DebugAnnotations* annotations = nullptr;
 
   glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
   template <typename F>
@@ -122,6 +125,12 @@ struct DebugQuadArea {
   int width = 0, height = 0, side = 0;
   std::string channel;  // view.debug_channel: "all", "depth", "moment 1", "moment 2", "variance"
   GLuint empty_vao = 0;
+  std::string light;  // whose map, when not the frame's light ("flashlight"): said before each label
+  std::vector<DebugQuadLabel>* labels = nullptr;  // where place() records the quads (null: nowhere)
+
+  // Sets the viewport of one quad and records it with its label: what the quad shows, in words (the
+  // label is given here, where the quad is placed, so no quad is drawn without one).
+  void place(int x, int y, int quad_width, int quad_height, const std::string& label) const;
 };
 
 class LitPass;

@@ -605,7 +605,7 @@ w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
 w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
 assert (w, h) == (w2, h2) == (960, 900)
 inside = differing(plain, panel, 20, 40, 420, 860)
-outside = differing(plain, panel, 460, 60, 940, 860)
+outside = differing(plain, panel, 460, 60, 700, 860)  # left of the debug quad (its label is drawn with --panel)
 # The failed check's FAIL lines are red text.
 red = sum(1 for y in range(20, 880) for x in range(20, 430)
           if panel[y][4 * x] > 200 and panel[y][4 * x + 1] < 150 and panel[y][4 * x + 2] < 140)
@@ -628,6 +628,64 @@ print("penumbra window region differs:", window)
 assert window > 0.5
 PY
     expect_error "--penumbra requires --panel" "$bin" render --lab 0 --penumbra --out "$tmp/never"
+    ;;
+  render_annotations)  # issue 35: every debug quad carries its label, a false-colour view its legend (render --panel)
+    # Lab 12's four cascades in the corner (1280x720: quads 90 px square at the bottom right, x 900-1276,
+    # y 622-712); the labels stand right above them (two lines each), only with --panel.
+    "$bin" render --lab 12 --out "$tmp/c_plain" --width 1280 --height 720 >/dev/null || fail "render failed"
+    "$bin" render --lab 12 --panel --out "$tmp/c_panel" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
+    # Lab 16's kernel-width view: the colour bar stands above the map in the corner and its label (x 850-1270,
+    # y 300-480).
+    "$bin" render --lab 16 --set "pcss.view=kernel width" --out "$tmp/k_plain" --width 1280 --height 720 >/dev/null \
+      || fail "render failed"
+    "$bin" render --lab 16 --set "pcss.view=kernel width" --panel --out "$tmp/k_panel" --width 1280 --height 720 \
+      >/dev/null || fail "render --panel failed"
+    "$bin" render --lab 16 --panel --out "$tmp/s_panel" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
+    png_python - "$tmp" <<'PY' || fail "a debug quad's label or a false-colour legend is missing"
+import sys
+from png_tools import load, differing
+d = sys.argv[1]
+img = {n: load(f"{d}/{n}/final.png")[2] for n in ("c_plain", "c_panel", "k_plain", "k_panel", "s_panel")}
+# Light text on the labels' dark boxes: count near-white pixels in the strip.
+white = lambda rows, x0, y0, x1, y1: sum(1 for y in range(y0, y1) for x in range(x0, x1)
+                                        if min(rows[y][4 * x:4 * x + 3]) > 215)
+# The shader's ramp (shaders/shadow/pcss.glsl: t, t^2, 0.6 (1 - t)) at its two ends, in the bar.
+ramp_ends = lambda rows: (sum(1 for y in range(300, 480) for x in range(850, 1270)
+                              if rows[y][4 * x] > 230 and rows[y][4 * x + 1] > 230 and rows[y][4 * x + 2] < 40),
+                          sum(1 for y in range(300, 480) for x in range(850, 1270)
+                              if rows[y][4 * x] < 25 and rows[y][4 * x + 1] < 25 and 130 < rows[y][4 * x + 2] < 175))
+stats = {"cascade labels": differing(img["c_plain"], img["c_panel"], 902, 580, 1276, 618, step=1),
+         "cascade maps under the labels": differing(img["c_plain"], img["c_panel"], 902, 624, 1276, 710, step=1),
+         "label text pixels": white(img["c_panel"], 902, 580, 1276, 618),
+         "legend": differing(img["k_plain"], img["k_panel"], 850, 300, 1270, 480),
+         "ramp ends (yellow, dark blue) with the legend": ramp_ends(img["k_panel"]),
+         "ramp ends in the view alone": ramp_ends(img["k_plain"]),
+         "ramp ends without the view": ramp_ends(img["s_panel"])}
+print(stats)
+assert stats["cascade labels"] > 0.25, "no labels over the cascades' maps"
+assert stats["cascade maps under the labels"] < 0.01, "the labels cover the maps"
+assert stats["label text pixels"] > 60, "no light text in the labels"
+assert stats["legend"] > 0.3, "no legend above the map with pcss.view = kernel width"
+(y, b), (y0, b0) = stats["ramp ends (yellow, dark blue) with the legend"], stats["ramp ends in the view alone"]
+assert y - y0 > 100 and b - b0 > 100, "the legend's bar does not run from the shader's dark blue to its yellow"
+assert stats["ramp ends without the view"][1] < 20, "a legend's bar with the debug view off"
+PY
+    ;;
+  window_annotations)  # issue 35: the window draws the same labels over its debug quads (lab 12's cascades)
+    window --lab 12 --size 1280x720 --script "frames:3,screenshot:$tmp/shown.png"
+    window --lab 12 --size 1280x720 --set view.debug_quad=false --script "frames:3,screenshot:$tmp/hidden.png"
+    png_python - "$tmp" <<'PY' || fail "the window draws no labels over its debug quads"
+import sys
+from png_tools import load
+w, h, shown = load(f"{sys.argv[1]}/shown.png")
+# Near-white label text in the strip right above the quads (90 px squares at the bottom right).
+white = lambda rows: sum(1 for y in range(h - 140, h - 100) for x in range(w - 378, w - 4)
+                         if min(rows[y][4 * x:4 * x + 3]) > 215)
+hidden = load(f"{sys.argv[1]}/hidden.png")[2]
+stats = {"label text pixels": white(shown), "without the quads": white(hidden)}
+print(stats)
+assert stats["label text pixels"] > 60 and stats["without the quads"] < 10, "no label text over the quads"
+PY
     ;;
   render_bench_plot)  # the Speed against error window drawn over the frame from a bench.json; bad files refused
     python3 - "$tmp/b.json" <<'PY'

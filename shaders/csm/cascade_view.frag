@@ -9,7 +9,8 @@ in vec3 v_color;
 
 layout(location = 0) out vec4 o_color;
 
-const vec3 CASCADE_TINT[8] = vec3[8](vec3(1.0, 0.2, 0.2), vec3(0.2, 1.0, 0.2), vec3(0.25, 0.45, 1.0), vec3(1.0, 0.9, 0.1),
-                                     vec3(1.0, 0.2, 1.0), vec3(0.1, 1.0, 1.0), vec3(1.0, 0.6, 0.1), vec3(0.7, 0.7, 0.7));
+// The tints and their opacity come from the C++ side as defines (renderer/debug_annotations.h
+// kCascadeTints, kCascadeTintOpacity), which the view's legend names too.
+const vec3 CASCADE_TINT[8] = vec3[8](CASCADE_TINTS);
 
-void main() { o_color = vec4(CASCADE_TINT[csm_cascade(v_world_position)], 0.35); }
+void main() { o_color = vec4(CASCADE_TINT[csm_cascade(v_world_position)], CASCADE_TINT_OPACITY); }

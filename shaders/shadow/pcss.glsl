@@ -23,7 +23,9 @@ const float PCSS_MAX_RADIUS_TEXELS = 64.0;
 // shadow_visibility found for this pixel, shown by technique_view() in place of the lit colour.
 #define TECHNIQUE_VIEW
 uniform int u_pcss_view;
-uniform float u_pcss_view_range;  // the blocker distance shown yellow (world units)
+// The value shown yellow (renderer/debug_annotations.h pcss_view_range, which the legend reads too): the
+// blockers' distance (world units), or the kernel's width (texels: twice PCSS_MAX_RADIUS_TEXELS).
+uniform float u_pcss_view_range;
 float pcss_seen_distance = -1.0;  // the blockers' mean distance above the point; -1: no blocker found
 float pcss_seen_width = 0.0;      // the filter's diameter, map texels (the wider axis)
 bool pcss_seen_capped = false;    // the cap (PCSS_MAX_RADIUS_TEXELS) cut the kernel
@@ -113,7 +115,7 @@ bool technique_view(bool lit, out vec3 color) {
   } else {
     // The width on a log scale, 0 to the cap: 1, 4, 16 and 64 texels at 0.14, 0.33, 0.58 and 0.86.
     float t = u_pcss_view == 1 ? pcss_seen_distance / u_pcss_view_range
-                               : log2(1.0 + pcss_seen_width) / log2(1.0 + 2.0 * PCSS_MAX_RADIUS_TEXELS);
+                               : log2(1.0 + pcss_seen_width) / log2(1.0 + u_pcss_view_range);
     t = clamp(t, 0.0, 1.0);
     color = vec3(t, t * t, 0.6 * (1.0 - t));
   }

@@ -16,10 +16,9 @@ uniform vec3 u_to_light;
 
 layout(location = 0) out vec4 o_color;
 
-const vec3 REMAP_TINT = vec3(1.0, 0.0, 0.85);
-// A change of this much visibility or more gets the full tint; smaller changes fade in from 0.
-const float FULL_TINT_CHANGE = 0.1;
-const float MAX_TINT_OPACITY = 0.8;
+// REMAP_TINT, and FULL_TINT_CHANGE: a change of this much visibility or more gets the full tint
+// (MAX_TINT_OPACITY), smaller changes fade in from 0. Defines from the C++ side (renderer/
+// debug_annotations.h kRemapTint, kRemapFullTintChange, kRemapMaxTintOpacity), which the legend reads too.
 
 void main() {
   vec3 n = normalize(v_normal) * (gl_FrontFacing ? 1.0 : -1.0);
