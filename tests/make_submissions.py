@@ -32,7 +32,7 @@ import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "answers"))
-from check_corpus import answers_of, labs_of  # the corpus's own reading of labs and answers  # noqa: E402
+from check_corpus import answers_of, header, labs_of  # the corpus's own reading of labs and answers  # noqa: E402
 
 
 def read(path):
@@ -106,12 +106,6 @@ def broken(text, kind, cpp, entry):
     raise ValueError(kind)
 
 
-def builds_not(text):
-    """True for a corpus answer marked `// fails: compile_error` among its first lines (check_corpus's rule)."""
-    return any(line.strip().startswith("// fails:") and "compile_error" in line.split()
-               for line in text.split("\n")[:6])
-
-
 EXPECTED = {"right": "passed", "wrong": "failed", "stock": "failed", "missing": "missing",
             "syntax_error": "compile_error", "semantic_error": "compile_error", "endless_loop": "timed_out",
             "crash": "crashed", "forbidden_call": "crashed"}
@@ -134,12 +128,15 @@ def main():
 
     # Per lab: the right and wrong answers on offer, each as the full set of the lab's files (the
     # corpus's rule: a file an answer does not give is the solution's).
-    answers = {}
+    answers, unbuildable = {}, {}
     for n in numbers:
         exercises, solutions = labs[n]["exercise_files"], labs[n]["solution_files"]
         drop_in = all(sol.endswith(".glsl") for sol in solutions)  # GLSL solutions replace the exercise as is
         offered = {"right": [], "wrong": []}
         for (kind, name), given in sorted(answers_of(labs[n]).items()):
+            # check_corpus's rule: `// fails: compile_error` marks an answer whose point is not to build.
+            fails = next(filter(None, (header(p, "fails") for p in given.values())), None)
+            unbuildable[(n, name)] = "compile_error" in (fails or "").split()
             files = {}
             for ex, sol in zip(exercises, solutions):
                 path = given.get(os.path.basename(ex), os.path.join(ROOT, sol) if drop_in else None)
@@ -203,8 +200,8 @@ def main():
                             entry["line"] = line + 1  # the name line below comes first
                     entry["variant"] = variant
                 files[ex] = "// %s: %s\n%s" % (name, variant, text)
-            if kind == "wrong" and any(builds_not(text) for _, text in chosen.values()):
-                entry["status"] = "compile_error"  # a wrong answer whose point is not to build (`// fails: compile_error`)
+            if kind == "wrong" and unbuildable[(n, chosen[exercises[0]][0])]:
+                entry["status"] = "compile_error"
             record[str(n)] = entry
         kind = "folder"
         r = rng.random()
