@@ -18,6 +18,15 @@ namespace {
 
 class DebugAnnotationsGlTest : public GlTest {};
 
+// A 160x90 frame with the camera framed on the renderer's scene: enough for a legend to be recorded.
+FrameRequest small_framed_request(const Renderer& r, const ParamSet& p) {
+  FrameRequest request;
+  request.width = 160;
+  request.height = 90;
+  request.camera = frame_scene_camera(r.scene(), p);
+  return request;
+}
+
 TEST_F(DebugAnnotationsGlTest, EveryLabsDebugQuadHasALabel) {
   const Scene scene = make_default_scene();
   FrameRequest request;
@@ -78,10 +87,7 @@ TEST_F(DebugAnnotationsGlTest, PcssViewRecordsItsLegend) {
   r.set_scene(make_default_scene());
   ASSERT_TRUE(r.set_features(lab.hooks(Impl::Solution))) << r.shader_error();
   ParamSet p = lab_params(lab);
-  FrameRequest request;
-  request.width = 160;
-  request.height = 90;
-  request.camera = frame_scene_camera(r.scene(), p);
+  const FrameRequest request = small_framed_request(r, p);
   r.render(p, request);
   EXPECT_TRUE(r.annotations().legends.empty()) << "a legend with the debug view off";
   p.set_from_string("pcss.view", "kernel width");
@@ -108,10 +114,7 @@ TEST_F(DebugAnnotationsGlTest, OverlayViewsRecordTheirLegends) {
     r.set_scene(make_default_scene());
     ASSERT_TRUE(r.set_features(lab.hooks(Impl::Solution))) << r.shader_error();
     ParamSet p = lab_params(lab);
-    FrameRequest request;
-    request.width = 160;
-    request.height = 90;
-    request.camera = frame_scene_camera(r.scene(), p);
+    const FrameRequest request = small_framed_request(r, p);
     p.set(c.key, 0.0);
     r.render(p, request);
     EXPECT_TRUE(r.annotations().legends.empty()) << c.key;
