@@ -61,6 +61,11 @@ Renderer::Renderer()
       views_(std::make_unique<DebugViews>()),
       timer_(std::make_unique<PassTimer>()),
       empty_vao_(GlVertexArray::create()) {
+  // Room for every pass of a frame, so that a still frame allocates nothing: timed_passes first fills
+  // when the query ring's results come back, which under load can be many frames after the first.
+  constexpr std::size_t kPassesPerFrame = 32;
+  stats_.passes.reserve(kPassesPerFrame);
+  stats_.timed_passes.reserve(kPassesPerFrame);
   if (!set_features({})) throw std::runtime_error("cannot build the renderer's shaders:\n" + shader_error());
 }
 
