@@ -25,6 +25,8 @@ int key_code(const std::string& name) {
   if (name == "left") return GLFW_KEY_LEFT;
   if (name == "right") return GLFW_KEY_RIGHT;
   if (name == "escape") return GLFW_KEY_ESCAPE;
+  if (name == "pagedown") return GLFW_KEY_PAGE_DOWN;
+  if (name == "pageup") return GLFW_KEY_PAGE_UP;
   return -1;
 }
 

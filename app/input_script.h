@@ -1,7 +1,7 @@
 // Scripted input for tests and documentation: `--script "key:2,frames:3,screenshot:a.png,key:s"`.
 // Key presses go through ImGui's GLFW key callback, the handler a real key press reaches, so a test
 // exercises the same path a person's keyboard does. Steps, in order, one per comma:
-//   key:K          press and release K (a digit, a letter, f1..f12, left, right, escape)
+//   key:K          press and release K (a digit, a letter, f1..f12, left, right, escape, pagedown, pageup)
 //   frames:N       let N frames pass
 //   screenshot:F   save the next drawn frame, panel included, to F
 //   resize:WxH     set the window's size
