@@ -938,13 +938,18 @@ PY
     ;;
   window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
     # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture).
-    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png"
+    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png"
+    # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
+    window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
     png_python - "$tmp" <<'PY' || fail "the presets' keys, the story or the caption did not work"
 import sys
 from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/plain.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden")}
-top = (460, 0, w - 10, 200)           # the caption: top of the view, right of the panel
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden", "acne", "acne_solution")}
+# The caption's line for a preset that needs a working exercise is in the panel's hint colour (242, 204, 115).
+yellow = lambda rows: sum(1 for y in range(0, 200) for x in range(460, 950)
+                          if rows[y][4 * x] > 200 and 170 < rows[y][4 * x + 1] < 230 and 80 < rows[y][4 * x + 2] < 150)
+top = (460, 0, 950, 200)              # the caption: top of the view, right of the panel, left of the pass-time line
 below = (460, 300, w - 10, h - 60)    # the view under it
 stats = {"caption tuned/plain": differing(r["tuned"], r["plain"], *top),
          "view tuned/plain": differing(r["tuned"], r["plain"], *below),
@@ -954,8 +959,9 @@ stats = {"caption tuned/plain": differing(r["tuned"], r["plain"], *top),
          "caption hidden panel/plain": differing(r["hidden"], r["plain"], w // 4, 0, 3 * w // 4, 120)}
 # How tall the caption is: the rows where F3 changed the picture (a lecture hall's back row needs large text).
 rows = [y for y in range(0, h // 2) if any(sum(abs(r["tuned"][y][4 * x + c] - r["plain"][y][4 * x + c]) for c in range(3)) > 24
-                                            for x in range(460, w - 10, 2))]
+                                            for x in range(460, 950, 2))]
 stats["caption rows"] = (rows[0], rows[-1]) if rows else None
+stats["needs-exercise line: acne exercise, solution, tuned"] = (yellow(r["acne"]), yellow(r["acne_solution"]), yellow(r["tuned"]))
 print(stats)
 assert stats["caption tuned/plain"] > 0.05, "F3 showed no caption"
 assert stats["view tuned/plain"] < 0.01, "F3 (the lab's defaults) changed the view, or the caption is not at the top"
@@ -963,6 +969,8 @@ assert rows and rows[-1] - rows[0] >= 60, "the caption is too small to read from
 assert stats["caption back/tuned (Page Up)"] > 0.05 and stats["view back/tuned (Page Up)"] > 0.01, "Page Up did not step back to peter-panning"
 assert stats["all again/tuned (Page Down)"] < 0.005, "Page Down did not step forward to tuned again"
 assert stats["caption hidden panel/plain"] > 0.05, "the caption went with the panel (H)"
+ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
+assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
 PY
     ;;
   *) fail "unknown case $case_name" ;;
