@@ -546,11 +546,11 @@ void draw_caption(const App& app) {
   if (app.fonts.caption) ImGui::PushFont(app.fonts.caption);
   ImGui::TextUnformatted(preset->name.c_str());
   if (app.fonts.caption) ImGui::PopFont();
+  if (app.fonts.caption_text) ImGui::PushFont(app.fonts.caption_text);
   if (!place.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("Lab %d%s", app.lab->number, place.c_str());
   }
-  if (app.fonts.caption_text) ImGui::PushFont(app.fonts.caption_text);
   ImGui::TextUnformatted(preset->description.c_str());
   if (app.impl == Impl::Exercise && needs_working_exercise(*app.lab, *preset))
     ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.45f, 1.0f), "Your exercise shows %s once it works; the solution's picture: \"Solution beside it\" in the panel",
