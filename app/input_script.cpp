@@ -55,7 +55,8 @@ InputScript::InputScript(const std::string& text) {
         if (s.a < 1 || s.b < 1) throw bad();
       } else if (s.kind == "screenshot" || s.kind == "drop") {
         if (s.arg.empty()) throw bad();
-      } else if (s.kind != "iconify" && s.kind != "restore" && s.kind != "check") {
+      } else if (s.kind != "iconify" && s.kind != "restore" && s.kind != "check" &&
+                 s.kind != "solution-beside") {
         throw bad();
       }
     } catch (const std::invalid_argument&) {
@@ -104,6 +105,8 @@ std::string InputScript::advance(GLFWwindow* window, double now) {
       glfwRestoreWindow(window);
     } else if (s.kind == "check") {
       check_requested_ = true;
+    } else if (s.kind == "solution-beside") {
+      solution_beside_requested_ = true;
       wait_until_frame_ = frames_drawn_ + 1;
     }
     if (!screenshot.empty()) break;

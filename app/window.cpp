@@ -242,6 +242,12 @@ struct App {
       status = e.what();
     }
   }
+  // The split view with the solution, same values, on the right (the panel's "Solution beside it").
+  void show_solution_beside() {
+    compare.split = true;
+    compare.with = CompareWith::OtherImpl;
+    rebuild_split();
+  }
   // The chosen preset, while every value it set still holds.
   const Preset* preset_shown() const {
     if (!shown_preset) return nullptr;
@@ -431,11 +437,7 @@ void draw_panel(App& app) {
   app.resize_panel = false;
   app.panel_right = actions.panel_right;
   if (actions.preset) app.choose_preset(*actions.preset);
-  if (actions.solution_beside) {
-    app.compare.split = true;
-    app.compare.with = CompareWith::OtherImpl;
-    app.rebuild_split();
-  }
+  if (actions.solution_beside) app.show_solution_beside();
   if (actions.text_size) {
     app.text_size = *actions.text_size;  // fonts rebuilt before the next frame
     app.settings.keep_text_size(app.text_size);
@@ -682,6 +684,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     draw_caption(app);
     draw_toast(app);
     if (script.take_check_request()) app.check_requested = true;
+    if (script.take_solution_beside_request()) app.show_solution_beside();
     if (app.penumbra_requested) {
       app.measure_penumbra(width, height);
       app.penumbra_requested = false;

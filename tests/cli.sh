@@ -941,11 +941,14 @@ PY
     window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png"
     # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
     window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
+    # Lab 9's stock exercise emits no volumes: its z-pass preset (F2) shows nothing there; "Solution beside it" does.
+    window --lab 9 --size 1280x720 --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass.png,solution-beside,frames:3,screenshot:$tmp/beside.png"
+    window --lab 9 --size 1280x720 --impl solution --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass_solution.png"
     png_python - "$tmp" <<'PY' || fail "the presets' keys, the story or the caption did not work"
 import sys
 from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/plain.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden", "acne", "acne_solution")}
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden", "acne", "acne_solution", "zpass", "zpass_solution", "beside")}
 # The caption's line for a preset that needs a working exercise is in the panel's hint colour (242, 204, 115).
 yellow = lambda rows: sum(1 for y in range(0, 200) for x in range(460, 950)
                           if rows[y][4 * x] > 200 and 170 < rows[y][4 * x + 1] < 230 and 80 < rows[y][4 * x + 2] < 150)
@@ -969,6 +972,15 @@ assert rows and rows[-1] - rows[0] >= 60, "the caption is too small to read from
 assert stats["caption back/tuned (Page Up)"] > 0.05 and stats["view back/tuned (Page Up)"] > 0.01, "Page Up did not step back to peter-panning"
 assert stats["all again/tuned (Page Down)"] < 0.005, "Page Down did not step forward to tuned again"
 assert stats["caption hidden panel/plain"] > 0.05, "the caption went with the panel (H)"
+# "Solution beside it": the right half is the solution's (as in zpass_solution), the left stays the exercise's.
+mid = w // 2  # the divider (compare.divider 0.5 of the width); right of it, where the scene's shadows fall
+stats["beside: right vs solution, right vs exercise, left vs exercise"] = (
+    differing(r["beside"], r["zpass_solution"], mid + 20, 330, 1000, 600),
+    differing(r["beside"], r["zpass"], mid + 20, 330, 1000, 600),
+    differing(r["beside"], r["zpass"], 470, 300, mid - 20, h - 60))
+print(stats["beside: right vs solution, right vs exercise, left vs exercise"])
+rs, re_, le = stats["beside: right vs solution, right vs exercise, left vs exercise"]
+assert re_ > 0.02 and rs < re_ / 3 and le < re_ / 3, "Solution beside it did not put the solution's picture on the right"
 ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
 assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
 PY
