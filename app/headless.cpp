@@ -332,7 +332,12 @@ int run_list_labs(bool show_params, bool json, bool show_presets) {
       labs.push_back({{"number", lab.number}, {"slug", lab.slug}, {"folder", lab.folder()}, {"title", lab.title},
                       {"exercise_files", lab.exercise_files}, {"solution_files", lab.solution_files},
                       {"offered_includes", lab.offered_includes}, {"has_check", static_cast<bool>(lab.check)}});
-      if (show_presets) labs.back()["presets"] = presets_json(lab);
+      if (show_presets) {
+        labs.back()["presets"] = presets_json(lab);
+        nlohmann::json story = nlohmann::json::array();  // the presets in teaching order (the window's Page Down)
+        for (const std::size_t i : story_order(lab)) story.push_back(lab.presets[i].name);
+        labs.back()["story"] = story;
+      }
     }
     std::printf("%s\n", nlohmann::json{{"labs", labs}}.dump(2).c_str());
     return 0;

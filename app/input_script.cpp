@@ -25,6 +25,8 @@ int key_code(const std::string& name) {
   if (name == "left") return GLFW_KEY_LEFT;
   if (name == "right") return GLFW_KEY_RIGHT;
   if (name == "escape") return GLFW_KEY_ESCAPE;
+  if (name == "pagedown") return GLFW_KEY_PAGE_DOWN;
+  if (name == "pageup") return GLFW_KEY_PAGE_UP;
   return -1;
 }
 
@@ -53,7 +55,8 @@ InputScript::InputScript(const std::string& text) {
         if (s.a < 1 || s.b < 1) throw bad();
       } else if (s.kind == "screenshot" || s.kind == "drop") {
         if (s.arg.empty()) throw bad();
-      } else if (s.kind != "iconify" && s.kind != "restore" && s.kind != "check") {
+      } else if (s.kind != "iconify" && s.kind != "restore" && s.kind != "check" &&
+                 s.kind != "solution-beside") {
         throw bad();
       }
     } catch (const std::invalid_argument&) {
@@ -102,6 +105,8 @@ std::string InputScript::advance(GLFWwindow* window, double now) {
       glfwRestoreWindow(window);
     } else if (s.kind == "check") {
       check_requested_ = true;
+    } else if (s.kind == "solution-beside") {
+      solution_beside_requested_ = true;
       wait_until_frame_ = frames_drawn_ + 1;
     }
     if (!screenshot.empty()) break;

@@ -1,7 +1,7 @@
 // Scripted input for tests and documentation: `--script "key:2,frames:3,screenshot:a.png,key:s"`.
 // Key presses go through ImGui's GLFW key callback, the handler a real key press reaches, so a test
 // exercises the same path a person's keyboard does. Steps, in order, one per comma:
-//   key:K          press and release K (a digit, a letter, f1..f12, left, right, escape)
+//   key:K          press and release K (a digit, a letter, f1..f12, left, right, escape, pagedown, pageup)
 //   frames:N       let N frames pass
 //   screenshot:F   save the next drawn frame, panel included, to F
 //   resize:WxH     set the window's size
@@ -9,6 +9,7 @@
 //   wait:S         let S seconds pass (a minimised window draws no frames)
 //   drop:F         drop file F on the window (through the window's drop callback)
 //   check          press the panel's Check button (the same request the button makes)
+//   solution-beside  press the panel's "Solution beside it" button (the same request)
 // When the script ends the window closes.
 #pragma once
 
@@ -34,6 +35,8 @@ class InputScript {
   bool finished() const { return next_ >= steps_.size() && pending_release_ < 0 && frames_drawn_ >= wait_until_frame_; }
   // True once after a `check` step.
   bool take_check_request() { return std::exchange(check_requested_, false); }
+  // True once after a `solution-beside` step.
+  bool take_solution_beside_request() { return std::exchange(solution_beside_requested_, false); }
 
  private:
   struct Step {
@@ -47,6 +50,7 @@ class InputScript {
   long wait_until_frame_ = 0;
   double wait_until_time_ = 0.0;
   bool check_requested_ = false;
+  bool solution_beside_requested_ = false;
 };
 
 // GLFW key code for a script's key name; -1 if unknown.

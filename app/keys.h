@@ -44,6 +44,12 @@ inline bool digit_pressed(int digit) {
   return ImGui::IsKeyPressed(SHADOWLAB_KEY(static_cast<ImGuiKey>(ImGuiKey_0 + digit), GLFW_KEY_0 + digit), false);
 }
 
+// The function keys F1-F10 (F11 and F12 are Key::F11, Key::F12): n from 1 to 10.
+inline bool function_key_pressed(int n) {
+  if (n < 1 || n > 10) return false;
+  return ImGui::IsKeyPressed(SHADOWLAB_KEY(static_cast<ImGuiKey>(ImGuiKey_F1 + n - 1), GLFW_KEY_F1 + n - 1), false);
+}
+
 }  // namespace shadowlab
 
 #undef SHADOWLAB_KEY

@@ -204,7 +204,8 @@ int main(int argc, char** argv) {
   bool labs_json = false;
   labs_cmd->add_flag("--json", labs_json,
                      "The labs as JSON: number, slug, folder, exercise and solution files; with --presets each lab's presets "
-                     "(name, description, values, provokes, fixed_by: null where none)");
+                     "(name, description, values, provokes, fixed_by: null where none) and its story (the presets' names in "
+                     "teaching order, as the window's Page Down steps through them)");
   labs_cmd->footer("Exit: 0.\nExample: shadowlab labs --params   (the keys --set takes, with their ranges)\n"
                    "         shadowlab labs --presets --json   (each preset's artifact and its fix, for scripts)");
 

@@ -61,9 +61,10 @@ bool param_widget(ParamSet& params, const ParamSpec& spec, unsigned& invalidated
 
 }  // namespace
 
-unsigned param_widgets(ParamSet& params) {
+unsigned param_widgets(ParamSet& params, const std::function<bool(const ParamSpec&)>& shown) {
   unsigned invalidated = 0;
-  for (const auto& spec : params.specs()) param_widget(params, spec, invalidated);
+  for (const auto& spec : params.specs())
+    if (shown(spec)) param_widget(params, spec, invalidated);
   return invalidated;
 }
 

@@ -30,11 +30,14 @@ void hint_wrapped(const std::string& text) {
   ImGui::PopStyleColor();
 }
 
+// The keys, folded away (one line while folded): the panel's first screen is the lab's own.
 void draw_keys() {
-  std::string line = "Keys:";
+  if (!ImGui::TreeNode("Keys: F1-F10 presets, Page Down / Up the story, 0-9 labs...")) return;
+  std::string line;
   const auto& keys = window_keys();
-  for (std::size_t i = 0; i < keys.size(); ++i) line += (i ? "; " : " ") + keys[i].first + " " + keys[i].second;
+  for (std::size_t i = 0; i < keys.size(); ++i) line += (i ? "; " : "") + keys[i].first + " " + keys[i].second;
   hint_wrapped(line + ". Not while typing in a field.");
+  ImGui::TreePop();
 }
 
 // Which OpenGL the view runs on, and what runs differently there (the course's floor is 3.3 core; macOS
@@ -109,16 +112,70 @@ void draw_task(PanelModel& m, PanelActions& a) {
   ImGui::PopTextWrapPos();
 }
 
+// One criterion: its sentence (Criterion::headline), and on hover the metric's name, value and limit as
+// graded and where the limit comes from.
+void draw_criterion(const Criterion& c) {
+  ImGui::PushStyleColor(ImGuiCol_Text, c.passed() ? kGreen : kRed);
+  ImGui::Bullet();
+  ImGui::TextUnformatted(c.headline().c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s = %.4g, limit %s %.4g\n%s", c.metric.c_str(), c.value, c.direction == Criterion::kAtMost ? "<=" : ">=",
+                      c.limit, c.why.c_str());
+}
+
+// A check's result, read in five seconds: the verdict, then each failure as one sentence with its limit
+// and, under it, what to change (a hint already given for an earlier failure is not repeated); the
+// criteria that passed folded away under one line.
+void draw_check_result(const CheckResult& r, bool interactive) {
+  ImGui::TextColored(r.passed() ? kGreen : kRed, "%s (%.1f s)", r.passed() ? "PASS" : "FAIL", r.seconds);
+  std::size_t failed = 0;
+  for (const auto& c : r.criteria) failed += c.passed() ? 0 : 1;
+  if (failed > 0) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted((std::to_string(failed) + " of " + std::to_string(r.criteria.size()) + " criteria failed").c_str());
+  }
+  ImGui::PushTextWrapPos(0.0f);
+  if (!r.error.empty()) ImGui::TextColored(kRed, "%s", r.error.c_str());
+  std::vector<std::string> hints;
+  for (const auto& c : r.criteria) {
+    if (c.passed()) continue;
+    draw_criterion(c);
+    const std::string hint = c.hint();
+    if (hint.empty() || std::find(hints.begin(), hints.end(), hint) != hints.end()) continue;
+    hints.push_back(hint);
+    ImGui::Indent();
+    ImGui::PushStyleColor(ImGuiCol_Text, kHint);
+    ImGui::TextUnformatted(("Fix: " + hint).c_str());
+    ImGui::PopStyleColor();
+    ImGui::Unindent();
+  }
+  const std::size_t passed = r.criteria.size() - failed;
+  if (passed > 0) {
+    // Pictures (not interactive) show them unfolded: nobody can open the node there.
+    if (!interactive) ImGui::SetNextItemOpen(true);
+    if (ImGui::TreeNode("passed", "%zu of %zu criteria passed", passed, r.criteria.size())) {
+      for (const auto& c : r.criteria)
+        if (c.passed()) draw_criterion(c);
+      ImGui::TreePop();
+    }
+  }
+  ImGui::PopTextWrapPos();
+}
+
 void draw_check(PanelModel& m, PanelActions& a) {
   if (!m.lab->check || !ImGui::CollapsingHeader("Check", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  char same_as[96];
+  std::snprintf(same_as, sizeof same_as, "same as: shadowlab check --lab %d --impl %s", m.lab->number, impl_name(m.impl));
   if (m.interactive) {
     const bool running = m.check_progress.running;
     if (running) ImGui::BeginDisabled();
     if (ImGui::Button("Check")) a.check = true;
     if (running) ImGui::EndDisabled();
-    ImGui::SameLine();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", same_as);
+  } else {
+    ImGui::TextDisabled("%s", same_as);
   }
-  ImGui::TextDisabled("same as: shadowlab check --lab %d --impl %s", m.lab->number, impl_name(m.impl));
   if (m.check_progress.running) {
     // The check runs on a worker thread with a GL context of its own: the view keeps drawing meanwhile.
     const CheckProgress& p = m.check_progress;
@@ -139,38 +196,53 @@ void draw_check(PanelModel& m, PanelActions& a) {
     hint_wrapped("Not checked yet: press Check to grade against the ray-cast truth.");
     return;
   }
-  const CheckResult& r = *m.check;
-  ImGui::TextColored(r.passed() ? kGreen : kRed, "%s (%.1f s)", r.passed() ? "PASS" : "FAIL", r.seconds);
-  ImGui::PushTextWrapPos(0.0f);
-  if (!r.error.empty()) ImGui::TextColored(kRed, "%s", r.error.c_str());
-  for (const auto& c : r.criteria) {
-    ImGui::TextColored(c.passed() ? kGreen : kRed, "%s", c.passed() ? "ok" : "FAIL");
-    ImGui::SameLine();
-    ImGui::TextUnformatted(c.explain().c_str());
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("%s = %.4g, limit %s %.4g\n%s", c.metric.c_str(), c.value,
-                        c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());
-  }
-  ImGui::PopTextWrapPos();
+  draw_check_result(*m.check, m.interactive);
 }
 
-void draw_parameters(PanelModel& m, PanelActions&) {
-  if (!ImGui::CollapsingHeader("Parameters and presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  param_widgets(*m.params);
+// The lab's own parameters (those it declares: Lab::params) and its presets, each on its key.
+void draw_parameters(PanelModel& m, PanelActions& a) {
+  const auto is_labs = [&](const ParamSpec& spec) {
+    return std::any_of(m.lab->params.begin(), m.lab->params.end(), [&](const ParamSpec& own) { return own.key == spec.key; });
+  };
+  if (!ImGui::CollapsingHeader(("Lab " + std::to_string(m.lab->number) + ": parameters and presets###lab parameters").c_str(),
+                               ImGuiTreeNodeFlags_DefaultOpen))
+    return;
+  param_widgets(*m.params, is_labs);
   if (ImGui::Button("Defaults")) m.params->reset_to_defaults();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The lab's own values");
   float x = ImGui::GetItemRectMax().x;
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  for (const auto& preset : m.lab->presets) {
-    const float w = ImGui::CalcTextSize(preset.name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
+  bool any_needs_exercise = false;
+  for (std::size_t i = 0; i < m.lab->presets.size(); ++i) {
+    const Preset& preset = m.lab->presets[i];
+    // F1-F10 for the first ten (the window's keys); a preset that shows its artifact only with a working
+    // exercise is marked with * while the exercise runs.
+    const bool needs = m.impl == Impl::Exercise && needs_working_exercise(*m.lab, preset);
+    any_needs_exercise |= needs;
+    const std::string label = (i < 10 ? "F" + std::to_string(i + 1) + " " : std::string()) + preset.name + (needs ? "*" : "");
+    const float w = ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
     if (x + ImGui::GetStyle().ItemSpacing.x + w < right) ImGui::SameLine();  // wrap the row of buttons
-    if (ImGui::Button(preset.name.c_str())) {
-      for (const auto& [key, value] : preset.values) m.params->set_from_string(key, value);
-    }
+    if (ImGui::Button(label.c_str())) a.preset = i;
     x = ImGui::GetItemRectMax().x;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());
   }
+  if (any_needs_exercise) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kHint);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted("* the artifact it provokes is the solution's: your exercise shows it once it works. The solution's picture:");
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+    if (m.interactive && m.compare) {
+      if (ImGui::Button("Solution beside it")) a.solution_beside = true;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Split view: your exercise on the left, the solution with the same values on the right");
+    }
+  }
   if (m.settings) m.settings->draw_presets(m.lab->number, *m.params);
+  // The renderer's own controls, the same in every lab: folded away.
+  if (ImGui::TreeNode("renderer", "Renderer controls (%zu)", m.params->specs().size() - m.lab->params.size())) {
+    param_widgets(*m.params, [&](const ParamSpec& spec) { return !is_labs(spec); });
+    ImGui::TreePop();
+  }
 }
 
 void draw_compare(PanelModel& m, PanelActions& a) {
@@ -257,14 +329,16 @@ PanelActions draw_lab_panel(PanelModel& m) {
     ImGui::TextWrapped("%s", shortened(m.scene_error, 600).c_str());  // bounded, whatever the caller passed
     ImGui::PopStyleColor();
   }
-  draw_task(m, a);
+  // The lab's own controls first, then the Check's result (visible without scrolling at 1280x720), the
+  // task, the split view, and the long lab text below them.
+  draw_parameters(m, a);
   draw_check(m, a);
+  draw_task(m, a);
+  draw_compare(m, a);
   if (m.lab_text && ImGui::CollapsingHeader("Lab text", ImGuiTreeNodeFlags_DefaultOpen)) {
     const std::string link = m.lab_text->document.draw(m.fonts);
     if (!link.empty()) a.copied_link = link;
   }
-  draw_parameters(m, a);
-  draw_compare(m, a);
   draw_stats(m);
   if (m.bench) {
     ImGui::Checkbox("Speed against error (bench plot)", &m.bench->open);
@@ -283,6 +357,7 @@ PanelActions draw_lab_panel(PanelModel& m) {
     hint_wrapped("Drop a .gltf/.glb on the window to open it. Mouse: left drag orbits, right or middle drag pans, the wheel zooms.");
   }
   if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
+  a.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::End();
   if (m.bench) a.load_bench = draw_bench_window(m.bench_plots, *m.bench, m.interactive);
   if (m.penumbra) a.measure_penumbra = draw_penumbra_window(*m.penumbra, m.penumbra_key, m.interactive);
@@ -335,7 +410,9 @@ LabText load_lab_text(const Lab& lab) {
 const std::vector<std::pair<std::string, std::string>>& window_keys() {
   static const std::vector<std::pair<std::string, std::string>> keys = {
       {"0-9", "open a lab (two in a row: labs 10-99)"},
-      {"N / P", "next / previous lab (also Page Down / Page Up)"},
+      {"N / P", "next / previous lab"},
+      {"F1-F10", "the lab's presets, with a large caption over the view (demo mode)"},
+      {"Page Down / Page Up", "the lab's story: its presets in teaching order, one step forward / back (a presenter's remote sends these)"},
       {"S", "split view"},
       {"M", "magnifier"},
       {"H", "hide this panel and the pass-time line (H again shows them)"},

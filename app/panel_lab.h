@@ -87,6 +87,9 @@ struct PanelActions {
   bool measure_penumbra = false;  // measure this view against the exact penumbra (PenumbraPanelState)
   std::optional<float> text_size;  // the user moved the text size control (1 = 100 %)
   std::string copied_link;         // a link in the lab text was clicked (its target is on the clipboard)
+  std::optional<std::size_t> preset;  // a preset's button (index into Lab::presets): applied with its caption
+  bool solution_beside = false;       // split view with the solution on the right (presets that need it)
+  float panel_right = 0.0f;           // the panel's right edge, in pixels
 };
 
 PanelActions draw_lab_panel(PanelModel& model);

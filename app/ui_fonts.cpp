@@ -60,6 +60,8 @@ UiFonts build_ui_fonts(ImFontAtlas& atlas, const fs::path& folder, float raster,
   fonts.h1 = load("DejaVuSans-Bold.ttf", std::round(px * 1.6f));
   fonts.h2 = load("DejaVuSans-Bold.ttf", std::round(px * 1.3f));
   fonts.h3 = load("DejaVuSans-Bold.ttf", std::round(px * 1.12f));
+  fonts.caption = load("DejaVuSans-Bold.ttf", std::round(px * 2.6f));
+  fonts.caption_text = load("DejaVuSans.ttf", std::round(px * 1.7f));
   fonts.builtin = !missing.empty();
   if (warning) *warning = missing.empty() ? "" : "fonts not found in " + folder.string() + " (" + missing + "): ImGui's built-in font is used";
   atlas.Build();

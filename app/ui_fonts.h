@@ -29,6 +29,8 @@ struct UiFonts {
   ImFont* h1 = nullptr;  // headings: bold at 1.6, 1.3 and 1.12 x the body size
   ImFont* h2 = nullptr;
   ImFont* h3 = nullptr;
+  ImFont* caption = nullptr;       // demo mode's caption over the view: bold at 2.6 x, its text at 1.7 x
+  ImFont* caption_text = nullptr;  // (39 and 26 pixels at 100 %: read from the back of a lecture hall)
   bool builtin = false;  // the files were missing: ImGui's own font in every role
 };
 

@@ -194,6 +194,12 @@ struct App {
   PenumbraPanelState penumbra;           // the Penumbra error window
   bool penumbra_requested = false;       // its Measure button, done before the next view is drawn
   std::unique_ptr<Oracle> oracle;        // the renderer's scene, for the Penumbra error window; made when first asked
+  // Demo mode: the preset last chosen by its key (F1-F10), the story (Page Down / Page Up) or its button
+  // in the panel. Its caption stays over the view while the preset's values hold (a moved slider ends it).
+  int story_step = -1;                       // position in story_order(*lab); -1: before the first
+  std::optional<std::size_t> shown_preset;   // index into lab->presets
+  std::vector<std::pair<std::string, double>> preset_values;  // the values it set, as set
+  float panel_right = 0.0f;                  // the panel's right edge last frame: the caption centres right of it
 
   void open_lab(const Lab& next) {
     if (lab) settings.leave_lab(lab->number, params);
@@ -203,8 +209,51 @@ struct App {
     settings.open_lab(next.number, params);
     lab_text = load_lab_text(next);
     if (compare.with == CompareWith::Preset) compare.preset = 0;
+    story_step = -1;
+    shown_preset.reset();
     if (compare.with == CompareWith::OtherImpl && next.exercise_files.empty()) compare.with = CompareWith::Defaults;
     apply_hooks();
+  }
+  // Preset i of the lab (its key, its button, a step of the story), and its caption.
+  void choose_preset(std::size_t i) {
+    const Preset& preset = lab->presets.at(i);
+    apply_preset(params, preset);
+    preset_values.clear();
+    for (const auto& entry : preset.values) preset_values.emplace_back(entry.first, params.get(entry.first));
+    shown_preset = i;
+    try {
+      const std::vector<std::size_t> order = story_order(*lab);
+      const auto at = std::find(order.begin(), order.end(), i);
+      if (at != order.end()) story_step = static_cast<int>(at - order.begin());  // the story goes on from here
+    } catch (const std::invalid_argument&) {  // said by step_story
+    }
+  }
+  // One step of the lab's story, forward (+1) or back (-1); it stops at either end.
+  void step_story(int step) {
+    try {
+      const std::vector<std::size_t> order = story_order(*lab);
+      if (order.empty()) {
+        status = "lab " + std::to_string(lab->number) + " has no presets to step through";
+        return;
+      }
+      story_step = std::clamp(story_step + step, 0, static_cast<int>(order.size()) - 1);
+      choose_preset(order[static_cast<std::size_t>(story_step)]);
+    } catch (const std::invalid_argument& e) {
+      status = e.what();
+    }
+  }
+  // The split view with the solution, same values, on the right (the panel's "Solution beside it").
+  void show_solution_beside() {
+    compare.split = true;
+    compare.with = CompareWith::OtherImpl;
+    rebuild_split();
+  }
+  // The chosen preset, while every value it set still holds.
+  const Preset* preset_shown() const {
+    if (!shown_preset) return nullptr;
+    for (const auto& [key, value] : preset_values)
+      if (params.get(key) != value) return nullptr;
+    return &lab->presets[*shown_preset];
   }
   void apply_hooks() {
     if (!renderer->set_features(lab->hooks(impl))) status = "shader error: the previous program keeps running";
@@ -295,8 +344,13 @@ void handle_keys(App& app) {
     app.last_digit_time = now;
     if (lab && lab != app.lab) app.open_lab(*lab);
   }
-  if (key_pressed(Key::N) || key_pressed(Key::PageDown)) app.open_lab(*neighbour_lab(*app.lab, +1));
-  if (key_pressed(Key::P) || key_pressed(Key::PageUp)) app.open_lab(*neighbour_lab(*app.lab, -1));
+  // F1-F10: the lab's presets in their declared order; Page Down / Page Up (a presenter's remote) its story.
+  for (int n = 1; n <= 10; ++n)
+    if (function_key_pressed(n) && static_cast<std::size_t>(n) <= app.lab->presets.size()) app.choose_preset(static_cast<std::size_t>(n - 1));
+  if (key_pressed(Key::PageDown)) app.step_story(+1);
+  if (key_pressed(Key::PageUp)) app.step_story(-1);
+  if (key_pressed(Key::N)) app.open_lab(*neighbour_lab(*app.lab, +1));
+  if (key_pressed(Key::P)) app.open_lab(*neighbour_lab(*app.lab, -1));
   if (key_pressed(Key::S)) {
     app.compare.split = !app.compare.split;
     app.rebuild_split();
@@ -381,6 +435,9 @@ void draw_panel(App& app) {
   const bool bench_was_open = app.bench.open;
   const PanelActions actions = draw_lab_panel(model);
   app.resize_panel = false;
+  app.panel_right = actions.panel_right;
+  if (actions.preset) app.choose_preset(*actions.preset);
+  if (actions.solution_beside) app.show_solution_beside();
   if (actions.text_size) {
     app.text_size = *actions.text_size;  // fonts rebuilt before the next frame
     app.settings.keep_text_size(app.text_size);
@@ -463,6 +520,46 @@ void save_screenshot(App& app, int width, int height) {
     app.toast_error = true;
     std::fprintf(stderr, "shadowlab: screenshot not saved: %s\n", e.what());
   }
+}
+
+// Demo mode's caption: the chosen preset's name and what it shows, large enough to read from the back of a
+// lecture hall, centred at the top of the view right of the panel, while its values hold.
+void draw_caption(const App& app) {
+  const Preset* preset = app.preset_shown();
+  if (!preset) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float left = app.panel_hidden ? 0.0f : std::min(app.panel_right, display.x * 0.5f);
+  const float width = display.x - left;
+  const float top = app.pass_line_shown() ? ImGui::GetFrameHeight() + 16.0f : 10.0f;  // under the pass-time line
+  ImGui::SetNextWindowPos(ImVec2(left + width * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(width - 20.0f, display.y * 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("##caption", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  ImGui::PushTextWrapPos(width - 40.0f);
+  std::string place;
+  try {
+    const auto order = story_order(*app.lab);
+    const auto at = std::find(order.begin(), order.end(), *app.shown_preset);
+    if (at != order.end()) place = "  " + std::to_string(at - order.begin() + 1) + "/" + std::to_string(order.size());
+  } catch (const std::invalid_argument&) {
+  }
+  if (app.fonts.caption) ImGui::PushFont(app.fonts.caption);
+  ImGui::TextUnformatted(preset->name.c_str());
+  if (app.fonts.caption) ImGui::PopFont();
+  if (app.fonts.caption_text) ImGui::PushFont(app.fonts.caption_text);
+  if (!place.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("Lab %d%s", app.lab->number, place.c_str());
+  }
+  ImGui::TextUnformatted(preset->description.c_str());
+  if (app.impl == Impl::Exercise && needs_working_exercise(*app.lab, *preset))
+    ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.45f, 1.0f), "Your exercise shows %s once it works; the solution's picture: \"Solution beside it\" in the panel",
+                       preset->artifact.provokes.c_str());
+  if (app.fonts.caption_text) ImGui::PopFont();
+  ImGui::PopTextWrapPos();
+  ImGui::End();
 }
 
 // F12's answer over the view for a few seconds, at the bottom centre (over the view, in front of the panel).
@@ -584,8 +681,10 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     }
     if (!app.panel_hidden) draw_panel(app);
     else draw_hidden_hint(app);
+    draw_caption(app);
     draw_toast(app);
     if (script.take_check_request()) app.check_requested = true;
+    if (script.take_solution_beside_request()) app.show_solution_beside();
     if (app.penumbra_requested) {
       app.measure_penumbra(width, height);
       app.penumbra_requested = false;

@@ -1,6 +1,7 @@
 #include "labs/check.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -75,15 +76,25 @@ std::pair<std::string, std::string> split_metric(const std::string& metric) {
   return {metric.substr(0, dot), metric.substr(dot + 1)};
 }
 
-// The measured fact as a sentence, and the usual advice for the metric (a lab's own advice wins).
-std::pair<std::string, std::string> describe(const Criterion& c, const std::string& name) {
+// The measured fact as a sentence, the usual advice for the metric (a lab's own advice wins), and the unit
+// the sentence states the value in (declared once here: the limit is said in the same unit).
+struct Description {
+  std::string sentence, usual;
+  double scale = 1.0;     // the value as the sentence states it: value x scale
+  std::string unit = "";  // after the number: "%", "x", "deg"; empty: a plain number
+  bool usual_states_limit = false;  // the usual advice only repeats the limit: no hint of its own
+  bool named_only = false;  // no sentence written for this metric: "name = value"
+};
+constexpr double kPercent = 100.0;
+
+Description describe(const Criterion& c, const std::string& name) {
   const double v = c.value;
   if (name == "lit_error")
     return {format("lit surfaces are drawn %.2f %% darker than the truth on average (acne or a partial shadow)", 100 * v),
-            "raise the bias, or make it grow with the slope; and a lit surface must come out exactly 1."};
+            "raise the bias, or make it grow with the slope; and a lit surface must come out exactly 1.", kPercent, "%"};
   if (name == "shadow_error")
     return {format("shadowed surfaces get %.2f %% of the light on average (leaks, peter-panning)", 100 * v),
-            "lower the bias or check the depth comparison; a shadowed surface must come out 0."};
+            "lower the bias or check the depth comparison; a shadowed surface must come out 0.", kPercent, "%"};
   if (name == "penumbra_error")
     return {format("the penumbra is off by %.3f on average from the share of the light each point sees", v),
             "the soft edge must widen with the light's size and the blocker-to-receiver distance, and narrow to hard as the light shrinks."};
@@ -91,17 +102,17 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
     return {format("the view has %.0f lit or shadowed pixels away from shadow edges", v),
             "not measurable: the scene shows too little shadow to grade anything. Grade on a scene with shadows."};
   if (name == "acne_rate" || name == "acne_rate_all")
-    return {format("%.2f %% of lit pixels show acne (drawn in shadow)", 100 * v), "raise the bias, or make it grow with the slope."};
+    return {format("%.2f %% of lit pixels show acne (drawn in shadow)", 100 * v), "raise the bias, or make it grow with the slope.", kPercent, "%"};
   if (name == "leak_rate" || name == "leak_rate_all")
     return {format("%.2f %% of shadowed pixels are drawn lit (light leaks, peter-panning)", 100 * v),
-            "lower the bias or check the depth comparison."};
+            "lower the bias or check the depth comparison.", kPercent, "%"};
   if (name == "bleeding_rate")
-    return {format("%.2f %% of shadowed pixels show light bleeding", 100 * v), "cut the low tail of Chebyshev's bound (raise delta)."};
+    return {format("%.2f %% of shadowed pixels show light bleeding", 100 * v), "cut the low tail of Chebyshev's bound (raise delta).", kPercent, "%"};
   if (name == "bleeding_ratio_to_unfixed")
     return {format("light bleeding is %.0f %% of what it is without your fix", 100 * v),
-            format("it must drop to %.0f %% or less.", 100 * c.limit)};
+            format("it must drop to %.0f %% or less.", 100 * c.limit), kPercent, "%", true};
   if (name == "error_ratio_fitted_to_fixed")
-    return {format("the fitted box's error (acne + leak) is %.2f x the fixed box's", v), "fit the box tighter around the scene's bounds."};
+    return {format("the fitted box's error (acne + leak) is %.2f x the fixed box's", v), "fit the box tighter around the scene's bounds.", 1.0, "x"};
   if (name == "non_finite_directions")
     return {format("%.0f light directions gave a matrix with NaN or Inf", v), "pick another up vector when the light looks along +-Y."};
   if (name == "corners_outside")
@@ -110,7 +121,7 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
     return {format("%.0f light directions gave a box looser than needed", v), "take min and max of the corners in light space."};
   if (name == "interior_agreement")
     return {format("%.2f %% of pixels away from edges agree with the ray-cast truth", 100 * v),
-            format("needs %.2f %%.", 100 * c.limit)};
+            format("needs %.2f %%.", 100 * c.limit), kPercent, "%", true};
   if (name == "max_first_moment_error" || name == "max_second_moment_error")
     return {format(name == "max_first_moment_error" ? "the stored E[z] is off by up to %.2g" : "the stored E[z^2] is off by up to %.2g", v),
             "write depth and depth squared (with the slope term) into the moments."};
@@ -122,27 +133,30 @@ std::pair<std::string, std::string> describe(const Criterion& c, const std::stri
   if (name.find("non_finite") != std::string::npos) return {format("%.0f values are NaN or Inf", v), "no NaN or Inf may come out."};
   if (name == "orientation")
     return {format("the quad is turned up to %.2f deg away from the upright quad facing the light", v),
-            "turn the quad about the vertical toward the light."};
+            "turn the quad about the vertical toward the light.", 1.0, "deg"};
   if (name == "size")
     return {format("the quad's sides are up to %.1f %% off the tree's size, or not at a right angle", 100 * v),
-            "make the sides the tree's width and height, at a right angle."};
-  if (name == "follows_camera")
-    return {c.metric.starts_with("shadow_map")
-                ? format("%.2f %% of the shadow map's texels change when only the camera moves", 100 * v)
-                : format("the shadow pass's quad moves by up to %.3g units when only the camera moves", v),
-            "the shadow must not depend on the camera."};
+            "make the sides the tree's width and height, at a right angle.", kPercent, "%"};
+  if (name == "follows_camera") {
+    if (c.metric.starts_with("shadow_map"))
+      return {format("%.2f %% of the shadow map's texels change when only the camera moves", 100 * v),
+              "the shadow must not depend on the camera.", kPercent, "%"};
+    return {format("the shadow pass's quad moves by up to %.3g units when only the camera moves", v),
+            "the shadow must not depend on the camera.", 1.0, "units"};
+  }
   if (name.ends_with("_mismatch"))
-    return {format("%.2f %% of the probe's cases differ from the reference", 100 * v), "compare your function with the lab's text."};
+    return {format("%.2f %% of the probe's cases differ from the reference", 100 * v), "compare your function with the lab's text.", kPercent, "%"};
   const bool whole = v == static_cast<long long>(v) && c.limit == static_cast<long long>(c.limit);
-  return {name + format(whole ? " = %.0f" : " = %.4g", v), ""};
+  return {name + format(whole ? " = %.0f" : " = %.4g", v), "", 1.0, "", false, true};
 }
 
 }  // namespace
 
 std::string Criterion::explain() const {
   const auto [tag, name] = split_metric(metric);
-  auto [sentence, usual] = describe(*this, name);
-  const std::string& fix = advice.empty() ? usual : advice;
+  const Description d = describe(*this, name);
+  const std::string& sentence = d.sentence;
+  const std::string& fix = advice.empty() ? d.usual : advice;
   const char* op = direction == kAtMost ? "<=" : ">=";
   const bool whole = limit == static_cast<long long>(limit) && std::abs(limit) >= 1;
   std::string s = sentence + (tag.empty() ? "" : " [" + tag + "]");
@@ -150,6 +164,35 @@ std::string Criterion::explain() const {
   char needs[64];
   std::snprintf(needs, sizeof needs, whole ? " (needs %s %.0f)" : " (needs %s %.4g)", op, limit);
   return s + needs + (fix.empty() ? "." : ": " + fix);
+}
+
+std::string Criterion::headline() const {
+  const auto [tag, name] = split_metric(metric);
+  const Description d = describe(*this, name);
+  std::string s = d.sentence;
+  if (d.named_only) {  // the metric's name in words ("growth_at_steep_slope" -> "growth at steep slope is 0")
+    s = name;
+    std::replace(s.begin(), s.end(), '_', ' ');
+    const bool whole = value == static_cast<long long>(value);
+    s += format(whole ? " is %.0f" : " is %.4g", value);
+  }
+  if (!s.empty()) s[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(s[0])));
+  // A number and its unit stay on one line where the panel wraps: a no-break space (U+00A0) between them.
+  const std::string nbsp = "\u00a0";
+  for (std::size_t at = s.find(" %"); at != std::string::npos; at = s.find(" %", at + nbsp.size())) s.replace(at, 1, nbsp);
+  const double shown = limit * d.scale;
+  char number[64];
+  std::snprintf(number, sizeof number, shown == static_cast<long long>(shown) && std::abs(shown) < 1e9 ? "%.0f" : "%.3g", shown);
+  s += direction == kAtMost ? "; at most " : "; at least ";
+  s += number + (d.unit.empty() ? "" : nbsp + d.unit) + (direction == kAtMost ? " allowed" : " needed");
+  if (!tag.empty()) s += " (" + tag + ")";
+  return s + ".";
+}
+
+std::string Criterion::hint() const {
+  if (!advice.empty()) return advice;
+  const Description d = describe(*this, split_metric(metric).second);
+  return d.usual_states_limit ? "" : d.usual;
 }
 
 void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const std::string& prefix,

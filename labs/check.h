@@ -33,6 +33,11 @@ struct Criterion {
   // The measured fact as a sentence, followed by the advice when it failed: what the panel and the
   // command line print.
   std::string explain() const;
+  // The same fact as one sentence for a student, its limit in the sentence's unit: "12.30 % of lit pixels
+  // show acne (drawn in shadow); at most 0.2 % allowed (k3)." No advice (hint()), no metric name.
+  std::string headline() const;
+  // What to change: the lab's advice, else the metric's usual one; empty when that would only repeat the limit.
+  std::string hint() const;
 };
 
 // How a lab's grading ended. CompileError: the student's file does not build (the same program builds

@@ -1,5 +1,6 @@
 #include "labs/lab.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -33,6 +34,25 @@ const Preset& find_preset(const Lab& lab, const std::string& name) {
   const std::string which = "lab " + std::to_string(lab.number) + " (" + lab.title + ")";
   if (names.empty()) throw std::invalid_argument(which + " has no presets");
   throw std::invalid_argument(which + " has no preset '" + name + "'; its presets: " + names);
+}
+
+std::vector<std::size_t> story_order(const Lab& lab) {
+  std::vector<std::size_t> order;
+  if (lab.story.empty()) {
+    for (std::size_t i = 0; i < lab.presets.size(); ++i) order.push_back(i);
+    return order;
+  }
+  for (const auto& name : lab.story) {
+    const auto i = static_cast<std::size_t>(&find_preset(lab, name) - lab.presets.data());
+    if (std::find(order.begin(), order.end(), i) != order.end())
+      throw std::invalid_argument("lab " + std::to_string(lab.number) + "'s story names preset '" + name + "' twice");
+    order.push_back(i);
+  }
+  return order;
+}
+
+bool needs_working_exercise(const Lab& lab, const Preset& preset) {
+  return !lab.exercise_files.empty() && !preset.artifact.provokes.empty();
 }
 
 void apply_preset(ParamSet& params, const Preset& preset) {

@@ -71,6 +71,9 @@ struct Lab {
   std::string summary;  // one line for `shadowlab labs`
   std::vector<ParamSpec> params;  // the lab's own parameters and its changed renderer defaults
   std::vector<Preset> presets;
+  // The lab's story: its presets' names in teaching order, stepped through in the window with Page Down /
+  // Page Up (demo mode). Empty: the presets in the order they are declared.
+  std::vector<std::string> story = {};
   // Files the student edits, relative to the data folder; the solution's files in the same order.
   std::vector<std::string> exercise_files;
   std::vector<std::string> solution_files;
@@ -116,6 +119,12 @@ ParamSet lab_params(const Lab& lab);
 // The lab's preset called `name` (as `--preset` takes it); throws std::invalid_argument naming the lab
 // and listing its presets when it has none of that name.
 const Preset& find_preset(const Lab& lab, const std::string& name);
+// The lab's story (Lab::story) as indices into lab.presets; throws std::invalid_argument naming the lab
+// when a name is no preset of it or comes twice.
+std::vector<std::size_t> story_order(const Lab& lab);
+// True when the preset provokes an artifact that only a working exercise draws: the lab has files to
+// edit, and the artifact is the one the preset provokes with the lab's solution (Artifact).
+bool needs_working_exercise(const Lab& lab, const Preset& preset);
 // Sets the preset's values in `params`, over what they hold (as its button in the panel does).
 void apply_preset(ParamSet& params, const Preset& preset);
 

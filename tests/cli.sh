@@ -595,19 +595,19 @@ assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
 PY
     ;;
   window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
-  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words (as tall as the window)
-    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 960 --height 900 >/dev/null || fail "render failed"
-    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 960 --height 900 >/dev/null || fail "render --panel failed"
-    png_python - "$tmp" <<'PY' || fail "panel not in final.png"
+  render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words, visible at 1280x720 without scrolling
+    "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 1280 --height 720 >/dev/null || fail "render failed"
+    "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
+    png_python - "$tmp" <<'PY' || fail "panel not in final.png, or the Check's failures not in its first screen"
 import sys
 from png_tools import load, differing
 w, h, plain = load(f"{sys.argv[1]}/plain/final.png")
 w2, h2, panel = load(f"{sys.argv[1]}/panel/final.png")
-assert (w, h) == (w2, h2) == (960, 900)
-inside = differing(plain, panel, 20, 40, 420, 860)
-outside = differing(plain, panel, 460, 60, 700, 860)  # left of the debug quad (its label is drawn with --panel)
-# The failed check's FAIL lines are red text.
-red = sum(1 for y in range(20, 880) for x in range(20, 430)
+assert (w, h) == (w2, h2) == (1280, 720)
+inside = differing(plain, panel, 20, 40, 420, 700)
+outside = differing(plain, panel, 460, 60, 700, 680)  # left of the debug quad (its label is drawn with --panel)
+# The failed check's sentences are red text, within the panel's 700 pixels (nothing below them is drawn).
+red = sum(1 for y in range(20, 710) for x in range(20, 430)
           if panel[y][4 * x] > 200 and panel[y][4 * x + 1] < 150 and panel[y][4 * x + 2] < 140)
 print("panel region differs:", inside, "view region:", outside, "red pixels:", red)
 assert inside > 0.3 and outside < 0.02 and red > 100
@@ -841,6 +841,9 @@ for lab in labs:
             fix = presets[names.index(p["fixed_by"])]
             assert fix["provokes"] != p["provokes"], (where, "the fix provokes the same artifact")
         if p["provokes"]: provoked.add(p["provokes"])
+    # The story (Page Down in the window): presets of the lab, each once, in teaching order.
+    story = lab["story"]
+    assert story and set(story) <= set(names) and len(story) == len(set(story)), (lab["number"], story, names)
 for artifact in ("acne", "peter-panning", "light bleeding"):
     assert artifact in provoked, (artifact, sorted(provoked))
 print(sum(len(l["presets"]) for l in labs), "presets; artifacts:", sorted(provoked))
@@ -931,6 +934,55 @@ stats = {"toast: bottom centre": differing(r["toast"], r["before"], w // 2 - 200
 print(stats)
 assert stats["toast: bottom centre"] > 0.05, "F12 showed nothing at the bottom of the view"
 assert stats["text size 2: panel"] > 0.2, "the kept text size was not used"
+PY
+    ;;
+  window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
+    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture).
+    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png"
+    # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
+    window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
+    # Lab 9's stock exercise emits no volumes: its z-pass preset (F2) shows nothing there; "Solution beside it" does.
+    window --lab 9 --size 1280x720 --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass.png,solution-beside,frames:3,screenshot:$tmp/beside.png"
+    window --lab 9 --size 1280x720 --impl solution --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass_solution.png"
+    png_python - "$tmp" <<'PY' || fail "the presets' keys, the story or the caption did not work"
+import sys
+from png_tools import load, differing
+w, h, _ = load(f"{sys.argv[1]}/plain.png")
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden", "acne", "acne_solution", "zpass", "zpass_solution", "beside")}
+# The caption's line for a preset that needs a working exercise is in the panel's hint colour (242, 204, 115).
+yellow = lambda rows: sum(1 for y in range(0, 200) for x in range(460, 950)
+                          if rows[y][4 * x] > 200 and 170 < rows[y][4 * x + 1] < 230 and 80 < rows[y][4 * x + 2] < 150)
+top = (460, 0, 950, 200)              # the caption: top of the view, right of the panel, left of the pass-time line
+below = (460, 300, w - 10, h - 60)    # the view under it
+stats = {"caption tuned/plain": differing(r["tuned"], r["plain"], *top),
+         "view tuned/plain": differing(r["tuned"], r["plain"], *below),
+         "caption back/tuned (Page Up)": differing(r["back"], r["tuned"], *top),
+         "view back/tuned (Page Up)": differing(r["back"], r["tuned"], *below),
+         "all again/tuned (Page Down)": differing(r["again"], r["tuned"], 0, 0, w, h),
+         "caption hidden panel/plain": differing(r["hidden"], r["plain"], w // 4, 0, 3 * w // 4, 120)}
+# How tall the caption is: the rows where F3 changed the picture (a lecture hall's back row needs large text).
+rows = [y for y in range(0, h // 2) if any(sum(abs(r["tuned"][y][4 * x + c] - r["plain"][y][4 * x + c]) for c in range(3)) > 24
+                                            for x in range(460, 950, 2))]
+stats["caption rows"] = (rows[0], rows[-1]) if rows else None
+stats["needs-exercise line: acne exercise, solution, tuned"] = (yellow(r["acne"]), yellow(r["acne_solution"]), yellow(r["tuned"]))
+print(stats)
+assert stats["caption tuned/plain"] > 0.05, "F3 showed no caption"
+assert stats["view tuned/plain"] < 0.01, "F3 (the lab's defaults) changed the view, or the caption is not at the top"
+assert rows and rows[-1] - rows[0] >= 60, "the caption is too small to read from afar"
+assert stats["caption back/tuned (Page Up)"] > 0.05 and stats["view back/tuned (Page Up)"] > 0.01, "Page Up did not step back to peter-panning"
+assert stats["all again/tuned (Page Down)"] < 0.005, "Page Down did not step forward to tuned again"
+assert stats["caption hidden panel/plain"] > 0.05, "the caption went with the panel (H)"
+# "Solution beside it": the right half is the solution's (as in zpass_solution), the left stays the exercise's.
+mid = w // 2  # the divider (compare.divider 0.5 of the width); right of it, where the scene's shadows fall
+stats["beside: right vs solution, right vs exercise, left vs exercise"] = (
+    differing(r["beside"], r["zpass_solution"], mid + 20, 330, 1000, 600),
+    differing(r["beside"], r["zpass"], mid + 20, 330, 1000, 600),
+    differing(r["beside"], r["zpass"], 470, 300, mid - 20, h - 60))
+print(stats["beside: right vs solution, right vs exercise, left vs exercise"])
+rs, re_, le = stats["beside: right vs solution, right vs exercise, left vs exercise"]
+assert re_ > 0.02 and rs < re_ / 3 and le < re_ / 3, "Solution beside it did not put the solution's picture on the right"
+ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
+assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
 PY
     ;;
   *) fail "unknown case $case_name" ;;

@@ -1,0 +1,88 @@
+// What a student reads of a check (issue 35): each criterion as one sentence with its limit in the
+// sentence's own unit (Criterion::headline), what to change (Criterion::hint), and a lab's story (its
+// presets in teaching order, stepped with Page Down / Page Up in the window). No GL: in test_gl because
+// the labs library is linked here.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "labs/check.h"
+#include "labs/lab.h"
+
+namespace shadowlab {
+namespace {
+
+const std::string kNbsp = "\u00a0";  // between a number and its unit: the panel never wraps there
+
+TEST(CheckSentences, APercentageIsComparedWithItsLimitInPercent) {
+  const Criterion c{"k3.acne_rate", 0.2084, Criterion::kAtMost, 0.002, "measured", ""};
+  EXPECT_EQ(c.headline(), "20.84" + kNbsp + "% of lit pixels show acne (drawn in shadow); at most 0.2" + kNbsp + "% allowed (k3).");
+  EXPECT_EQ(c.hint(), "raise the bias, or make it grow with the slope.");
+  // The command line's sentence is unchanged (recorded runs quote it).
+  EXPECT_EQ(c.explain(), "20.84 % of lit pixels show acne (drawn in shadow) [k3] (needs <= 0.002): raise the bias, or make it grow with the slope.");
+}
+
+TEST(CheckSentences, ALabsOwnAdviceIsTheHintAndAPlainNumberKeepsNoUnit) {
+  const Criterion c{"graded_pixels", 120, Criterion::kAtLeast, 2000, "", "open a scene with shadows."};
+  EXPECT_EQ(c.headline(), "The view has 120 lit or shadowed pixels away from shadow edges; at least 2000 needed.");
+  EXPECT_EQ(c.hint(), "open a scene with shadows.");
+}
+
+TEST(CheckSentences, AnAdviceThatOnlyRepeatsTheLimitGivesNoHint) {
+  const Criterion c{"bleeding_ratio_to_unfixed", 0.9, Criterion::kAtMost, 0.25, "", ""};
+  EXPECT_EQ(c.headline(), "Light bleeding is 90" + kNbsp + "% of what it is without your fix; at most 25" + kNbsp + "% allowed.");
+  EXPECT_EQ(c.hint(), "");
+}
+
+TEST(CheckSentences, AMetricWithNoSentenceIsNamedInWords) {
+  EXPECT_EQ((Criterion{"bias.growth_at_steep_slope", 0, Criterion::kAtLeast, 2, "", ""}.headline()),
+            "Growth at steep slope is 0; at least 2 needed (bias).");
+}
+
+TEST(CheckSentences, OtherUnitsAreSaidForTheLimitToo) {
+  EXPECT_EQ((Criterion{"trees.orientation", 12.5, Criterion::kAtMost, 2, "", ""}.headline()),
+            "The quad is turned up to 12.50 deg away from the upright quad facing the light; at most 2" + kNbsp + "deg allowed (trees).");
+  EXPECT_EQ((Criterion{"error_ratio_fitted_to_fixed", 1.5, Criterion::kAtMost, 0.8, "", ""}.headline()),
+            "The fitted box's error (acne + leak) is 1.50 x the fixed box's; at most 0.8" + kNbsp + "x allowed.");
+}
+
+Lab lab_with_presets(std::vector<std::string> story) {
+  Lab lab;
+  lab.number = 42;
+  lab.title = "Test";
+  lab.presets = {{"acne", "a", {}}, {"tuned", "t", {}}, {"peter-panning", "p", {}}};
+  lab.story = std::move(story);
+  return lab;
+}
+
+TEST(LabStory, IsTheDeclaredOrderUnlessTheLabGivesOne) {
+  EXPECT_EQ(story_order(lab_with_presets({})), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(story_order(lab_with_presets({"acne", "peter-panning", "tuned"})), (std::vector<std::size_t>{0, 2, 1}));
+  EXPECT_EQ(story_order(lab_with_presets({"tuned"})), (std::vector<std::size_t>{1}));
+}
+
+TEST(LabStory, AnUnknownOrRepeatedNameIsRefusedNamingTheLab) {
+  EXPECT_THROW(story_order(lab_with_presets({"acne", "nope"})), std::invalid_argument);
+  try {
+    story_order(lab_with_presets({"acne", "tuned", "acne"}));
+    FAIL() << "a repeated name was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("lab 42"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LabStory, EveryLabsStoryNamesItsOwnPresets) {
+  for (const Lab& lab : all_labs()) EXPECT_NO_THROW(story_order(lab)) << "lab " << lab.number;
+}
+
+TEST(LabStory, PresetsThatProvokeAnArtifactNeedAWorkingExerciseWhereThereIsOne) {
+  Lab lab = lab_with_presets({});
+  lab.presets[0].artifact = {.provokes = "acne", .fixed_by = "tuned"};
+  EXPECT_FALSE(needs_working_exercise(lab, lab.presets[0]));  // a read-along lab: nothing to edit
+  lab.exercise_files = {"shaders/labs/x.glsl"};
+  EXPECT_TRUE(needs_working_exercise(lab, lab.presets[0]));
+  EXPECT_FALSE(needs_working_exercise(lab, lab.presets[1]));  // the fix provokes nothing
+}
+
+}  // namespace
+}  // namespace shadowlab
