@@ -40,6 +40,9 @@ VARIANTS = [
     # so these are submissions: the solution with that one line changed (see SUBMISSIONS).
     *[(1, f"solution_cull_{cull}_slope_{k}", "submission", [f"cull_{cull}", "--set", f"shadow.slope_bias={k}"])
       for cull, k in (("front", "1"), ("front", "2"), ("back", "2"))],
+    # Lab 1: the lecture's bias max(0.05 (1 - n.l), 0.005) as written (COURSE.md, "Artifacts and fixes"),
+    # graded as a submission: why a course-faithful answer fails here (README.md quotes it).
+    (1, "lecture_formula", "submission", ["lecture_formula"]),
     # Lab 3: the minimum variance swept (the solution; the check's oracle case), and half floats.
     *[(3, f"solution_min_variance_{v}", "check", ["--impl", "solution", "--set", f"vsm.min_variance={v}"])
       for v in ("1e-7", "1e-5", "1e-4", "1e-3")],
@@ -61,6 +64,10 @@ SUBMISSIONS = {
                                                           f"#define SHADOW_PASS_CULL {cull.upper()}")}
     for cull in ("front", "back")
 }
+# The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
+SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
+    "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
+    "#define SHADOW_PASS_CULL NONE")}
 
 
 def make_submission(root, name, folder):
