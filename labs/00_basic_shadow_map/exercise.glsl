@@ -1,5 +1,5 @@
 // Lab 0 exercise: the basic shadow test. Edit this file; the lab reloads it when you save.
-// shadow_bias(n_dot_l): the constant from the slider "Constant bias".
+// shadow_bias(n_dot_l): the slider "Constant bias" plus lab 1's slope term (0 unless "Slope bias" is set).
 #include "lab/bias.glsl"
 
 uniform mat4 u_light_view_proj;  // world -> the light's clip space, as the shadow pass used it

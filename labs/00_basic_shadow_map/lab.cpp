@@ -39,6 +39,11 @@ constexpr float kProbeBias = 0.005f;
 // Points are kept this far from texel borders and from the compared depth, where rounding may decide.
 constexpr float kBorderMargin = 0.05f;
 constexpr float kDepthMargin = 1e-3f;
+// The probe grades the lookup (the bias matrix, the texel), not the bias's value: no point lies less
+// than this above its texel's stored depth, so any bias from 0 to this decides nothing here. It covers
+// the slider's 0.005, the lab sheet's hard-coded `closestDepth + 0.01 > z` (course seed 003) and the
+// peter-panning preset's 0.05; the pictures grade the bias.
+constexpr float kProbeBiasBand = 0.05f;
 // The share of probe points that may disagree with the reference: none should; a few for rounding.
 constexpr double kMaxProbeMismatch = 0.002;
 
@@ -64,7 +69,7 @@ void probe_shadow_test(CheckContext& ctx, CheckResult& result) {
       const int ix = std::min(static_cast<int>(s.x * kProbeMapSize), kProbeMapSize - 1);
       const int iy = std::min(static_cast<int>(s.y * kProbeMapSize), kProbeMapSize - 1);
       const float stored = depths[static_cast<std::size_t>(iy * kProbeMapSize + ix)];
-      if (std::abs(s.z - kProbeBias - stored) < kDepthMargin) continue;
+      if (s.z > stored - kDepthMargin && s.z < stored + kProbeBiasBand + kDepthMargin) continue;
       reference = s.z - kProbeBias > stored ? 0.0f : 1.0f;
     }
     request.in0.push_back(glm::vec4(2.0f * s - 1.0f, 1.0f));  // world = clip: x, y, z in [-1, 1]; n.l = 1

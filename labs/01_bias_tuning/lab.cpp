@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <string>
 
 #include "labs/check.h"
 #include "labs/lab.h"
@@ -131,6 +132,28 @@ const HardLimits kLimits{
     .shadow_advice = "shadows detach (peter-panning): the bias is too large here. Scale the slope term by the texel's "
                      "size (u_texel_depth) and cap tan near grazing angles; check the culling too."};
 
+// The culling on its own (task 2): one picture drawn with the graded file's `#define SHADOW_PASS_CULL`
+// and the reference solution's bias, so that its criteria (`culling.*`) name the culling whatever bias
+// the student wrote. A low light on a coarse map, where culling front faces leaks most on this scene
+// (the single-sided ground is culled and the boxes' feet peter-pan: INSTRUCTOR.md has the figures).
+constexpr double kCullingElevation = 8.0;
+constexpr int kCullingMapSize = 256;
+const HardLimits kCullingLimits{
+    .why = "lab 1's bounds (0.1 % acne, 0.5 % leak, interior pixels), drawn with your culling and the reference bias",
+    .lit_advice = "acne with your culling and a correct bias: the map stores the faces the light sees, culled wrongly.",
+    .shadow_advice = "shadows leak with your culling even with a correct bias: culling FRONT faces stores the boxes' far "
+                     "sides and drops the single-sided ground, so the ground behind the boxes' feet is lit. Use NONE "
+                     "or BACK on this scene."};
+
+void check_culling(CheckContext& ctx, CheckResult& result, ParamSet params) {
+  Features hooks = ctx.lab.hooks(Impl::Solution);
+  hooks.shadow_cull_override = ctx.hooks().shadow_cull_override;
+  params.set("light.elevation", kCullingElevation);
+  params.set_from_string("shadow.map_size", std::to_string(kCullingMapSize));
+  const auto m = ctx.measure(params, hooks, std::string("lab01_culling_") + impl_name(ctx.impl));
+  grade_hard_shadow(result, "culling", m.metrics, kCullingLimits);
+}
+
 void check_bias(CheckContext& ctx, CheckResult& result) {
   // 1. The function alone.
   probe_bias_function(ctx, result);
@@ -139,6 +162,8 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
   grade_lab_and_held_out_lights(ctx, result, "lab01", "grazing", params, params, kHeldOut, kLimits);
+  // 3. The culling alone.
+  check_culling(ctx, result, params);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // This is lab 3's shadow test: Chebyshev's bound on the linearly filtered moments. It is included by the
 // lit pass (shaders/lit.frag), with shadow_coords, outside_shadow_map and u_shadow_map from
 // shaders/shadow/common.glsl.
-// shadow_bias(n_dot_l), sliders "Constant bias" and "Slope bias" (lab 1), and
+// shadow_bias(n_dot_l): lab 1's constant + slope term (sliders "Constant bias" and "Slope bias"), and
 // chebyshev_upper_bound(moments, z) (lab 3):
 #include "lab/bias.glsl"
 #include "lab/chebyshev.glsl"

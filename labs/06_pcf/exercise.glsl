@@ -1,5 +1,5 @@
 // Lab 6 exercise: percentage-closer filtering. Edit this file; the lab reloads it when you save.
-// shadow_bias(n_dot_l): lab 1's slope-scaled bias for one texel.
+// shadow_bias(n_dot_l): lab 1's bias for one texel, constant + slope term.
 #include "lab/bias.glsl"
 
 uniform sampler2DShadow u_shadow_map_compare;  // the same depth texture through a comparison sampler

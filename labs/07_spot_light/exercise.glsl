@@ -1,5 +1,6 @@
 // Lab 7 exercise: the spot light's shadow test. Edit this file; the lab reloads it when you save.
-// shadow_bias(n_dot_l): the directional labs' bias, in depth units (the slider "Constant bias"), and
+// shadow_bias(n_dot_l): the directional labs' bias in depth units, lab 1's constant (slider "Constant bias")
+// plus its slope term; and
 // u_bias_slope (slider "Slope bias", in texels per unit of tan(angle of incidence)).
 #include "lab/bias.glsl"
 

@@ -30,7 +30,8 @@ float csm_lookup(int i, vec3 world_position, float n_dot_l) {
   vec4 p = u_csm_tex[i] * vec4(world_position, 1.0);
   vec3 s = p.xyz / p.w;
   if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;
-  float bias = max(u_bias_constant, u_bias_slope * u_csm_texel_depth[i] * shadow_tan_incidence(n_dot_l));
+  // lab 1's bias (shaders/shadow/bias.glsl), with this cascade's texel
+  float bias = u_bias_constant + u_bias_slope * u_csm_texel_depth[i] * shadow_tan_incidence(n_dot_l);
   float closest = texture(u_csm_maps, vec3(s.xy, float(i))).r;
   return s.z - bias > closest ? 0.0 : 1.0;
 }

@@ -40,6 +40,9 @@ VARIANTS = [
     # so these are submissions: the solution with that one line changed (see SUBMISSIONS).
     *[(1, f"solution_cull_{cull}_slope_{k}", "submission", [f"cull_{cull}", "--set", f"shadow.slope_bias={k}"])
       for cull, k in (("front", "1"), ("front", "2"), ("back", "2"))],
+    # Lab 1: the lecture's bias max(0.05 (1 - n.l), 0.005) as written (COURSE.md, "Artifacts and fixes"),
+    # graded as a submission: why a course-faithful answer fails here (README.md quotes it).
+    (1, "lecture_formula", "submission", ["lecture_formula"]),
     # Lab 3: the minimum variance swept (the solution; the check's oracle case), and half floats.
     *[(3, f"solution_min_variance_{v}", "check", ["--impl", "solution", "--set", f"vsm.min_variance={v}"])
       for v in ("1e-7", "1e-5", "1e-4", "1e-3")],
@@ -61,6 +64,10 @@ SUBMISSIONS = {
                                                           f"#define SHADOW_PASS_CULL {cull.upper()}")}
     for cull in ("front", "back")
 }
+# The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
+SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
+    "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
+    "#define SHADOW_PASS_CULL NONE")}
 
 
 def make_submission(root, name, folder):
@@ -259,7 +266,7 @@ def selftest(binary, root):
     sys.path.insert(0, str(pathlib.Path(__file__).parent))
     import lab_texts_selftest
     lab_texts_selftest.ROOT = root
-    quote = "860<!-- @ lab_00.json:/runs/exercise/result/metrics/probe/wrong_inside -->"
+    quote = "795<!-- @ lab_00.json:/runs/exercise/result/metrics/probe/wrong_inside -->"
     with tempfile.TemporaryDirectory() as tmp:
         copy = pathlib.Path(tmp)
         lab_texts_selftest.copy_texts(tmp)
@@ -269,8 +276,8 @@ def selftest(binary, root):
         if quote not in text:
             print("measured selftest: the quoted figure is gone from lab 0's INSTRUCTOR.md: update the self-test")
             return 1
-        notes.write_text(text.replace(quote, quote.replace("860", "861", 1)))
-        data["runs"]["exercise"]["result"]["metrics"]["probe"]["wrong_inside"] = 861.0
+        notes.write_text(text.replace(quote, quote.replace("795", "796", 1)))
+        data["runs"]["exercise"]["result"]["metrics"]["probe"]["wrong_inside"] = 796.0
         record.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
         texts = subprocess.run([sys.executable, str(pathlib.Path(__file__).with_name("lab_texts.py")), tmp],
                                capture_output=True, text=True)
@@ -278,7 +285,7 @@ def selftest(binary, root):
             print("measured selftest: the changed copy should still agree with itself:\n" + texts.stdout)
             return 1
         out = subprocess.run([sys.executable, __file__, "replay", str(binary), tmp, "0"], capture_output=True, text=True)
-        if out.returncode != 1 or "say 861, the current code gives 860" not in out.stdout:
+        if out.returncode != 1 or "say 796, the current code gives 795" not in out.stdout:
             print(f"measured selftest: replay did not catch a quoted figure the code no longer gives "
                   f"(exit {out.returncode}):\n{out.stdout}{out.stderr}")
             return 1

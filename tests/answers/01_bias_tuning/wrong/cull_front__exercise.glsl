@@ -1,6 +1,6 @@
 // wrong: slope-scaled bias, and culls front faces 'as the other classic fix' on a scene with a single-sided ground
 // expect: structure
-// fails: *.shadow_error
+// fails: culling.shadow_error
 #define SHADOW_PASS_CULL FRONT
 
 uniform float u_bias_constant;  // slider "Constant bias", in depth units of the light's projection
