@@ -154,7 +154,7 @@ void draw_check(PanelModel& m, PanelActions& a) {
   ImGui::PopTextWrapPos();
 }
 
-void draw_parameters(PanelModel& m, PanelActions&) {
+void draw_parameters(PanelModel& m, PanelActions& actions) {
   if (!ImGui::CollapsingHeader("Parameters and presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
   param_widgets(*m.params);
   if (ImGui::Button("Defaults")) m.params->reset_to_defaults();
@@ -165,7 +165,8 @@ void draw_parameters(PanelModel& m, PanelActions&) {
     const float w = ImGui::CalcTextSize(preset.name.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
     if (x + ImGui::GetStyle().ItemSpacing.x + w < right) ImGui::SameLine();  // wrap the row of buttons
     if (ImGui::Button(preset.name.c_str())) {
-      for (const auto& [key, value] : preset.values) m.params->set_from_string(key, value);
+      apply_preset(*m.params, preset);
+      actions.preset = &preset;
     }
     x = ImGui::GetItemRectMax().x;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", preset.description.c_str());

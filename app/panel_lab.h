@@ -87,6 +87,7 @@ struct PanelActions {
   bool measure_penumbra = false;  // measure this view against the exact penumbra (PenumbraPanelState)
   std::optional<float> text_size;  // the user moved the text size control (1 = 100 %)
   std::string copied_link;         // a link in the lab text was clicked (its target is on the clipboard)
+  const Preset* preset = nullptr;  // a preset's button was pressed (its values are set): show its view
 };
 
 PanelActions draw_lab_panel(PanelModel& model);

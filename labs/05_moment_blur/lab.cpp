@@ -190,7 +190,7 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"soft",
        "Radius 8, sigma 4: wide penumbrae (and more light bleeding).",
        {{"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
-       {.provokes = "light bleeding", .fixed_by = "tuned"}},
+       {.provokes = "light bleeding", .fixed_by = "tuned"}, {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
       {"cut-off kernel",
        "Radius 2 with sigma 8: a box filter in disguise.",
        {{"vsm.blur_radius", "2"}, {"vsm.blur_sigma", "8"}},

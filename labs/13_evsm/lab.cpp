@@ -110,12 +110,15 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
       {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, for comparison.", {{"vsm.warp", "none"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
-      {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+      {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}, {"vsm.format", "RG32F"}}},
       {"small c", "c = 5 (the RG16F limit): less sharpening, more bleeding.", {{"vsm.evsm_exponent", "5"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
       {"half floats", "RG16F: c is clamped to 5.", {{"vsm.format", "RG16F"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {
