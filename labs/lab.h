@@ -49,6 +49,10 @@ struct PresetView {
   std::string camera = {};
 };
 
+// The camera of the presets that show a shadow's edge (aliasing, filtering): close over the ground where the
+// big box's shadow turns a corner, in the default scene under the default light.
+inline constexpr const char* kShadowEdgeCamera = "eye=-4.6,2.2,1.8 target=-3.6,0,-0.4 fov=30";
+
 struct Preset {
   std::string name;         // "acne", "peter-panning", ...
   std::string description;  // what it shows
