@@ -83,12 +83,23 @@ void apply_set_option(ParamSet& params, const std::string& assignment) {
   }
 }
 
-void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name) {
-  if (name.empty()) return;
+const Preset* apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name) {
+  if (name.empty()) return nullptr;
   try {
-    apply_preset(params, find_preset(lab, name));
+    const Preset& preset = find_preset(lab, name);
+    apply_preset(params, preset);
+    return &preset;
   } catch (const std::exception& e) {
     throw std::invalid_argument("--preset " + name + ": " + e.what());
+  }
+}
+
+Scene scene_option(const std::string& scene_file, const Preset* preset) {
+  if (!scene_file.empty() || !preset || preset->view.scene.empty()) return load_scene_or_default(scene_file);
+  try {
+    return builtin_scene(preset->view.scene);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("--preset " + preset->name + ": " + e.what());
   }
 }
 
@@ -137,6 +148,16 @@ OrbitCamera camera_option(const std::string& spec, const Bounds& bounds) {
   return OrbitCamera::looking(eye, target, fov, bounds);
 }
 
+OrbitCamera view_camera(const std::string& camera_spec, const Preset* preset, const Scene& scene, const ParamSet& params) {
+  if (!camera_spec.empty()) return camera_option(camera_spec, frame_scene_bounds(scene, params));
+  if (!preset || preset->view.camera.empty()) return frame_scene_camera(scene, params);
+  try {
+    return camera_option(preset->view.camera, frame_scene_bounds(scene, params));
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("--preset " + preset->name + ": " + e.what());
+  }
+}
+
 void parse_size_option(const std::string& spec, int* width, int* height) {
   const auto x = spec.find('x');
   std::size_t used_w = 0, used_h = 0;
@@ -177,11 +198,10 @@ int run_render(const RenderOptions& options) {
       throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
     }
     ParamSet params = lab_params(*lab);
-    apply_preset_option(params, *lab, options.preset);
+    const Preset* preset = apply_preset_option(params, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(params, a);
-    const Scene scene = load_scene_or_default(options.scene_file);
-    const OrbitCamera camera = options.camera.empty() ? frame_scene_camera(scene, params)
-                                                      : camera_option(options.camera, frame_scene_bounds(scene, params));
+    const Scene scene = scene_option(options.scene_file, preset);
+    const OrbitCamera camera = view_camera(options.camera, preset, scene, params);
     std::optional<BenchPlots> bench_plots;
     if (!options.bench_file.empty()) bench_plots = load_bench_plots(options.bench_file);
     make_output_dir(options.out_dir);
@@ -313,13 +333,15 @@ int run_render(const RenderOptions& options) {
 namespace {
 
 // A lab's presets as `labs --presets --json` lists them: what each sets, the artifact it provokes and the
-// preset that fixes it (null where there is none), in the lab's order.
+// preset that fixes it, and its view (the built-in scene and --camera it picks), null where there is none,
+// in the lab's order.
 nlohmann::json presets_json(const Lab& lab) {
   nlohmann::json presets = nlohmann::json::array();
   const auto or_null = [](const std::string& s) { return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s); };
   for (const auto& p : lab.presets)
     presets.push_back({{"name", p.name}, {"description", p.description}, {"values", p.values},
-                       {"provokes", or_null(p.artifact.provokes)}, {"fixed_by", or_null(p.artifact.fixed_by)}});
+                       {"provokes", or_null(p.artifact.provokes)}, {"fixed_by", or_null(p.artifact.fixed_by)},
+                       {"scene", or_null(p.view.scene)}, {"camera", or_null(p.view.camera)}});
   return presets;
 }
 

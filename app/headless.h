@@ -12,6 +12,7 @@
 namespace shadowlab {
 
 struct Lab;
+struct Preset;
 
 struct RenderOptions {
   int lab = 0;
@@ -51,8 +52,14 @@ std::string one_line_error(const std::string& message);
 // Applies one `--set key=value` (render and check): a bad one throws std::invalid_argument naming it.
 void apply_set_option(ParamSet& params, const std::string& assignment);
 // Applies `--preset NAME` (render, check, the window), the lab's preset of that name; an unknown one
-// throws std::invalid_argument naming the lab and listing its presets. An empty name does nothing.
-void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name);
+// throws std::invalid_argument naming the lab and listing its presets. An empty name does nothing
+// (null returned); otherwise the preset, whose view (scene, camera) scene_option and view_camera use.
+const Preset* apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name);
+// The scene of a run (render, the window): --scene's file (load_scene_or_default), else the preset's
+// built-in scene, else the default scene.
+Scene scene_option(const std::string& scene_file, const Preset* preset);
+// The camera of a run: --camera's, else the preset's camera, else the scene framed (frame_scene_camera).
+OrbitCamera view_camera(const std::string& camera_spec, const Preset* preset, const Scene& scene, const ParamSet& params);
 
 // The camera of `--camera "eye=x,y,z target=x,y,z fov=deg"` (render and the window): each part
 // optional, what is not given is the framing's (the scene framed from the default angle). A bad spec

@@ -218,6 +218,7 @@ struct App {
   void choose_preset(std::size_t i) {
     const Preset& preset = lab->presets.at(i);
     apply_preset(params, preset);
+    show_preset_view(preset);
     preset_values.clear();
     for (const auto& entry : preset.values) preset_values.emplace_back(entry.first, params.get(entry.first));
     shown_preset = i;
@@ -309,6 +310,20 @@ struct App {
       std::fprintf(stderr, "shadowlab: cannot open the dropped file: %s\n", full.c_str());
       scene_error = "Cannot open the dropped file: " + shortened(full, kPanelErrorBytes) + " (the current scene stays)";
     }
+  }
+  // A preset's button pressed: its built-in scene (when it names one other than the one shown) and its camera.
+  void show_preset_view(const Preset& preset) {
+    if (!preset.view.scene.empty() && preset.view.scene != renderer->scene().name) {
+      const Scene scene = builtin_scene(preset.view.scene);  // the names are the lab's own: a test renders each
+      renderer->set_scene(scene);
+      split.set_scene(scene);
+      oracle.reset();
+      check_result.reset();
+      scene_error.clear();
+      camera = frame_scene_camera(scene, params);
+    }
+    if (!preset.view.camera.empty())
+      camera = camera_option(preset.view.camera, frame_scene_bounds(renderer->scene(), params));
   }
 };
 
@@ -748,8 +763,11 @@ int run_window(const WindowOptions& options) {
     return kExitUsage;
   }
   Scene scene;
+  const Preset* preset = nullptr;
+  ParamSet check = lab_params(*lab);
   try {
-    scene = load_scene_or_default(options.scene_file);
+    preset = apply_preset_option(check, *lab, options.preset);
+    scene = scene_option(options.scene_file, preset);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", one_line_error(e.what()).c_str());
     return kExitUsage;
@@ -758,11 +776,8 @@ int run_window(const WindowOptions& options) {
   OrbitCamera camera;
   try {
     if (!options.size.empty()) parse_size_option(options.size, &width, &height);
-    ParamSet check = lab_params(*lab);
-    apply_preset_option(check, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(check, a);
-    camera = options.camera.empty() ? frame_scene_camera(scene, check)
-                                    : camera_option(options.camera, frame_scene_bounds(scene, check));
+    camera = view_camera(options.camera, preset, scene, check);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowlab: %s\n", e.what());
     return kExitUsage;
@@ -815,8 +830,9 @@ int run_window(const WindowOptions& options) {
     app.impl = options.impl == "solution" ? Impl::Solution : Impl::Exercise;  // never saved: one-off as it is
     app.settings.start();  // only now: a run that failed to start never touches the settings file
     if (const auto size = app.settings.text_size()) app.text_size = *size;
-    // The camera kept for this scene, unless --camera chose one (for this run: kept once the user moves it).
-    if (options.camera.empty()) {
+    // The camera kept for this scene, unless --camera or the preset's view chose one (for this run: kept once
+    // the user moves it).
+    if (options.camera.empty() && (!preset || preset->view.camera.empty())) {
       if (const auto kept = app.settings.camera(scene.name)) app.camera = *kept;
     } else {
       app.settings.give_one_off_camera(camera);

@@ -40,11 +40,25 @@ struct Artifact {
   std::string fixed_by = {};
 };
 
+// Where a preset looks from, so that its artifact fills the view: a built-in scene (builtin_scene's
+// names; empty: the built-in default scene) and a camera as --camera takes it ("eye=x,y,z target=x,y,z
+// fov=deg"; empty: the scene framed). `render --preset` and the window use them unless --scene or --camera
+// is given; a preset that leaves them empty keeps the view it is applied to.
+struct PresetView {
+  std::string scene = {};
+  std::string camera = {};
+};
+
+// The camera of the presets that show a shadow's edge (aliasing, filtering): close over the ground where the
+// big box's shadow turns a corner, in the default scene under the default light.
+inline constexpr const char* kShadowEdgeCamera = "eye=-4.6,2.2,1.8 target=-3.6,0,-0.4 fov=30";
+
 struct Preset {
   std::string name;         // "acne", "peter-panning", ...
   std::string description;  // what it shows
   std::map<std::string, std::string> values;  // key -> value, as --set takes them
   Artifact artifact = {};   // e.g. {.provokes = "acne", .fixed_by = "tuned"}
+  PresetView view = {};     // e.g. {.scene = "stacked", .camera = "eye=0,2,9 target=0,0.5,0"}
 };
 
 // What a lab adds to `shadowlab bench`: its solution with these parameters, measured as one technique.

@@ -22,4 +22,10 @@ Features vsm_features(const std::filesystem::path& visibility = kVsmVisibility);
 // moments' bias is the lesson there, not the slope).
 std::vector<ParamSpec> vsm_lab_bias_params();
 
+// Where the VSM labs' light-bleeding presets look from (PresetView: the built-in "stacked" scene, the
+// occluders stacked over the receiver, and this --camera): close over the receiver where the low
+// occluder's shadow lies inside the middle one's, so that the band where light bleeds fills the view.
+inline constexpr const char* kStackedOccludersScene = "stacked";
+inline constexpr const char* kStackedOccludersCamera = "eye=-2,2.6,4.2 target=-0.4,0,1 fov=30";
+
 }  // namespace shadowlab

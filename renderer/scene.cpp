@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -232,6 +234,12 @@ Scene make_stacked_occluders_scene() {
   add_named(s, make_box({0.4f, 1.8f, 0.3f}, {1.2f, 0.05f, 1.2f}, {0.3f, 0.7f, 0.3f}), "middle occluder");
   add_named(s, make_box({0.0f, 3.4f, -0.6f}, {1.0f, 0.05f, 1.0f}, {0.3f, 0.4f, 0.8f}), "high occluder");
   return s;
+}
+
+Scene builtin_scene(std::string_view name) {
+  if (name.empty() || name == "default") return make_default_scene();
+  if (name == "stacked") return make_stacked_occluders_scene();
+  throw std::invalid_argument("no built-in scene '" + std::string(name) + "'; the built-in scenes: 'default', 'stacked'");
 }
 
 }  // namespace shadowlab

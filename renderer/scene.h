@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -124,6 +125,10 @@ Scene make_default_scene();
 
 // Occluders stacked at different heights over a receiver: the textbook case of VSM light bleeding.
 Scene make_stacked_occluders_scene();
+
+// A built-in scene by its name (Scene::name): "default" (or empty) or "stacked", as a preset names it;
+// throws std::invalid_argument listing the names otherwise.
+Scene builtin_scene(std::string_view name);
 
 // Shapes used by the built-in scenes and by tests.
 Mesh make_box(const glm::vec3& center, const glm::vec3& half_size, const glm::vec3& color);

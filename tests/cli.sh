@@ -831,7 +831,8 @@ for lab in labs:
     assert presets and len(names) == len(set(names)), (lab["number"], names)
     for p in presets:
         where = (lab["number"], p.get("name"))
-        assert set(p) == {"name", "description", "values", "provokes", "fixed_by"}, (where, sorted(p))
+        assert set(p) == {"name", "description", "values", "provokes", "fixed_by", "scene", "camera"}, (where, sorted(p))
+        assert p["scene"] in (None, "default", "stacked") and (p["camera"] is None or "=" in p["camera"]), where
         assert isinstance(p["name"], str) and p["name"] and isinstance(p["description"], str) and p["description"], where
         assert p["values"] and all(isinstance(k, str) and isinstance(v, str) for k, v in p["values"].items()), where
         assert p["provokes"] is None or (isinstance(p["provokes"], str) and p["provokes"] == p["provokes"].strip().lower() != ""), where
@@ -850,6 +851,53 @@ print(sum(len(l["presets"]) for l in labs), "presets; artifacts:", sorted(provok
 PY
     "$bin" labs --presets >"$tmp/text" || fail "labs --presets: exit $?"
     grep -qF -- "--preset 'acne'  [acne] fixed by 'tutorial'" "$tmp/text" || fail "labs --presets: $(head -5 "$tmp/text")"
+    ;;
+  preset_contrast)  # issue 35: each artifact's preset against its fix changes at least 2 % of a 1280x720 frame
+    # Every preset that provokes an artifact names its fix (so that it can be shown against it), and the
+    # fix is rendered as the window shows it after the artifact's button then the fix's: the fix's values
+    # over the artifact preset's, in the artifact preset's scene and camera, so only what the fix sets
+    # differs. One `render` per picture (about 1 s each at 1280x720 on llvmpipe; 2 per pair).
+    "$bin" labs --presets --json >"$tmp/presets.json" || fail "labs --presets --json: exit $?"
+    png_python - "$bin" "$tmp" "$tmp/presets.json" "2:aliasing" "5:cut-off kernel" "13:small c" "14:large bias" <<'PY' || fail "an artifact's preset barely differs from its fix (figures above)"
+import json, subprocess, sys
+from png_tools import load, differing
+bin_, tmp, listing = sys.argv[1:4]
+W, H = 1280, 720
+# A pixel differs when its R + G + B change by more than 24 of 765 (png_tools.differing's default; about
+# 3 % of full scale): llvmpipe renders the same settings to the same bytes, so this only skips the
+# faintest changes of shading nobody sees from the back row, while a shadow's edge (ambient 0.25 against
+# lit) changes by far more. Every other pixel of every other row is sampled (a quarter of the frame).
+def render(lab, preset, sets, out):
+    cmd = [bin_, "render", "--lab", str(lab), "--preset", preset, "--impl", "solution", "--width", str(W),
+           "--height", str(H), "--out", out] + [a for kv in sets for a in ("--set", kv)]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    return load(out + "/final.png")[2]
+# Pairs whose view has not been found yet (issue 35 open for them): below 2 % here, each must still
+# change at least 0.1 % of the frame, and one that reaches 2 % must leave this list.
+BELOW = set(sys.argv[4:])
+bad, n = [], 0
+for lab in json.load(open(listing))["labs"]:
+    presets = {p["name"]: p for p in lab["presets"]}
+    for p in lab["presets"]:
+        if not p["provokes"]:
+            continue
+        where = "lab %d '%s' [%s]" % (lab["number"], p["name"], p["provokes"])
+        if not p["fixed_by"]:
+            bad.append(where + ": no fixed_by to show it against")
+            continue
+        fix = presets[p["fixed_by"]]
+        a = render(lab["number"], p["name"], [], "%s/a%d" % (tmp, n))
+        b = render(lab["number"], p["name"], ["%s=%s" % kv for kv in fix["values"].items()], "%s/b%d" % (tmp, n))
+        n += 1
+        share = differing(a, b, 0, 0, W, H)
+        print("%-55s against '%s': %6.2f %% of the pixels differ" % (where, fix["name"], 100 * share))
+        known = "%d:%s" % (lab["number"], p["name"]) in BELOW
+        if known != (share < 0.02) or share < 0.001:
+            bad.append("%s against '%s': %.2f %% (%s)" % (where, fix["name"], 100 * share,
+                                                      "listed as below 2 %" if known else "< 2 %"))
+assert n >= 20, n
+assert not bad, bad
+PY
     ;;
   preset_option)  # issue 35: render, check and the window take --preset (--set over it); an unknown one names the lab and its presets
     "$bin" render --lab 1 --preset acne --set shadow.slope_bias=1 --out "$tmp/acne" --width 64 --height 64 >/dev/null || fail "render --preset failed"

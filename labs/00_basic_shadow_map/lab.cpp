@@ -127,8 +127,9 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.presets = {
       {"acne", "No bias: surfaces shadow themselves in stripes.", {{"shadow.bias", "0"}},
        {.provokes = "acne", .fixed_by = "tutorial"}},
-      {"peter-panning", "A huge bias: shadows detach from the objects casting them.", {{"shadow.bias", "0.05"}},
-       {.provokes = "peter-panning", .fixed_by = "tutorial"}},
+      {"peter-panning", "A huge bias under a low light, seen from the thin plate's foot: its shadow detaches from it.",
+       {{"shadow.bias", "0.05"}, {"light.elevation", "20"}},
+       {.provokes = "peter-panning", .fixed_by = "tutorial"}, {.camera = "eye=-1.6,0.7,2.6 target=0.1,0.1,0.4 fov=40"}},
       {"tutorial", "The tutorial's constant bias of 0.005.", {{"shadow.bias", "0.005"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};

@@ -184,8 +184,9 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.presets = {
       {"acne", "No bias at all: stripes of self-shadowing.", {{"shadow.bias", "0"}, {"shadow.slope_bias", "0"}},
        {.provokes = "acne", .fixed_by = "tuned"}},
-      {"peter-panning", "A large bias: shadows detach from their casters.", {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}},
-       {.provokes = "peter-panning", .fixed_by = "tuned"}},
+      {"peter-panning", "A large bias under a low light, seen from the thin plate's foot: its shadow detaches from it.",
+       {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}, {"light.elevation", "20"}},
+       {.provokes = "peter-panning", .fixed_by = "tuned"}, {.camera = "eye=-1.6,0.7,2.6 target=0.1,0.1,0.4 fov=40"}},
       {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {

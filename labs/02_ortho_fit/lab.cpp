@@ -257,7 +257,7 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"straight down", "The light along -Y: a lookAt with up = +Y has no basis here.", {{"light.elevation", "90"}}},
       {"grazing", "A low light: the box's footprint along the light grows long.", {{"light.elevation", "12"}}},
       {"aliasing", "A 256^2 map: blocky, jagged edges; a loose box wastes the few texels there are.", {{"shadow.map_size", "256"}},
-       {.provokes = "aliasing", .fixed_by = "sharp"}},
+       {.provokes = "aliasing", .fixed_by = "sharp"}, {.camera = kShadowEdgeCamera}},
       {"sharp", "A 2048^2 map with the fitted box: fine edges.", {{"shadow.map_size", "2048"}}},
       {"far away", "The scene moved a million units along every axis: right with the local origin, broken without it.",
        {{"scene.offset_x", "-1e6"}, {"scene.offset_y", "1e6"}, {"scene.offset_z", "-1e6"}}},

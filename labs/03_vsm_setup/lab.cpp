@@ -250,7 +250,7 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"RG16F",
        "Half floats: z is rounded to 5e-4 and E[z^2] - E[z]^2 goes negative in places (red in the variance quad).",
        {{"vsm.format", "RG16F"}},
-       {.provokes = "negative variance", .fixed_by = "RG32F"}},
+       {.provokes = "negative variance", .fixed_by = "RG32F"}, {.camera = kShadowEdgeCamera}},
       {"grazing", "A low light: wide variance on the ground.", {{"light.elevation", "15"}}},
       {"RG32F", "The fix for RG16F: full floats keep E[z^2] - E[z]^2 >= 0.", {{"vsm.format", "RG32F"}}},
   };

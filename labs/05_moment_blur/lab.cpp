@@ -186,15 +186,15 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
       {"no blur", "Radius 0: no blur pass runs; edges show the map's texels.", {{"vsm.blur_radius", "0"}},
-       {.provokes = "aliasing", .fixed_by = "tuned"}},
+       {.provokes = "aliasing", .fixed_by = "tuned"}, {.camera = kShadowEdgeCamera}},
       {"soft",
        "Radius 8, sigma 4: wide penumbrae (and more light bleeding).",
        {{"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
-       {.provokes = "light bleeding", .fixed_by = "tuned"}},
+       {.provokes = "light bleeding", .fixed_by = "tuned"}, {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
       {"cut-off kernel",
        "Radius 2 with sigma 8: a box filter in disguise.",
        {{"vsm.blur_radius", "2"}, {"vsm.blur_sigma", "8"}},
-       {.provokes = "box-filter edges", .fixed_by = "tuned"}},
+       {.provokes = "box-filter edges", .fixed_by = "tuned"}, {.camera = kShadowEdgeCamera}},
       {"tuned", "The lab's defaults, radius 4 and sigma 2: soft edges, little bleeding.",
        {{"vsm.blur_radius", "4"}, {"vsm.blur_sigma", "2"}}},
       {"matched to the sun",

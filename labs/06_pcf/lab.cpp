@@ -243,7 +243,7 @@ Lab SHADOWLAB_LAB_MAKER() {
     lab.params.push_back(spec);
   lab.presets = {
       {"single tap", "1 x 1: the hard, jagged edge of lab 0.", {{"pcf.kernel", "1"}, {"pcf.hardware", "false"}},
-       {.provokes = "aliasing", .fixed_by = "lecture"}},
+       {.provokes = "aliasing", .fixed_by = "lecture"}, {.camera = kShadowEdgeCamera}},
       {"lecture", "3 x 3, as in the lecture.", {{"pcf.kernel", "3"}, {"pcf.hardware", "false"}}},
       {"wide", "9 x 9: wide soft edges, 81 taps per pixel.", {{"pcf.kernel", "9"}, {"pcf.hardware", "false"}}},
       {"hardware 2x2", "One sampler2DShadow tap: bilinear 2 x 2 PCF for free.", {{"pcf.kernel", "1"}, {"pcf.hardware", "true"}}},

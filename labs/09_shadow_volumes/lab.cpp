@@ -196,8 +196,10 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.params.push_back(*base.find("view.flat_normals"));  // the facets the volumes are extruded from
   lab.presets = {
       {"point light", "A point light among the objects.", {{"light.type", "point"}}},
-      {"z-pass", "Count the faces in front: right until the camera enters a volume.", {{"volume.method", "z-pass"}},
-       {.provokes = "z-pass failure"}},
+      {"z-pass", "Count the faces in front, the camera standing in the big box's shadow: every count is off by one, "
+       "so shadow and light swap.", {{"volume.method", "z-pass"}},
+       {.provokes = "z-pass failure", .fixed_by = "z-fail"}, {.camera = "eye=-4.2,0.5,0 target=0.5,0.3,-0.5 fov=60"}},
+      {"z-fail", "Count the faces behind (the default): right wherever the camera stands.", {{"volume.method", "z-fail"}}},
       {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}}},
       {"flat normals", "Each triangle in the colour of its face normal, computed by a geometry shader; the vertex "
        "normals as lines over it.", {{"view.flat_normals", "true"}, {"view.normals", "true"}}},

@@ -409,7 +409,9 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"plain rings", "No turbulence: the rings alone.", {{"noise.view", "wood"}, {"noise.turbulence", "0"}}},
       {"acne on wood", "Lab 1's acne under a grazing light, on the busy floor.",
        {{"noise.view", "wood"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"}},
-       {.provokes = "acne"}},
+       {.provokes = "acne", .fixed_by = "slope bias on wood"}},
+      {"slope bias on wood", "The same grazing light with lab 1's slope-scaled bias: the stripes go, the rings stay.",
+       {{"noise.view", "wood"}, {"shadow.slope_bias", "2"}}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {

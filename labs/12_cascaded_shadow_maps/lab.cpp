@@ -462,10 +462,12 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.params.push_back(slope);
   lab.presets = {
       {"uniform", "lambda = 0: equal depth per cascade; the near cascade is as coarse as the far ones.", {{"csm.lambda", "0"}},
-       {.provokes = "perspective aliasing"}},
+       {.provokes = "perspective aliasing", .fixed_by = "practical"}, {.camera = "eye=-4.5,0.8,4.5 target=-2.5,0,0 fov=50"}},
       {"logarithmic", "lambda = 1: equal far / near ratio; a tiny near cascade.", {{"csm.lambda", "1"}}},
       {"one cascade", "csm.count = 1: one map fitted to the view's slice of the scene.", {{"csm.count", "1"}},
-       {.provokes = "perspective aliasing"}},
+       {.provokes = "perspective aliasing", .fixed_by = "practical"}, {.camera = "eye=-4.5,0.8,4.5 target=-2.5,0,0 fov=50"}},
+      {"practical", "The lab's defaults: 4 cascades, lambda = 0.75 between uniform and logarithmic.",
+       {{"csm.count", "4"}, {"csm.lambda", "0.75"}}},
       {"show cascades", "Each pixel tinted by its cascade.", {{"csm.show_cascades", "true"}}},
       {"blend", "A blend band over the last 20 % of each cascade.", {{"csm.blend", "0.2"}}},
   };

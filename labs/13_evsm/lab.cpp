@@ -109,13 +109,21 @@ Lab SHADOWLAB_LAB_MAKER() {
     if (spec.key == "vsm.warp") spec.default_value = 1.0;  // exponential
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
   lab.presets = {
-      {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, for comparison.", {{"vsm.warp", "none"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
-      {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}}},
-      {"small c", "c = 5 (the RG16F limit): less sharpening, more bleeding.", {{"vsm.evsm_exponent", "5"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
-      {"half floats", "RG16F: c is clamped to 5.", {{"vsm.format", "RG16F"}},
-       {.provokes = "light bleeding", .fixed_by = "EVSM"}},
+      // The bleeding presets: on the stacked occluders the check grades, the moments blurred (radius 8,
+      // sigma 4) so that the light bleeding under the low occluder's shadow edge is wide enough to see.
+      {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, blurred wide, on the stacked occluders.",
+       {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+      {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}, {"vsm.format", "RG32F"}}},
+      {"small c", "c = 5 (the RG16F limit), blurred wide, on the stacked occluders: less sharpening, more bleeding.",
+       {{"vsm.evsm_exponent", "5"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+      {"half floats", "RG16F (c is clamped to 5), blurred wide, on the stacked occluders.",
+       {{"vsm.format", "RG16F"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {.provokes = "light bleeding", .fixed_by = "EVSM"},
+       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {
