@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/light.h"
-#include "renderer/params.h"
-#include "renderer/scene.h"
+#include "core/light.h"
+#include "core/params.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 

@@ -1,7 +1,7 @@
 // Panel widgets generated from parameter declarations: one declaration, one widget.
 #pragma once
 
-#include "renderer/params.h"
+#include "core/params.h"
 
 namespace shadowlab {
 
