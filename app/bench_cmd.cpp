@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
 #include "app/bench_baseline.h"

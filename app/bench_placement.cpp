@@ -9,7 +9,7 @@
 
 #include "app/bench_figures.h"
 #include "app/exit_codes.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "app/placement_sweep.h"
 #include "labs/registry.h"
 #include "renderer/context.h"

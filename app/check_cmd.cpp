@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "app/grade_report.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "grading/check.h"
 #include "grading/platform_process.h"
 #include "labs/registry.h"

@@ -14,7 +14,7 @@
 #include "app/check_cmd.h"
 #include "app/exit_codes.h"
 #include "app/grade_report.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "grading/submission.h"
 #include "grading/lab.h"
 #include "grading/platform_process.h"

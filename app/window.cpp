@@ -26,7 +26,7 @@
 #include "app/bench_figures.h"
 #include "app/camera_input.h"
 #include "app/exit_codes.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "app/imgui_gl.h"
 #include "app/input_script.h"
 #include "app/keys.h"

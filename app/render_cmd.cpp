@@ -1,4 +1,4 @@
-#include "app/headless.h"
+#include "app/render_cmd.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -12,6 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/command_options.h"
 #include "app/exit_codes.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
@@ -31,130 +32,6 @@
 namespace shadowlab {
 
 namespace fs = std::filesystem;
-
-Scene load_scene_or_default(const std::string& path) {
-  if (path.empty()) return make_default_scene();
-  std::vector<std::string> warnings;
-  Scene scene = load_gltf(path, {}, &warnings);
-  for (const std::string& w : warnings)
-    std::fprintf(stderr, "shadowlab: warning: %s: %s\n", printable(path, 400).c_str(), printable(w, 400).c_str());
-  return scene;
-}
-
-std::string one_line_error(const std::string& message) {
-  std::string m = message;
-  while (!m.empty() && m.back() == '\n') m.pop_back();
-  const auto nl = m.find('\n');
-  if (nl == std::string::npos || m.find('\n', nl + 1) != std::string::npos) return m;
-  return m.substr(0, nl) + " " + m.substr(nl + 1);
-}
-
-void prove_writable_folder(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw std::runtime_error(dir + ": cannot create the output folder" + (ec ? ": " + ec.message() : std::string()));
-  try {
-    platform::probe_writable(dir);
-  } catch (const platform::FileError& e) {
-    throw std::runtime_error(dir + ": the output folder is not writable: " + e.what());
-  }
-}
-
-void make_output_dir(const std::string& dir) {
-  prove_writable_folder(dir);
-  std::string holder;
-  bool locked = false;
-  try {
-    locked = platform::lock_folder(dir, &holder);
-  } catch (const platform::FileError& e) {
-    throw std::runtime_error(dir + ": cannot lock the output folder: " + e.what());
-  }
-  if (!locked)
-    throw std::runtime_error(dir + ": the output folder is in use by another shadowlab run" +
-                             (holder.empty() ? std::string() : " (process " + holder + ")") +
-                             "; wait for it to finish or choose another --out");
-}
-
-void apply_set_option(ParamSet& params, const std::string& assignment) {
-  try {
-    params.apply_assignment(assignment);
-  } catch (const std::exception& e) {
-    throw std::invalid_argument("--set " + assignment + ": " + e.what());
-  }
-}
-
-void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& name) {
-  if (name.empty()) return;
-  try {
-    apply_preset(params, find_preset(lab, name));
-  } catch (const std::exception& e) {
-    throw std::invalid_argument("--preset " + name + ": " + e.what());
-  }
-}
-
-OrbitCamera camera_option(const std::string& spec, const Bounds& bounds) {
-  const OrbitCamera framed = OrbitCamera::framing(bounds);
-  if (spec.empty()) return framed;
-  glm::vec3 eye = framed.eye(), target = framed.target;
-  float fov = framed.fov_y_deg;
-  std::istringstream words(spec);
-  std::string word;
-  auto bad = [&](const std::string& why) { return std::invalid_argument("--camera " + spec + ": " + word + ": " + why); };
-  auto number = [&](const std::string& text) {
-    std::size_t used = 0;
-    float v = 0.0f;
-    try {
-      v = std::stof(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != text.size() || !std::isfinite(v)) throw bad("'" + text + "' is not a number");
-    return v;
-  };
-  while (words >> word) {
-    const auto eq = word.find('=');
-    const std::string key = word.substr(0, eq), value = eq == std::string::npos ? "" : word.substr(eq + 1);
-    if (key == "eye" || key == "target") {
-      glm::vec3 v{0.0f};
-      std::istringstream parts(value);
-      std::string part;
-      int n = 0;
-      while (std::getline(parts, part, ',')) {
-        if (n == 3) throw bad("three numbers expected, x,y,z");
-        v[n++] = number(part);
-      }
-      if (n != 3) throw bad("three numbers expected, x,y,z");
-      (key == "eye" ? eye : target) = v;
-    } else if (key == "fov") {
-      fov = number(value);
-      if (fov < 1.0f || fov > 170.0f) throw bad("the field of view is 1-170 degrees");
-    } else {
-      throw bad("expected eye=x,y,z, target=x,y,z or fov=deg");
-    }
-  }
-  word = "eye, target";
-  if (glm::length(eye - target) < 1e-6f) throw bad("the eye and the target are the same point");
-  return OrbitCamera::looking(eye, target, fov, bounds);
-}
-
-void parse_size_option(const std::string& spec, int* width, int* height) {
-  const auto x = spec.find('x');
-  std::size_t used_w = 0, used_h = 0;
-  int w = 0, h = 0;
-  try {
-    if (x != std::string::npos) {
-      w = std::stoi(spec.substr(0, x), &used_w);
-      h = std::stoi(spec.substr(x + 1), &used_h);
-    }
-  } catch (const std::exception&) {
-    w = h = 0;
-  }
-  if (x == std::string::npos || used_w != x || used_h != spec.size() - x - 1 || w < 16 || h < 16 || w > 8192 || h > 8192)
-    throw std::invalid_argument("--size " + spec + ": expected WxH, each 16-8192 pixels (e.g. 1280x720)");
-  *width = w;
-  *height = h;
-}
 
 namespace {
 
@@ -309,60 +186,6 @@ int run_render(const RenderOptions& options) {
     std::fprintf(stderr, "shadowlab render: %s\n", one_line_error(e.what()).c_str());
     return usage_checked ? kExitRuntime : kExitUsage;
   }
-}
-
-namespace {
-
-// A lab's presets as `labs --presets --json` lists them: what each sets, the artifact it provokes and the
-// preset that fixes it (null where there is none), in the lab's order.
-nlohmann::json presets_json(const Lab& lab) {
-  nlohmann::json presets = nlohmann::json::array();
-  const auto or_null = [](const std::string& s) { return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s); };
-  for (const auto& p : lab.presets)
-    presets.push_back({{"name", p.name}, {"description", p.description}, {"values", p.values},
-                       {"provokes", or_null(p.artifact.provokes)}, {"fixed_by", or_null(p.artifact.fixed_by)}});
-  return presets;
-}
-
-}  // namespace
-
-int run_list_labs(bool show_params, bool json, bool show_presets) {
-  if (json) {  // for scripts (graders, the corpus test, lecture pictures): what each lab consists of
-    nlohmann::json labs = nlohmann::json::array();
-    for (const auto& lab : all_labs()) {
-      labs.push_back({{"number", lab.number}, {"slug", lab.slug}, {"folder", lab.folder()}, {"title", lab.title},
-                      {"exercise_files", lab.exercise_files}, {"solution_files", lab.solution_files},
-                      {"offered_includes", lab.offered_includes}, {"has_check", static_cast<bool>(lab.check)}});
-      if (show_presets) labs.back()["presets"] = presets_json(lab);
-    }
-    std::printf("%s\n", nlohmann::json{{"labs", labs}}.dump(2).c_str());
-    return 0;
-  }
-  for (const auto& lab : all_labs()) {
-    std::printf("%2d  %-22s %s\n", lab.number, lab.title.c_str(), lab.summary.c_str());
-    if (show_presets) {
-      for (const auto& p : lab.presets) {
-        std::string artifact;
-        if (!p.artifact.provokes.empty()) artifact = "  [" + p.artifact.provokes + "]";
-        if (!p.artifact.fixed_by.empty()) artifact += " fixed by '" + p.artifact.fixed_by + "'";
-        std::printf("      --preset '%s'%s  %s\n", p.name.c_str(), artifact.c_str(), p.description.c_str());
-      }
-    }
-    if (!show_params) continue;
-    const ParamSet params = lab_params(lab);
-    for (const auto& s : params.specs()) {
-      std::string range;
-      if (s.kind == ParamKind::Choice) {
-        for (const auto& c : s.choices) range += (range.empty() ? "" : "|") + c;
-      } else if (s.kind == ParamKind::Bool) {
-        range = "true|false";
-      } else {
-        range = std::to_string(s.min) + ".." + std::to_string(s.max);
-      }
-      std::printf("      --set %s=%s  [%s]  %s\n", s.key.c_str(), params.format(s.key).c_str(), range.c_str(), s.label.c_str());
-    }
-  }
-  return 0;
 }
 
 }  // namespace shadowlab

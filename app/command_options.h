@@ -1,9 +1,8 @@
-// Headless commands: render, labs. They share one renderer with the window; only the context differs.
+// What the commands share (render, check, bench, grade and the window): the scene of --scene, the output
+// folder of --out, errors as one line for the terminal, and the options --set, --preset, --camera, --size.
 #pragma once
 
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "core/light.h"
 #include "core/params.h"
@@ -12,26 +11,6 @@
 namespace shadowlab {
 
 struct Lab;
-
-struct RenderOptions {
-  int lab = 0;
-  std::string scene_file;  // empty: the built-in default scene
-  std::string preset;                    // --preset NAME: one of the lab's presets, under --set
-  std::vector<std::string> assignments;  // --set key=value
-  std::string camera;  // --camera "eye=x,y,z target=x,y,z fov=deg" (empty: the scene framed)
-  int width = 1280;
-  int height = 720;
-  std::string out_dir;
-  bool buffers = false;
-  std::string impl = "solution";
-  // Draw the window's panel (the same code, ImGui offscreen) over final.png, for reproducible
-  // documentation pictures; with panel_check the lab's Check runs first and its result is shown.
-  bool panel = false;
-  bool panel_check = false;
-  std::string bench_file;  // with panel: the Speed against error window on this bench.json
-  bool penumbra = false;   // with panel: the Penumbra error window, measured on this frame
-  float ui_scale = 1.0f;   // with panel: the text and widget scale (2: as on a 200 % monitor)
-};
 
 // Loads --scene or builds the default scene; throws with a message naming the file on failure. What
 // the glTF specification says to ignore is ignored with a warning on stderr.
@@ -60,10 +39,5 @@ void apply_preset_option(ParamSet& params, const Lab& lab, const std::string& na
 OrbitCamera camera_option(const std::string& spec, const Bounds& bounds);
 // `--size WxH` (the window): throws std::invalid_argument unless both are 16-8192.
 void parse_size_option(const std::string& spec, int* width, int* height);
-// Exit codes (app/exit_codes.h): 0 written; 2 the command line cannot be used as given; 3 runtime error.
-int run_render(const RenderOptions& options);
-// `shadowlab labs`: every lab, with --params its parameters, with --presets its presets (the artifact each
-// provokes and the preset that fixes it); as JSON with --json.
-int run_list_labs(bool show_params, bool json = false, bool show_presets = false);
 
 }  // namespace shadowlab
