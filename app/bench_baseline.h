@@ -9,7 +9,7 @@
 
 #include "renderer/gl_objects.h"
 #include "renderer/gpu_mesh.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 

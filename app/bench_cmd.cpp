@@ -13,19 +13,20 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_codes.h"
-#include "app/headless.h"
+#include "app/command_options.h"
 #include "app/imgui_offscreen.h"
 #include "app/panel_lab.h"
 #include "app/bench_baseline.h"
 #include "app/bench_plot.h"
-#include "labs/check.h"
+#include "grading/check.h"
 #include "app/bench_figures.h"
+#include "labs/registry.h"
 #include "renderer/context.h"
-#include "renderer/gltf_loader.h"
-#include "renderer/image_io.h"
-#include "renderer/platform.h"
-#include "renderer/soft_truth.h"
-#include "renderer/vsm_params.h"
+#include "core/gltf_loader.h"
+#include "core/image_io.h"
+#include "core/platform.h"
+#include "oracle/soft_truth.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 
@@ -71,7 +72,7 @@ struct BenchPoint {
 // The suns with a size the benchmark grades every frame against, angular diameters in degrees: small
 // (twice the real sun's 0.53) and large (a lamp a metre wide 11 m away).
 constexpr float kBenchSunDegrees[] = {1.0f, 5.0f};
-constexpr int kSoftStrata = 16;  // their samples per pixel: 16 x 16 (renderer/soft_truth.h states its error)
+constexpr int kSoftStrata = 16;  // their samples per pixel: 16 x 16 (oracle/soft_truth.h states its error)
 // Their truths on one scene's frame: every technique of a scene draws the same G-buffer under the same
 // sun, so they are made once per scene (and again should a technique's frame or light differ).
 struct SizedTruths {

@@ -15,7 +15,7 @@ struct BenchOptions {
   // Only the frame-cost figures (every lab's frame against its lit pass, lab 6 against the bare
   // two-pass baseline): frame_cost.json, in about half a minute.
   bool frame_cost_only = false;
-  // Only the soft truth's cost (renderer/soft_truth.h) on every scene: soft_truth.json.
+  // Only the soft truth's cost (oracle/soft_truth.h) on every scene: soft_truth.json.
   bool soft_truth_only = false;
   // Only the placement figures (app/bench_placement.h): every technique over offsets and scales, and the
   // frame cost with the local origin against without it; placement.json. --quick: the CI test's sample.

@@ -6,8 +6,8 @@
 #include <chrono>
 
 #include "renderer/moments_pass.h"
-#include "renderer/technique_params.h"
-#include "renderer/vsm_params.h"
+#include "core/technique_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/oracle.h"
-#include "renderer/params.h"
+#include "oracle/oracle.h"
+#include "core/params.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {

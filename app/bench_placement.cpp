@@ -9,13 +9,14 @@
 
 #include "app/bench_figures.h"
 #include "app/exit_codes.h"
-#include "app/headless.h"
-#include "labs/placement_sweep.h"
+#include "app/command_options.h"
+#include "app/placement_sweep.h"
+#include "labs/registry.h"
 #include "renderer/context.h"
 #include "renderer/gl.h"
-#include "renderer/gltf_loader.h"
-#include "renderer/image_io.h"
-#include "renderer/platform.h"
+#include "core/gltf_loader.h"
+#include "core/image_io.h"
+#include "core/platform.h"
 #include "renderer/shader.h"
 
 namespace shadowlab {

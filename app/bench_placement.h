@@ -1,4 +1,4 @@
-// `shadowlab bench --placement`: the whole offset x scale grid of labs/placement_sweep.h for every
+// `shadowlab bench --placement`: the whole offset x scale grid of app/placement_sweep.h for every
 // technique (a table: each technique's error at the origin and its worst difference over offsets and over
 // scales, and without the local origin at 1e6), and the frame cost with the local origin against
 // without it, side by side in one run. Writes placement.json.

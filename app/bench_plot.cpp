@@ -8,8 +8,8 @@
 #include <imgui_stdlib.h>
 #include <nlohmann/json.hpp>
 
-#include "renderer/platform.h"
-#include "renderer/untrusted.h"
+#include "core/platform.h"
+#include "core/untrusted.h"
 
 namespace shadowlab {
 

@@ -2,8 +2,8 @@
 // happens while ImGui wants the mouse (a slider being dragged, the cursor over the panel).
 #pragma once
 
-#include "renderer/light.h"
-#include "renderer/scene.h"
+#include "core/light.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 

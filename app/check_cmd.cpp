@@ -7,11 +7,12 @@
 #include <sstream>
 
 #include "app/grade_report.h"
-#include "app/headless.h"
-#include "labs/check.h"
-#include "labs/platform_process.h"
+#include "app/command_options.h"
+#include "grading/check.h"
+#include "grading/platform_process.h"
+#include "labs/registry.h"
 #include "renderer/context.h"
-#include "renderer/image_io.h"
+#include "core/image_io.h"
 
 namespace shadowlab {
 

@@ -14,11 +14,12 @@
 #include "app/check_cmd.h"
 #include "app/exit_codes.h"
 #include "app/grade_report.h"
-#include "app/headless.h"
-#include "app/submission.h"
-#include "labs/lab.h"
-#include "labs/platform_process.h"
-#include "renderer/platform.h"
+#include "app/command_options.h"
+#include "grading/submission.h"
+#include "grading/lab.h"
+#include "grading/platform_process.h"
+#include "labs/registry.h"
+#include "core/platform.h"
 
 // Sanitizer builds reserve terabytes of address space (ASan's shadow memory): no RLIMIT_AS there.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)

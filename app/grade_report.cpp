@@ -12,8 +12,9 @@
 #include <stdexcept>
 
 
-#include "labs/lab.h"
-#include "renderer/image_io.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
+#include "core/image_io.h"
 
 namespace shadowlab {
 

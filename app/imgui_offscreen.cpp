@@ -6,7 +6,7 @@
 #include "app/imgui_gl.h"
 #include "renderer/gl.h"
 #include "renderer/gl_objects.h"
-#include "renderer/image_io.h"
+#include "core/image_io.h"
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 

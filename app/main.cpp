@@ -12,7 +12,8 @@
 #include "app/check_cmd.h"
 #include "app/exit_codes.h"
 #include "app/grade_cmd.h"
-#include "app/headless.h"
+#include "app/labs_cmd.h"
+#include "app/render_cmd.h"
 #include "app/panel_lab.h"
 #include "app/window.h"
 

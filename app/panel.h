@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "renderer/params.h"
+#include "core/params.h"
 
 namespace shadowlab {
 

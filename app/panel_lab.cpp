@@ -12,8 +12,9 @@
 #include "app/panel.h"
 #include "app/settings_panel.h"
 #include "app/stats_text.h"
+#include "labs/registry.h"
 #include "renderer/shader.h"
-#include "renderer/untrusted.h"
+#include "core/untrusted.h"
 
 namespace shadowlab {
 

@@ -11,9 +11,9 @@
 #include "app/markdown.h"
 #include "app/penumbra_view.h"
 #include "app/ui_fonts.h"
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "renderer/params.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "core/params.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {

@@ -8,8 +8,8 @@
 
 #include "app/imgui_gl.h"
 #include "app/view_annotations.h"
-#include "labs/check.h"
-#include "renderer/soft_truth.h"
+#include "grading/check.h"
+#include "oracle/soft_truth.h"
 
 namespace shadowlab {
 

@@ -1,5 +1,5 @@
 // The window's "Penumbra error" view: the current frame against the exact penumbra of the light's size
-// (renderer/soft_truth.h), as the diff image the checks write (metrics.h soft_diff_image: grey is the true
+// (oracle/soft_truth.h), as the diff image the checks write (metrics.h soft_diff_image: grey is the true
 // visible fraction, red where drawn too dark, blue where drawn too light) and its figures. The truth
 // costs 17 to 256 shadow rays per pixel (0.05-0.4 s for 640 x 360 on llvmpipe's machine), so it is
 // measured when asked (a button, or `render --panel --penumbra`), never every frame; the window says
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "renderer/gl_objects.h"
-#include "renderer/metrics.h"
-#include "renderer/oracle.h"
-#include "renderer/params.h"
+#include "oracle/metrics.h"
+#include "oracle/oracle.h"
+#include "core/params.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {

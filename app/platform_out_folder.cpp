@@ -17,7 +17,7 @@
 #endif
 
 #include "app/grade_report.h"  // report_text: a planted name shown escaped
-#include "renderer/image_io.h"   // write_text_atomic (the by-path branch)
+#include "core/image_io.h"   // write_text_atomic (the by-path branch)
 
 namespace shadowlab {
 

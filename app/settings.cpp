@@ -6,8 +6,8 @@
 #include <ctime>
 #include <stdexcept>
 
-#include "renderer/platform.h"
-#include "renderer/untrusted.h"
+#include "core/platform.h"
+#include "core/untrusted.h"
 
 namespace shadowlab {
 

@@ -33,8 +33,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/light.h"
-#include "renderer/params.h"
+#include "core/light.h"
+#include "core/params.h"
 
 namespace shadowlab {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "app/settings.h"
-#include "renderer/params.h"
+#include "core/params.h"
 
 namespace shadowlab {
 

@@ -33,7 +33,7 @@ function(shadowlab_link_pkg name module found_var)
   set(${found_var} ${found} PARENT_SCOPE)
 endfunction()
 
-# A library that ships headers only needs its implementation compiled once: renderer/third_party.cpp
+# A library that ships headers only needs its implementation compiled once: core/third_party.cpp
 # does it for the ones listed here (compile definitions SHADOWLAB_<NAME>_IMPLEMENTATION).
 set(SHADOWLAB_THIRD_PARTY_DEFS "")
 
@@ -104,7 +104,7 @@ endif()
 
 # --- Embree 3 or 4 ---------------------------------------------------------------------------------------
 # Both export the CMake package `embree` with the target `embree`. Embree 4 first (Debian 13, Ubuntu 24.04,
-# Homebrew, vcpkg ship only 4); renderer/oracle.cpp holds the one seam between their APIs.
+# Homebrew, vcpkg ship only 4); oracle/oracle.cpp holds the one seam between their APIs.
 shadowlab_interface(embree)
 set(SHADOWLAB_EMBREE "AUTO" CACHE STRING "Embree major version to use: AUTO (4, else 3), 3 or 4")
 set_property(CACHE SHADOWLAB_EMBREE PROPERTY STRINGS AUTO 3 4)

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "renderer/params.h"
+#include "core/params.h"
 #include "renderer/renderer.h"
 
 namespace shadowlab {

@@ -13,9 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "renderer/gl_objects.h"
-#include "renderer/params.h"
-#include "renderer/placement.h"
-#include "renderer/scene.h"
+#include "core/params.h"
+#include "core/placement.h"
+#include "core/scene.h"
 #include "renderer/shader.h"
 
 namespace shadowlab {

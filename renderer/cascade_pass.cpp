@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "renderer/image_io.h"
+#include "core/image_io.h"
 #include "renderer/lit_pass.h"
 
 namespace shadowlab {

@@ -1,5 +1,5 @@
 // Cascaded shadow maps of a directional light (lab 12): the camera's view range split into csm.count
-// slices, each with an ortho light box of its own (renderer/cascades.h: the splits and the fit, a
+// slices, each with an ortho light box of its own (core/cascades.h: the splits and the fit, a
 // feature's or the solution's), drawn into one layer each of a depth texture array (GL_TEXTURE_2D_ARRAY,
 // core since 3.0). The cascades share the texels of one shadow.map_size map. The lit pass picks the
 // cascade per pixel by view depth (shaders/csm/visibility.glsl).
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/cascades.h"
+#include "core/cascades.h"
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {

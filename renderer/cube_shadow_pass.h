@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/light.h"
+#include "core/light.h"
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {

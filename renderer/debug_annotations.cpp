@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "renderer/metrics.h"
-#include "renderer/technique_params.h"
+#include "oracle/metrics.h"
+#include "core/technique_params.h"
 
 namespace shadowlab {
 

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/params.h"
+#include "core/params.h"
 
 namespace shadowlab {
 
@@ -77,7 +77,7 @@ ColourLegend remap_view_legend();
 std::vector<std::pair<std::string, std::string>> cascade_view_defines();
 std::vector<std::pair<std::string, std::string>> remap_view_defines();
 
-// The Penumbra error view (soft_diff_image, renderer/metrics.h): the signed error from -kSoftDiffFullError
+// The Penumbra error view (soft_diff_image, oracle/metrics.h): the signed error from -kSoftDiffFullError
 // (drawn too dark) to +kSoftDiffFullError (too light), over a fully lit surface.
 ColourLegend penumbra_error_legend();
 

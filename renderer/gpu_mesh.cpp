@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-#include "renderer/light.h"
+#include "core/light.h"
 
 namespace shadowlab {
 

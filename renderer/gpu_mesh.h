@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/gl_objects.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 

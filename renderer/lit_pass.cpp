@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "renderer/image_io.h"
+#include "core/image_io.h"
 #include "renderer/debug_annotations.h"
-#include "renderer/technique_params.h"
+#include "core/technique_params.h"
 
 namespace shadowlab {
 

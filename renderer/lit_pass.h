@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "renderer/oracle.h"
+#include "oracle/oracle.h"
 #include "renderer/renderer.h"
 #include "renderer/shadow_pass.h"
 
@@ -25,7 +25,7 @@ namespace shadowlab {
 class LitPass {
  public:
   // Builds these variants' programs (plain and G-buffer; with `flashlight` the lit one lit by the
-  // flashlight too: the FLASHLIGHT define, renderer/flashlight.h; with `own_shadow_coords`, those whose
+  // flashlight too: the FLASHLIGHT define, core/flashlight.h; with `own_shadow_coords`, those whose
   // shadow test is the lab's, without the renderer's mapping into the shadow map: see
   // Features::own_shadow_coords); false keeps the old programs (the error is in them). Programs of other
   // variants stay until keep_only().

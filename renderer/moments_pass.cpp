@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "renderer/lit_pass.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -82,7 +82,7 @@ class MomentsPass final : public ShadowPass {
   MomentsPass();
   static std::map<std::string, std::string> default_includes(LightType light);
 
-  // The shadow technique: the vsm.* parameters apply (renderer/vsm_params.h).
+  // The shadow technique: the vsm.* parameters apply (core/vsm_params.h).
   const Shape& shape() const override {
     static const Shape moments{true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}};
     return moments;

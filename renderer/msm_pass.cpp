@@ -1,6 +1,6 @@
 #include "renderer/msm_pass.h"
 
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -9,11 +9,11 @@
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/debug_views.h"
 #include "renderer/depth_map_pass.h"
-#include "renderer/flashlight.h"
+#include "core/flashlight.h"
 #include "renderer/lit_pass.h"
 #include "renderer/moments_pass.h"
 #include "renderer/shadow_volume_pass.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -19,22 +19,22 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/cascades.h"
+#include "core/cascades.h"
 #include "renderer/debug_annotations.h"
-#include "renderer/frame_light.h"
+#include "core/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gl_objects.h"
 #include "renderer/gpu_mesh.h"
-#include "renderer/light.h"
-#include "renderer/oracle.h"
-#include "renderer/params.h"
+#include "core/light.h"
+#include "oracle/oracle.h"
+#include "core/params.h"
 #include "renderer/pass_timer.h"
-#include "renderer/placement.h"
-#include "renderer/scene.h"
+#include "core/placement.h"
+#include "core/scene.h"
 #include "renderer/shader.h"
 #include "renderer/shadow_pass.h"
 #include "renderer/shadow_passes.h"
-#include "renderer/technique_params.h"
+#include "core/technique_params.h"
 
 namespace shadowlab {
 
@@ -60,16 +60,16 @@ struct Features {
   // Front-, back- or no culling in the shadow pass (0, 1, 2), when something other than the shadow.cull
   // parameter decides it (e.g. a directive in an included file).
   std::function<int()> shadow_cull_override;
-  // What the shadow pass stores. Moments: the vsm.* parameters apply (renderer/vsm_params.h), and
+  // What the shadow pass stores. Moments: the vsm.* parameters apply (core/vsm_params.h), and
   // "lab/moments.glsl", "lab/chebyshev.glsl", "lab/blur.glsl" with it. ShadowVolumes: "lab/volume.glsl"
-  // (what a triangle emits) and the volume.* parameters (renderer/technique_params.h).
+  // (what a triangle emits) and the volume.* parameters (core/technique_params.h).
   ShadowTechnique technique = ShadowTechnique::Depth;
   // A fixed light type; unset, the light.type parameter decides (directional where it is not declared).
   // Spot and point lights stand at light.position_*; a spot aims at the scene's centre with the
   // half-angle light.cone_deg.
   std::optional<LightType> light;
   // Cascaded shadow maps: the split distances and each cascade's light box (empty: the solution's,
-  // renderer/cascades.h).
+  // core/cascades.h).
   CascadeSplitFn cascade_splits;
   CascadeFitFn cascade_fit;
   // The surfaces' material in the lit pass: "lab/material.glsl" (default shaders/material/plain.glsl,
@@ -88,7 +88,7 @@ struct Features {
   // alpha test. Their size and cutoff are the billboard.* parameters (billboard_param_specs). With the
   // depth-map technique only.
   std::vector<glm::vec3> billboards;
-  // A second shadowed light, the flashlight (renderer/flashlight.h: a spot on a node circling the scene or
+  // A second shadowed light, the flashlight (core/flashlight.h: a spot on a node circling the scene or
   // on the camera, the flashlight.* parameters): its own perspective depth map, redrawn only when it, its
   // casters or its map's settings change; the lit pass combines both lights' terms in "lab/combine.glsl"
   // (default shaders/shadow/combine_lights.glsl). With the techniques that have a map (not shadow
@@ -99,7 +99,7 @@ struct Features {
   // (kOwnShadowCoordsDefine): none of what would hand it that mapping is in them, not
   // shaders/shadow/common.glsl's shadow_coords() and outside_shadow_map(), nor lit.vert's interpolated
   // v_light_tex, nor u_light_tex_matrix, which the lit pass then leaves unset (a test that declares it
-  // reads zeros). Probes (labs/probe.h) compile the lab's test the same way.
+  // reads zeros). Probes (grading/probe.h) compile the lab's test the same way.
   bool own_shadow_coords = false;
 };
 
@@ -141,10 +141,10 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // The scene in its own frame. The scene.* parameters place it in the world (renderer/placement.h);
+  // The scene in its own frame. The scene.* parameters place it in the world (core/placement.h);
   // the GPU gets it in the local frame, converted in double whenever the placement changes.
   // The scene drawn is the one given plus what the parameters add: a ground plane when scene.ground is on
-  // and the scene has none of its own (has_ground, renderer/scene.h), and BLEND meshes as casters or not
+  // and the scene has none of its own (has_ground, core/scene.h), and BLEND meshes as casters or not
   // (scene.blend_casts); scene() is that scene (the oracle's), source_scene() the one given.
   void set_scene(const Scene& scene);
   const Scene& scene() const { return scene_; }

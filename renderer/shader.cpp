@@ -1,6 +1,6 @@
 #include "renderer/shader.h"
 
-#include "renderer/platform.h"
+#include "core/platform.h"
 
 #include <cstdlib>
 #include <fstream>

@@ -23,9 +23,9 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/cascades.h"
+#include "core/cascades.h"
 #include "renderer/debug_annotations.h"
-#include "renderer/frame_light.h"
+#include "core/frame_light.h"
 #include "renderer/frame_stats.h"
 #include "renderer/gpu_mesh.h"
 #include "renderer/pass_timer.h"
@@ -99,7 +99,7 @@ struct PassContext {
   const CascadeFitFn* cascade_fit = nullptr;
   // The features' billboards (null: none), which the depth map's pass draws after the casters.
   BillboardPass* billboards = nullptr;
-  // The flashlight beside the frame's light (renderer/flashlight.h): its light and its map's pass (null:
+  // The flashlight beside the frame's light (core/flashlight.h): its light and its map's pass (null:
   // no flashlight). The lit pass reads its map on texture unit kFlashlightUnit.
   const FrameLight* flashlight = nullptr;
   ShadowPass* flashlight_pass = nullptr;

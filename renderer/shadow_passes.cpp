@@ -6,7 +6,7 @@
 #include "renderer/cascade_pass.h"
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/depth_map_pass.h"
-#include "renderer/image_io.h"
+#include "core/image_io.h"
 #include "renderer/moments_pass.h"
 #include "renderer/msm_pass.h"
 #include "renderer/shadow_volume_pass.h"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "renderer/technique_params.h"
+#include "core/technique_params.h"
 
 namespace shadowlab {
 

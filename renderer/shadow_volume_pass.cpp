@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "renderer/adjacency.h"
+#include "core/adjacency.h"
 #include "renderer/lit_pass.h"
 
 namespace shadowlab {

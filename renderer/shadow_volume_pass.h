@@ -9,7 +9,7 @@
 //
 // The camera's projection has its far plane at infinity, so volume sides and far caps at w = 0 are
 // never clipped; GL_DEPTH_CLAMP keeps their depth at 1 exactly. Meshes are welded and given adjacency
-// once per scene (renderer/adjacency.h); open, non-manifold and inconsistently wound edges are counted
+// once per scene (core/adjacency.h); open, non-manifold and inconsistently wound edges are counted
 // per mesh and reported, not hidden. The renderer creates this pass only while a feature uses shadow
 // volumes or the volume wireframe view is on.
 //
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {

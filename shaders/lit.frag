@@ -12,7 +12,7 @@
 #include "lab/visibility.glsl"
 #include "lab/material.glsl"
 #ifdef FLASHLIGHT
-// A second shadowed light, the flashlight (renderer/flashlight.h): its own map and test, and the lab's
+// A second shadowed light, the flashlight (core/flashlight.h): its own map and test, and the lab's
 // combination of both lights' terms.
 #include "shadow/flashlight.glsl"
 #include "lab/combine.glsl"

@@ -1,4 +1,4 @@
-// What the grading sandbox (labs/sandbox.h) costs a C++ lab's check, measured side by side in one run:
+// What the grading sandbox (grading/sandbox.h) costs a C++ lab's check, measured side by side in one run:
 //   bench_sandbox SHADOWLAB_BINARY [RUNS]
 // For labs 2 and 12, with a right answer of the exam corpus as the submission:
 // - the lab's whole check (`shadowlab check --lab N --submission DIR`, sandbox included), median of RUNS;
@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "labs/platform_process.h"
-#include "labs/sandbox.h"
+#include "grading/platform_process.h"
+#include "grading/sandbox.h"
 
 namespace fs = std::filesystem;
 using namespace shadowlab::platform;

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {

@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 
 namespace shadowlab::test {
 

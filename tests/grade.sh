@@ -92,7 +92,7 @@ case "$case_name" in
     mkdir -p "$tmp/subs/solution/labs/02_ortho_fit" "$tmp/subs/include/labs/02_ortho_fit" "$tmp/subs/ctor/labs/02_ortho_fit"
     printf '#include "labs/02_ortho_fit/ortho_fit.h"\nnamespace shadowlab {\nLightView ortho_fit_exercise(const Bounds& b, const glm::vec3& d) { return fit_light_ortho(b, d); }\n}\n' \
       >"$tmp/subs/solution/labs/02_ortho_fit/exercise.cpp"
-    sed '1i #include "renderer/light.cpp"' "$tmp/subs/right/labs/02_ortho_fit/exercise.cpp" >"$tmp/subs/include/labs/02_ortho_fit/exercise.cpp"
+    sed '1i #include "core/light.cpp"' "$tmp/subs/right/labs/02_ortho_fit/exercise.cpp" >"$tmp/subs/include/labs/02_ortho_fit/exercise.cpp"
     sed '1i #include <vector>\nstatic std::vector<int> table(64);' "$tmp/subs/right/labs/02_ortho_fit/exercise.cpp" >"$tmp/subs/ctor/labs/02_ortho_fit/exercise.cpp"
     while IFS='|' read -r name status words; do
       "$bin" check --lab 2 --impl exercise --submission "$tmp/subs/$name" --json "$tmp/$name.json" >"$tmp/out" 2>&1

@@ -212,7 +212,7 @@ def cpp_attack(out, subs, kind):
         text = head + right + b"\nextern \"C\" int dup(int fd) {" + escape + b"  return fcntl(fd, F_DUPFD, 0);\n}\n"
         labs2 = ("compile_error", ["defines dup"])
     elif kind == "cpp_digraph_include":
-        text, labs2 = b'%:include "renderer/light.cpp"\n' + right, ("compile_error", ["renderer/light.cpp: No such file"])
+        text, labs2 = b'%:include "core/light.cpp"\n' + right, ("compile_error", ["core/light.cpp: No such file"])
     elif kind == "cpp_escape_at_call":
         at = right.index(b"{", right.index(b"ortho_fit_exercise(")) + 1
         text, labs2 = head + right[:at] + escape + right[at:], ("crashed", ["SIGSYS"])

@@ -2,7 +2,7 @@
 // edges counted.
 #include <gtest/gtest.h>
 
-#include "renderer/adjacency.h"
+#include "core/adjacency.h"
 
 namespace shadowlab {
 namespace {

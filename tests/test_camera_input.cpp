@@ -7,7 +7,7 @@
 
 #include "app/camera_input.h"
 #include "tests/imgui_fixture.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 namespace {

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "renderer/debug_annotations.h"
-#include "renderer/metrics.h"
-#include "renderer/technique_params.h"
+#include "oracle/metrics.h"
+#include "core/technique_params.h"
 
 namespace shadowlab {
 namespace {

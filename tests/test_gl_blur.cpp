@@ -13,7 +13,7 @@
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/renderer.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

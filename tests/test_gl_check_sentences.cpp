@@ -6,8 +6,8 @@
 
 #include <stdexcept>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
 
 namespace shadowlab {
 namespace {

@@ -8,9 +8,10 @@
 #include <set>
 #include <vector>
 
-#include "labs/lab.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/renderer.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

@@ -1,4 +1,4 @@
-// Headless GL tests of the flashlight beside the sun (renderer/flashlight.h): each light has its own map,
+// Headless GL tests of the flashlight beside the sun (core/flashlight.h): each light has its own map,
 // the sun's map is not drawn again while only the flashlight moves (the skip counters), the flashlight's
 // shadows agree with the ray-cast oracle cast toward it, and with the flashlight off the picture is the
 // one-light picture.
@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <memory>
 
-#include "renderer/flashlight.h"
-#include "renderer/oracle.h"
+#include "core/flashlight.h"
+#include "oracle/oracle.h"
 #include "renderer/renderer.h"
 #include "tests/gl_fixture.h"
 

@@ -18,7 +18,7 @@
 
 #include "renderer/debug_views.h"
 #include "renderer/gpu_mesh.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "renderer/shader.h"
 #include "tests/gl_fixture.h"
 #include "tests/test_util.h"

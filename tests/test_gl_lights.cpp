@@ -8,10 +8,11 @@
 #include <limits>
 #include <map>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/gl_objects.h"
-#include "renderer/metrics.h"
+#include "oracle/metrics.h"
 #include "renderer/renderer.h"
 #include "renderer/shadow_volume_pass.h"
 #include "tests/gl_fixture.h"

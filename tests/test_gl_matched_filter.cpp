@@ -12,11 +12,12 @@
 #include <map>
 #include <string>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/renderer.h"
-#include "renderer/scene.h"
-#include "renderer/soft_truth.h"
+#include "core/scene.h"
+#include "oracle/soft_truth.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

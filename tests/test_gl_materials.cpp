@@ -10,12 +10,13 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/billboards.h"
-#include "renderer/gltf_loader.h"
-#include "renderer/metrics.h"
-#include "renderer/oracle.h"
+#include "core/gltf_loader.h"
+#include "oracle/metrics.h"
+#include "oracle/oracle.h"
 #include "renderer/renderer.h"
 #include "tests/gl_fixture.h"
 

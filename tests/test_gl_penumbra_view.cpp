@@ -7,9 +7,10 @@
 #include <cstdio>
 
 #include "app/penumbra_view.h"
-#include "labs/lab.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/renderer.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

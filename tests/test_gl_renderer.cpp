@@ -8,9 +8,10 @@
 #include <fstream>
 #include <random>
 
-#include "labs/lab.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/gl_objects.h"
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 #include "renderer/renderer.h"
 #include "tests/alloc_count.h"
 #include "tests/gl_fixture.h"

@@ -11,10 +11,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "renderer/renderer.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "renderer/shader.h"
 #include "tests/gl_fixture.h"
 

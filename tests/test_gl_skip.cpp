@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "renderer/renderer.h"
-#include "renderer/technique_params.h"
-#include "renderer/vsm_params.h"
+#include "core/technique_params.h"
+#include "core/vsm_params.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

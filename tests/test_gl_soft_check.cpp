@@ -1,5 +1,5 @@
 // Lights with a size (light.size) in the checks: size 0 is today's hard light, every check figure the
-// same; a sized light grades against the soft truth (labs/check.h: kSoftTruthStrata), and a hard shadow
+// same; a sized light grades against the soft truth (grading/check.h: kSoftTruthStrata), and a hard shadow
 // map fails its penumbra.
 #include <gtest/gtest.h>
 
@@ -10,11 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "renderer/oracle.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
+#include "oracle/oracle.h"
 #include "renderer/renderer.h"
-#include "renderer/scene.h"
+#include "core/scene.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

@@ -15,11 +15,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/stats_text.h"
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/placement_sweep.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "app/placement_sweep.h"
+#include "labs/registry.h"
 #include "renderer/moments_pass.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

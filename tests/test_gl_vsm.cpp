@@ -7,14 +7,15 @@
 #include <array>
 #include <cmath>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "labs/registry.h"
 #include "labs/vsm_features.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/msm_pass.h"
 #include "renderer/renderer.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 #include "tests/gl_fixture.h"
 
 namespace shadowlab {

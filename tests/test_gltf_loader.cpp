@@ -1,6 +1,6 @@
 // Tests of the glTF loader: the shared models, the peers' invalid files (each with an explicit verdict)
 // and small files made here for one defect or feature each.
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 
 
 #include <cmath>

@@ -17,10 +17,10 @@
 
 #include <gtest/gtest.h>
 
-#include "renderer/gltf_loader.h"
-#include "renderer/image_io.h"
-#include "renderer/platform.h"
-#include "renderer/untrusted.h"
+#include "core/gltf_loader.h"
+#include "core/image_io.h"
+#include "core/platform.h"
+#include "core/untrusted.h"
 #include "tests/gltf_doc.h"
 #include "tests/hostile_cases.h"
 #include "tests/test_util.h"

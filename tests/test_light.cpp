@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "renderer/light.h"
+#include "core/light.h"
 
 namespace shadowlab {
 namespace {

@@ -1,7 +1,7 @@
 // The ray-cast oracle and the error metrics, on synthetic G-buffers (no GL): shadows whose footprint is
 // known in closed form, the edge band's width, validity rules, exact metric counts and diff colours.
-#include "renderer/oracle.h"
-#include "renderer/metrics.h"
+#include "oracle/oracle.h"
+#include "oracle/metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Parameters declared once: parsing, ranges, JSON, invalidation bits.
 #include <gtest/gtest.h>
 
-#include "renderer/params.h"
+#include "core/params.h"
 #include "renderer/renderer.h"
-#include "renderer/technique_params.h"
-#include "renderer/vsm_params.h"
+#include "core/technique_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 namespace {

@@ -1,4 +1,4 @@
-// The sandbox of submitted C++ exercises (labs/sandbox.h, labs/cpp_exercise.h), attacked the way a
+// The sandbox of submitted C++ exercises (grading/sandbox.h, grading/cpp_exercise.h), attacked the way a
 // hostile student would: each case is lab 2's exercise with something added, graded with the early
 // screens off (SandboxAttack) so that what holds is the operating system's sandbox alone, and with them
 // on (ScreenedAttack) for the status a student gets. Each case proves that nothing outside was written
@@ -17,8 +17,8 @@
 #include <unistd.h>
 
 #include "labs/02_ortho_fit/ortho_fit.h"
-#include "labs/cpp_exercise.h"
-#include "labs/sandbox.h"
+#include "grading/cpp_exercise.h"
+#include "grading/sandbox.h"
 
 namespace shadowlab {
 namespace {
@@ -128,8 +128,8 @@ class Sandbox : public ::testing::Test {
     s.source = file;
     s.display_name = name;
     s.host = host;
-    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "labs/12_cascaded_shadow_maps/cascades_lab.h", "renderer/light.h",
-                 "renderer/scene.h", "renderer/cascades.h", "renderer/params.h"};
+    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "labs/12_cascaded_shadow_maps/cascades_lab.h", "core/light.h",
+                 "core/scene.h", "core/cascades.h", "core/params.h"};
     s.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho", "shadowlab::direction_from_angles"};
     s.screen = screen;
     s.compile_seconds = 20.0;
@@ -174,7 +174,7 @@ TEST_F(Sandbox, ARightAnswerBuildsAndAnswersInside) {
 // The program holds only the core functions it calls: not the solution (fit_light_ortho, in the same
 // file as the offered orthonormal_basis), which an answer could otherwise reach through a function
 // pointer at a known distance from an offered function's address.
-// Lab 12's likewise: practical_splits and fit_cascade_sphere (renderer/cascades.cpp).
+// Lab 12's likewise: practical_splits and fit_cascade_sphere (core/cascades.cpp).
 TEST_F(Sandbox, TheSolutionIsNotInTheProgram) {
   const fs::path answers = fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/12_cascaded_shadow_maps/right";
   for (const auto& [host, source] : {std::pair<std::string, std::string>{"02_ortho_fit", right_answer()},
@@ -237,8 +237,8 @@ TEST_F(Sandbox, ReplacingACallTheHostMakesBeforeItsFilterGainsNothing) {
 TEST_F(Sandbox, IncludesOfAnySpellingFindNothingOfTheGraders) {
   const std::string right = right_answer();
   for (const std::string& trick :
-       {std::string("%:include \"renderer/light.cpp\""), std::string("#import \"renderer/light.cpp\""),
-        std::string("#inc\\\nlude \"renderer/light.cpp\""), std::string("#include \"../../renderer/light.cpp\""),
+       {std::string("%:include \"core/light.cpp\""), std::string("#import \"core/light.cpp\""),
+        std::string("#inc\\\nlude \"core/light.cpp\""), std::string("#include \"../../core/light.cpp\""),
         std::string("#include \"/etc/passwd\""), std::string("#include \"$SECRET\""),
         std::string("asm(\".incbin \\\"$SECRET\\\"\");"), std::string("__asm__(\".incbin \\\"/etc/passwd\\\"\");")}) {
     for (bool screen : {false, true}) {

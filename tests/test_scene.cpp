@@ -3,7 +3,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/scene.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 namespace {

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "app/settings.h"
-#include "renderer/params.h"
+#include "core/params.h"
 #include "tests/test_util.h"
 
 namespace shadowlab {

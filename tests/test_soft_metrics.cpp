@@ -1,6 +1,6 @@
-// Grading against a light with a size (renderer/metrics.h: soften, add_soft_metrics): the penumbra's
+// Grading against a light with a size (oracle/metrics.h: soften, add_soft_metrics): the penumbra's
 // figures from hand-made truths, and the hard truth narrowed to the fully lit region and the umbra.
-#include "renderer/metrics.h"
+#include "oracle/metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// The soft ground truth (renderer/soft_truth.h) against closed forms: a disk light half hidden by a
+// The soft ground truth (oracle/soft_truth.h) against closed forms: a disk light half hidden by a
 // straight edge sees a circular segment of its area, so the penumbra of a half-plane blocker is known
 // exactly at every point. The error of the stratified estimate is measured there, and size 0 is the
 // hard truth bit for bit.
-#include "renderer/soft_truth.h"
+#include "oracle/soft_truth.h"
 
-#include "renderer/metrics.h"
+#include "oracle/metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "renderer/light.h"
+#include "core/light.h"
 
 namespace shadowlab {
 namespace {

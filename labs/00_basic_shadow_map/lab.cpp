@@ -8,9 +8,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 
@@ -31,7 +31,7 @@ constexpr const char* kAdvice =
     "map the light's clip coordinates from [-1, 1] to [0, 1] (x, y and z) before reading the map and comparing.";
 const HardLimits kLimits{.lit_advice = kAdvice, .shadow_advice = kAdvice};
 
-// The shadow test alone (labs/probe.h): a light whose clip space is world space, a 64 x 64 map of
+// The shadow test alone (grading/probe.h): a light whose clip space is world space, a 64 x 64 map of
 // random depths, and points inside and outside the map; each must read the texel it falls in.
 constexpr int kProbeMapSize = 64;
 constexpr int kProbePoints = 3000;

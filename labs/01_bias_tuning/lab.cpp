@@ -7,9 +7,9 @@
 #include <regex>
 #include <string>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 
@@ -60,7 +60,7 @@ const std::vector<HeldOutRange> kHeldOut = {{6.0f, 9.0f, {"256", "512"}, {"defau
                                             {20.0f, 45.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}},
                                             {45.0f, 89.0f, {"256", "512", "1024", "2048"}, {"stacked", "default"}}};
 
-// The bias function on its own (labs/probe.h): shadow_bias at these cosines, under four settings of
+// The bias function on its own (grading/probe.h): shadow_bias at these cosines, under four settings of
 // the sliders, against what the lab asks of it.
 constexpr float kCosines[] = {1.0f, 0.9f, 0.7f, 0.5f, 0.3f, 0.2f, 0.1f, 0.05f, 0.01f, 0.001f};
 constexpr std::size_t kAtOne = 0, kAtSteep = 5, kAtGrazing = 9;  // indices: n.l = 1, 0.2, 0.001

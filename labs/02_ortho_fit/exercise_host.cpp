@@ -1,8 +1,8 @@
-// main() of a submitted lab 2 exercise when grading compiles it on its own (labs/cpp_exercise.h): each
+// main() of a submitted lab 2 exercise when grading compiles it on its own (grading/cpp_exercise.h): each
 // FitCall is answered with ortho_fit_exercise's result. Not part of the shadowlab binary.
 #include "labs/02_ortho_fit/ortho_fit.h"
-#include "labs/cpp_exercise_host.h"
-#include "labs/light_view_answer.h"
+#include "grading/cpp_exercise_host.h"
+#include "grading/light_view_answer.h"
 
 int main() {
   using namespace shadowlab;

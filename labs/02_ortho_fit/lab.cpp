@@ -13,11 +13,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "labs/02_ortho_fit/ortho_fit.h"
-#include "labs/check.h"
-#include "labs/cpp_exercise.h"
-#include "labs/lab.h"
-#include "labs/light_view_answer.h"
-#include "renderer/gltf_loader.h"
+#include "grading/check.h"
+#include "grading/cpp_exercise.h"
+#include "grading/lab.h"
+#include "grading/light_view_answer.h"
+#include "core/gltf_loader.h"
 
 namespace shadowlab {
 
@@ -94,9 +94,9 @@ constexpr double kMaxErrorRatioToFixed = 0.999;
 // The default scene moved off the origin (a box that ignores the scene's centre misses it).
 constexpr float kMovedBy[] = {30.0f, 0.0f, 20.0f};
 
-constexpr const char* kSolution = "renderer/light.cpp";  // fit_light_ortho, which every other lab uses
+constexpr const char* kSolution = "core/light.cpp";  // fit_light_ortho, which every other lab uses
 
-// A submission's exercise.cpp, built into its own program (labs/cpp_exercise.h) once per file and
+// A submission's exercise.cpp, built into its own program (grading/cpp_exercise.h) once per file and
 // process (a check asks for the lab's hooks several times). Each fit is a call to it; answers asked
 // for in advance (the test directions, in one exchange instead of 10,006 round trips) are kept.
 class SubmittedFit {
@@ -122,7 +122,7 @@ class SubmittedFit {
     spec.source = file;
     spec.display_name = kExercise;
     spec.host = "02_ortho_fit";
-    spec.headers = {"labs/02_ortho_fit/ortho_fit.h", "renderer/light.h", "renderer/scene.h"};
+    spec.headers = {"labs/02_ortho_fit/ortho_fit.h", "core/light.h", "core/scene.h"};
     spec.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho",
                     "shadowlab::direction_from_angles", "shadowlab::clip_to_texture"};
     return spec;

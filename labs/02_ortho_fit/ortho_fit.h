@@ -1,17 +1,17 @@
 // Lab 2: the light's ortho projection fitted to the bounding box. The solution is the renderer's own
-// fit_light_ortho (renderer/light.cpp), which every other lab uses.
+// fit_light_ortho (core/light.cpp), which every other lab uses.
 #pragma once
 
 #include <functional>
 #include <vector>
 
-#include "renderer/light.h"
+#include "core/light.h"
 
 namespace shadowlab {
 
 LightView ortho_fit_exercise(const Bounds& bounds, const glm::vec3& to_light);
 
-// One call of a submitted exercise.cpp, compiled into its own program (labs/cpp_exercise.h): the
+// One call of a submitted exercise.cpp, compiled into its own program (grading/cpp_exercise.h): the
 // check sends a FitCall, exercise_host.cpp answers with the fit's LightView as a FitAnswer.
 struct FitCall {
   float box_min[3], box_max[3], to_light[3];

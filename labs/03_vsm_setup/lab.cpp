@@ -4,15 +4,15 @@
 // Chebyshev's bound with a minimum variance in the lit pass; debug quads of E[z], E[z^2] and sigma^2.
 // Check: read-backs of the moments against the plain depth map of the same light view, GL's own
 // report of the texture's format and filtering, and the lit result's error against the oracle.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "labs/check.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/probe.h"
 #include "renderer/moments_pass.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 
@@ -97,7 +97,7 @@ void render_for_readback(Renderer& renderer, const Scene& scene, const ParamSet&
   renderer.render(params, request);
 }
 
-// Part 2 alone (labs/probe.h): chebyshev_upper_bound on moments and depths chosen so that float32
+// Part 2 alone (grading/probe.h): chebyshev_upper_bound on moments and depths chosen so that float32
 // computes E[z^2] - E[z]^2 and z - E[z] exactly (means with few mantissa bits, variances and distances
 // that are powers of two): any deviation from the CPU bound beyond a few ulps is the formula's.
 constexpr double kMeans[] = {0.25, 0.5, 0.625, 0.75, 0.875};

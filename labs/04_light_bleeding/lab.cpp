@@ -4,7 +4,7 @@
 // debug view tinting the pixels the remap changed. Check: on the stacked-occluder scene, the bleeding
 // rate against the oracle with the student's delta against lab 3's unfixed test, the acne rate, and a
 // sweep of delta; the default scene is measured and reported.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,10 +12,10 @@
 #include <map>
 #include <utility>
 
-#include "labs/check.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/probe.h"
 #include "labs/vsm_features.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 
@@ -35,7 +35,7 @@ constexpr int kBlurRadius = 4;
 constexpr double kBlurSigma = 2.0;
 constexpr double kSweep[] = {0.0, 0.025, 0.05, 0.1, 0.125, 0.15, 0.2, 0.3, 0.4, 0.5};
 
-// The shadow test alone (labs/probe.h): one moments texel per case, read at its centre through a light
+// The shadow test alone (grading/probe.h): one moments texel per case, read at its centre through a light
 // whose texture space is world space, n.l = 1 (the bias is the constant slider). Means, variances and
 // depths are chosen so float32 computes z - bias, E[z^2] - E[z]^2 and z - E[z] exactly; the reference is
 // Chebyshev's bound on z - bias, remapped linearly from [delta, 1] to [0, 1] and clamped.

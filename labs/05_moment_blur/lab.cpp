@@ -5,18 +5,18 @@
 // 1, 2, 4, 8, 16 at sigma = r / 2 and three held-out (radius, sigma) pairs; reported: at radius 0 no
 // blur pass runs and no blur target exists (the renderer's doing, tested in BlurTest); per-pass time and the
 // oracle's edge error by radius are reported.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
-#include "labs/check.h"
+#include "grading/check.h"
 #include "labs/vsm_features.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -9,9 +9,9 @@
 #include <numbers>
 #include <random>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 
@@ -20,7 +20,7 @@ namespace {
 constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/shadow/pcf.glsl";  // the renderer's own PCF
 
-// The kernel alone (labs/probe.h): a 64 x 64 depth map holding a straight edge (an occluder at depth 0.3
+// The kernel alone (grading/probe.h): a 64 x 64 depth map holding a straight edge (an occluder at depth 0.3
 // on one side, nothing at 1.0 on the other) at several orientations, a flat receiver at depth 0.6 facing
 // the light (so any bias below 0.3 gives the same comparisons), points within 6 texels of the edge away
 // from texel borders. The reference averages the comparisons over the (2r+1)^2 texels around the point's

@@ -10,9 +10,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 
@@ -29,7 +29,7 @@ struct SpotPlace {
 // crowds toward 1 across the scene.
 constexpr SpotPlace kPlaces[] = {{"high", 5.0f, 7.0f, 4.0f, 40.0f}, {"low", -4.0f, 2.0f, 3.5f, 60.0f}};
 
-// The bias alone (labs/probe.h): a spot at the origin looking down -z (cone 30 deg, near 1, far 21), a
+// The bias alone (grading/probe.h): a spot at the origin looking down -z (cone 30 deg, near 1, far 21), a
 // uniform map holding an occluder at each of four distances, at two map sizes' texel angles.
 constexpr double kProbeNear = 1.0, kProbeFar = 21.0, kProbeCone = 30.0, kProbeSlope = 2.0;
 constexpr double kProbeDistances[] = {2.0, 5.0, 10.0, 18.0};

@@ -13,9 +13,9 @@
 #include <cstdio>
 #include <random>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 
@@ -34,7 +34,7 @@ constexpr double kMinShadowedPerQuarter = 2000;
 // The camera looks down steeply so the shadows behind the objects are not hidden by them.
 constexpr float kCameraPitch = 60.0f;
 
-// The bias alone (labs/probe.h): a point light at the origin, a cube map whose every texel holds an
+// The bias alone (grading/probe.h): a point light at the origin, a cube map whose every texel holds an
 // occluder at one of three distances, at two map sizes' texel angles (2 / size), along a direction
 // that lands on the -Y face off its centre, at angles of incidence from head-on down to grazing (n . l
 // 0.05 is 87 degrees, past the course's cap on tan at 84): a slope term wrong only at grazing light (tan

@@ -12,8 +12,8 @@
 #include <random>
 #include <limits>
 
-#include "labs/check.h"
-#include "labs/lab.h"
+#include "grading/check.h"
+#include "grading/lab.h"
 #include "renderer/shadow_volume_pass.h"
 
 namespace shadowlab {

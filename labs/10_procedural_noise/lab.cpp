@@ -8,7 +8,7 @@
 // compared with a CPU reference of the same definition on the same gradient texture: determinism,
 // range, zero mean, zero at the lattice (gradient, not value noise), continuity across texel borders
 // (no seams, no creases), no tiling within the period, the octaves' weights and the spectrum per band.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "labs/check.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/probe.h"
 #include "renderer/gl_objects.h"
 
 namespace shadowlab {

@@ -8,7 +8,7 @@
 // shadows against the oracle, whose trees are the light-facing quads with the same cut-out function
 // (an Embree filter, renderer/billboards.h), from two cameras, with the shadow map compared texel by
 // texel between them, and under held-out lights, map sizes, cutoffs and tree sizes.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "labs/check.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/probe.h"
 #include "renderer/billboards.h"
 
 namespace shadowlab {

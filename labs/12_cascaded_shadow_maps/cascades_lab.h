@@ -1,13 +1,13 @@
 // Lab 12: cascaded shadow maps. The student writes the split distances and each cascade's light box
 // (its bounding sphere and the texel snapping); the solution is the renderer's own
-// (renderer/cascades.cpp), which the cascade pass uses everywhere else.
+// (core/cascades.cpp), which the cascade pass uses everywhere else.
 #pragma once
 
 #include <vector>
 
-#include "renderer/cascades.h"
-#include "renderer/light.h"
-#include "renderer/scene.h"
+#include "core/cascades.h"
+#include "core/light.h"
+#include "core/scene.h"
 
 namespace shadowlab {
 
@@ -16,7 +16,7 @@ std::vector<float> cascade_splits_exercise(float near_plane, float far_plane, in
 // The light's view and ortho projection for one cascade.
 LightView cascade_fit_exercise(const FrustumCorners& slice, const glm::vec3& to_light, int map_size, const Bounds& scene);
 
-// One call of a submitted exercise.cpp, compiled into its own program (labs/cpp_exercise.h): kind 0 asks
+// One call of a submitted exercise.cpp, compiled into its own program (grading/cpp_exercise.h): kind 0 asks
 // for the splits, kind 1 for a cascade's box; exercise_host.cpp answers with a CascadeAnswer.
 struct CascadeCall {
   int kind, count, map_size;

@@ -1,10 +1,10 @@
-// main() of a submitted lab 12 exercise when grading compiles it on its own (labs/cpp_exercise.h): each
+// main() of a submitted lab 12 exercise when grading compiles it on its own (grading/cpp_exercise.h): each
 // CascadeCall is answered with the student's splits or cascade box. Not part of the shadowlab binary.
 #include <algorithm>
 
 #include "labs/12_cascaded_shadow_maps/cascades_lab.h"
-#include "labs/cpp_exercise_host.h"
-#include "labs/light_view_answer.h"
+#include "grading/cpp_exercise_host.h"
+#include "grading/light_view_answer.h"
 
 int main() {
   using namespace shadowlab;

@@ -1,7 +1,7 @@
 // Lab 12: cascaded shadow maps (beyond the course). The camera's view range is split into cascades (the
 // practical blend of uniform and logarithmic splits), each with an ortho light box fitted to its
 // slice's bounding sphere and snapped to whole texels; the lit pass picks a cascade per pixel.
-// The student writes the split distances and the box (renderer/cascades.cpp is the solution), in C++:
+// The student writes the split distances and the box (core/cascades.cpp is the solution), in C++:
 // both run on the CPU once per cascade and frame, as they do in every engine, and lab 2's path grades a
 // submitted C++ file in a program of its own.
 // Check: (1) the splits against the formula at held-out near/far/lambda/count; (2) the box, over
@@ -18,19 +18,19 @@
 #include <random>
 
 #include "labs/12_cascaded_shadow_maps/cascades_lab.h"
-#include "labs/check.h"
-#include "labs/cpp_exercise.h"
-#include "labs/lab.h"
-#include "labs/light_view_answer.h"
+#include "grading/check.h"
+#include "grading/cpp_exercise.h"
+#include "grading/lab.h"
+#include "grading/light_view_answer.h"
 #include "renderer/cascade_pass.h"
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 
 namespace shadowlab {
 
 namespace {
 
 constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.cpp";
-constexpr const char* kSolution = "renderer/cascades.cpp";  // practical_splits, fit_cascade_sphere
+constexpr const char* kSolution = "core/cascades.cpp";  // practical_splits, fit_cascade_sphere
 constexpr const char* kPalmTree = "assets/models/PalmTree/PalmTree.gltf";
 
 // (1) Splits: a distance off by more than this share of the far plane is wrong (float32 arithmetic of a
@@ -83,8 +83,8 @@ class SubmittedCascades {
     spec.source = file;
     spec.display_name = kExercise;
     spec.host = "12_cascaded_shadow_maps";
-    spec.headers = {"labs/12_cascaded_shadow_maps/cascades_lab.h", "renderer/cascades.h", "renderer/light.h",
-                    "renderer/scene.h", "renderer/params.h"};
+    spec.headers = {"labs/12_cascaded_shadow_maps/cascades_lab.h", "core/cascades.h", "core/light.h",
+                    "core/scene.h", "core/params.h"};
     spec.offered = {"shadowlab::orthonormal_basis", "shadowlab::direction_from_angles"};
     return spec;
   }

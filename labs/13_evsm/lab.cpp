@@ -7,15 +7,15 @@
 // Check: on the stacked-occluder scene (lab 4's), unblurred and blurred at radius 4, the bleeding rate
 // and the interior error against VSM with the delta fix at the same settings; on the default scene and
 // under a grazing light (elevation 10 deg) the interior errors against the oracle within measured bounds.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <cstdio>
 #include <string>
 #include <utility>
 
-#include "labs/check.h"
+#include "grading/check.h"
 #include "labs/vsm_features.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

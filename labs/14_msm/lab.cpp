@@ -5,15 +5,15 @@
 // Check: on the stacked-occluder scene (lab 4's frame) the bleeding rate and the interior error
 // against VSM (lab 4's solution) at the same bias, without and with lab 4's cut; on the default scene
 // and under a grazing light (elevation 10 deg) lab 1's hard-shadow bounds.
-#include "labs/lab.h"
+#include "grading/lab.h"
 
 #include <cstdio>
 #include <string>
 #include <utility>
 
-#include "labs/check.h"
+#include "grading/check.h"
 #include "labs/vsm_features.h"
-#include "renderer/vsm_params.h"
+#include "core/vsm_params.h"
 
 namespace shadowlab {
 

@@ -1,6 +1,6 @@
 // Lab 15: two shadowed lights, the sun and a flashlight (the Polish lab's ship with its reflector).
 // Demonstrates: N lights in one frame, each with its own map and technique (the sun's ortho depth map, the
-// flashlight's perspective one, renderer/flashlight.h), each light's Lambert term multiplied by its OWN
+// flashlight's perspective one, core/flashlight.h), each light's Lambert term multiplied by its OWN
 // shadow term; the flashlight's map redrawn alone while it moves. The student writes combine_lights.
 // Check: per light and combined. Three frames per condition: the sun alone (flashlight.intensity 0), the
 // flashlight alone (sun.intensity 0) and both; in each the direct light the combination returned (the
@@ -13,10 +13,10 @@
 #include <random>
 #include <string>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "renderer/flashlight.h"
-#include "renderer/image_io.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "core/flashlight.h"
+#include "core/image_io.h"
 
 namespace shadowlab {
 

@@ -13,9 +13,9 @@
 #include <numbers>
 #include <random>
 
-#include "labs/check.h"
-#include "labs/lab.h"
-#include "labs/probe.h"
+#include "grading/check.h"
+#include "grading/lab.h"
+#include "grading/probe.h"
 
 namespace shadowlab {
 

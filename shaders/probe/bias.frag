@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs a lab's shadow_bias(n_dot_l) on chosen inputs, one fragment per
+// Grading probe (grading/probe.h): runs a lab's shadow_bias(n_dot_l) on chosen inputs, one fragment per
 // case, under the uniforms the check sets. Input per case: u_probe_in0.x = n . l.
 #include "lab/bias.glsl"
 

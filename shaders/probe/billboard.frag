@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs lab 11's shadow_quad and shadow_keeps on chosen inputs, one
+// Grading probe (grading/probe.h): runs lab 11's shadow_quad and shadow_keeps on chosen inputs, one
 // fragment per case. u_probe_in1.w < 0: shadow_keeps(uv = in0.xy, cutoff = in0.z), 1 kept, 0 not.
 // Else shadow_quad(base = in0.xyz, u_probe_size, to_light = in1.xyz, u_probe_eye), and the result is
 // component in1.w of (right.xyz, up.xyz).

@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs a lab's chebyshev_upper_bound(moments, z) on chosen inputs, one
+// Grading probe (grading/probe.h): runs a lab's chebyshev_upper_bound(moments, z) on chosen inputs, one
 // fragment per case. Input per case: u_probe_in0 = (E[z], E[z^2], z, unused).
 #include "lab/chebyshev.glsl"
 

@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs a point-light lab's face selection, stored_distance(direction), on
+// Grading probe (grading/probe.h): runs a point-light lab's face selection, stored_distance(direction), on
 // chosen directions, one fragment per case, with the lit pass's includes. Input per case:
 // u_probe_in0.xyz = the direction from the light.
 #include "shadow/common.glsl"

@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs a point-light lab's value_to_store(world_position), what the shadow
+// Grading probe (grading/probe.h): runs a point-light lab's value_to_store(world_position), what the shadow
 // pass writes into its faces, on chosen points, one fragment per case. Input per case: u_probe_in0.xyz =
 // the world position. v_world_position is set to it too, for a function that reads the varying.
 uniform vec3 u_light_position;

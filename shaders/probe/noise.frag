@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs lab 10's gradient_noise(p) or noise_octaves(p) on chosen points,
+// Grading probe (grading/probe.h): runs lab 10's gradient_noise(p) or noise_octaves(p) on chosen points,
 // one fragment per case. Input per case: u_probe_in0 = (p.x, p.y, 0 noise / 1 octave sum, unused).
 #include "lab/noise.glsl"
 

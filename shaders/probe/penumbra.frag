@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs lab 16's penumbra_width(receiver_depth, blocker_depth, light_size)
+// Grading probe (grading/probe.h): runs lab 16's penumbra_width(receiver_depth, blocker_depth, light_size)
 // on chosen inputs, one fragment per case. Input per case: u_probe_in0 = (receiver, blocker, size, unused).
 #include "lab/penumbra.glsl"
 

@@ -1,5 +1,5 @@
 #version 330 core
-// Grading probe (labs/probe.h): runs a lab's shadow_visibility() on chosen inputs instead of a scene,
+// Grading probe (grading/probe.h): runs a lab's shadow_visibility() on chosen inputs instead of a scene,
 // one fragment per case, with the same includes as the lit pass (shaders/lit.frag) and the uniforms the
 // check sets. Inputs per case: u_probe_in0 = (world position, n . l), u_probe_in1 = (normal, unused).
 #include "shadow/common.glsl"

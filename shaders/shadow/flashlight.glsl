@@ -1,4 +1,4 @@
-// The flashlight beside the sun (renderer/flashlight.h): a spot with a perspective shadow map of its own,
+// The flashlight beside the sun (core/flashlight.h): a spot with a perspective shadow map of its own,
 // on texture unit 5. Its test is the spot's (shadow/spot.glsl, lab 7): linear distances along its axis,
 // a bias of one texel's footprint plus the slope's share. Its own uniforms, so that the sun's test keeps
 // u_shadow_map and u_light_tex_matrix.

@@ -14,7 +14,7 @@
 
 #include <unistd.h>
 
-#include "renderer/gltf_loader.h"
+#include "core/gltf_loader.h"
 
 namespace {
 

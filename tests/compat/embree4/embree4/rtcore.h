@@ -1,4 +1,4 @@
-// A compile-only stand-in for Embree 4's <embree4/rtcore.h>: the declarations renderer/oracle.cpp uses,
+// A compile-only stand-in for Embree 4's <embree4/rtcore.h>: the declarations oracle/oracle.cpp uses,
 // as Embree 4's manual pages give them (rtcOccluded1(3), rtcInitOccludedArguments(3), RTCRay(3),
 // rtcSetDeviceErrorFunction(3), rtcSetSceneFlags(3), rtcSetNewGeometryBuffer(3), RTCError in
 // rtcGetDeviceError(3); the filter functions at the end). This machine has only Embree 3; tests/CMakeLists.txt compiles the oracle's

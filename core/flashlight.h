@@ -1,0 +1,36 @@
+// A second shadowed light beside the frame's own (the sun): a spot, the "flashlight", carried by a node
+// that circles the scene (a ship's reflector) or by the camera. It has a shadow map of its own (a
+// perspective depth map, DepthMapPass) drawn only when the flashlight, its casters or the map's settings
+// change, so that moving it never redraws the sun's map (FrameStats::flashlight_shadow_passes counts its
+// updates, shadow_passes the sun's). The lit pass gets the FLASHLIGHT define: each light's Lambert term
+// and its own shadow term go to "lab/combine.glsl" (default shaders/shadow/combine_lights.glsl), which
+// returns the direct light.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/frame_light.h"
+#include "core/params.h"
+
+namespace shadowlab {
+
+enum class FlashlightMount { Node, Camera };
+
+// The flashlight.* parameters (and sun.intensity, the sun's weight beside it). None of them invalidates
+// the sun's map: the flashlight's map has inputs of its own (see Renderer).
+std::vector<ParamSpec> flashlight_param_specs();
+
+// The flashlight of a frame, in the local frame: on its node (flashlight.phase degrees around the
+// scene's centre, flashlight.radius and flashlight.height times the scene's half diagonal out and up,
+// aimed at the scene's centre) or at the camera's eye looking where the camera looks
+// (flashlight.mount). `camera_view` is the view matrix in the same frame as `bounds`.
+FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const glm::mat4& camera_view);
+FlashlightMount flashlight_mount(const ParamSet& params);
+
+// The window's animation: the phase after `seconds` more at flashlight.speed degrees per second.
+double advance_flashlight_phase(const ParamSet& params, double seconds);
+
+}  // namespace shadowlab

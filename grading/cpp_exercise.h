@@ -1,0 +1,90 @@
+// A student's C++ exercise graded from their own file (lab 2's exercise.cpp from a submission): the
+// file is compiled and linked with the lab's host (grading/cpp_exercise_host.h) into a small static program
+// of its own, which the check then calls over a socket. The student's code never runs inside the grader.
+//
+// The defence is the operating system's (grading/sandbox.h): compiling, inspecting and linking run in
+// bubblewrap sandboxes that hold the system's /usr, the lab's headers and a copy of the student's file,
+// nothing else of ours (no solution or renderer sources, no --out, no home, no /etc); the program runs
+// in one that holds only itself, under a seccomp filter installed before it starts (it may only
+// compute), as nobody, with no network, in a PID namespace that dies with the grader, and under CPU,
+// memory and output-size limits. Where no sandbox can be made, the exercise is not built at all.
+//
+// Before that, friendly refusals with a message naming the student's file (`screen`): includes other
+// than the lab's offered headers and the system's, inline assembly, definitions of the grader's or the
+// system's functions (main, a C function), code that runs before main, calls into the grader's code
+// other than the functions the lab offers. Compiling and linking each have a time limit; so does a call.
+//
+// The local student flow is unchanged: without a submission, lab 2 grades the exercise compiled into
+// the binary (edit, rebuild, Check).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "grading/platform_process.h"
+
+namespace shadowlab {
+
+// A failure of the student's code, with the status a grade records for it: "compile_error",
+// "crashed" or "timed_out". The message names the student's file.
+class ExerciseError : public std::runtime_error {
+ public:
+  ExerciseError(std::string status, const std::string& message) : std::runtime_error(message), status_(std::move(status)) {}
+  const std::string& status() const { return status_; }
+
+ private:
+  std::string status_;
+};
+
+struct CppExerciseSpec {
+  std::filesystem::path source;      // the student's file
+  std::string display_name;          // as the student knows it: "labs/02_ortho_fit/exercise.cpp"
+  std::string host;                  // the lab's host library's name: "02_ortho_fit"
+  std::vector<std::string> headers;  // quoted includes it may use, relative to the data folder
+  std::vector<std::string> offered;  // the grader's functions it may call ("shadowlab::orthonormal_basis")
+  double compile_seconds = 60.0;     // each of compiling and linking
+  double call_seconds = 10.0;        // one call, or one batch of calls
+  // The early, friendly refusals (includes, inline assembly, calls and definitions the lab does not
+  // allow, code before main). The sandbox holds without them; tests turn them off to prove it.
+  bool screen = true;
+};
+
+class CppExercise {
+ public:
+  // Builds and starts the student's program; throws ExerciseError (or std::runtime_error when the
+  // grader itself is broken: no compiler, no host library).
+  explicit CppExercise(CppExerciseSpec spec);
+  ~CppExercise();
+
+  // One request and its reply; throws ExerciseError ("crashed", "timed_out") when the program fails.
+  template <typename Reply, typename Request>
+  Reply call(const Request& request) {
+    Reply reply;
+    call_raw(&request, sizeof request, &reply, sizeof reply);
+    return reply;
+  }
+  // The program as built (for tests that look inside it).
+  std::filesystem::path program() const { return work_ / "out" / "exercise"; }
+
+  // Many requests in one exchange (one round trip instead of one each), within the same time limit.
+  template <typename Reply, typename Request>
+  std::vector<Reply> call_many(const std::vector<Request>& requests) {
+    std::vector<Reply> replies(requests.size());
+    call_raw(requests.data(), sizeof(Request) * requests.size(), replies.data(), sizeof(Reply) * replies.size());
+    return replies;
+  }
+
+ private:
+  void call_raw(const void* request, std::size_t request_size, void* reply, std::size_t reply_size);
+  void build();
+  void screen_object(const std::filesystem::path& out) const;
+
+  CppExerciseSpec spec_;
+  std::filesystem::path work_;
+  platform::PipeChild child_;
+};
+
+}  // namespace shadowlab
