@@ -986,7 +986,7 @@ PY
     ;;
   window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
     # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture).
-    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png"
+    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png,key:f2,frames:3,key:f3,frames:3,screenshot:$tmp/f2f3.png"
     # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
     window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
     # Lab 9's stock exercise emits no volumes: its z-pass preset (F2) shows nothing there; "Solution beside it" does.
@@ -996,7 +996,7 @@ PY
 import sys
 from png_tools import load, differing
 w, h, _ = load(f"{sys.argv[1]}/plain.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "hidden", "acne", "acne_solution", "zpass", "zpass_solution", "beside")}
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "f2f3", "hidden", "acne", "acne_solution", "zpass", "zpass_solution", "beside")}
 # The caption's line for a preset that needs a working exercise is in the panel's hint colour (242, 204, 115).
 yellow = lambda rows: sum(1 for y in range(0, 200) for x in range(460, 950)
                           if rows[y][4 * x] > 200 and 170 < rows[y][4 * x + 1] < 230 and 80 < rows[y][4 * x + 2] < 150)
@@ -1006,7 +1006,10 @@ stats = {"caption tuned/plain": differing(r["tuned"], r["plain"], *top),
          "view tuned/plain": differing(r["tuned"], r["plain"], *below),
          "caption back/tuned (Page Up)": differing(r["back"], r["tuned"], *top),
          "view back/tuned (Page Up)": differing(r["back"], r["tuned"], *below),
-         "all again/tuned (Page Down)": differing(r["again"], r["tuned"], 0, 0, w, h),
+         # Page Down from peter-panning: "tuned" over peter-panning's camera (a preset without a view keeps
+         # the one shown), the same picture as pressing F2 then F3; its view differs from peter-panning's.
+         "all again/F2 then F3 (Page Down)": differing(r["again"], r["f2f3"], 0, 0, w, h),
+         "view again/back (Page Down)": differing(r["again"], r["back"], *below),
          "caption hidden panel/plain": differing(r["hidden"], r["plain"], w // 4, 0, 3 * w // 4, 120)}
 # How tall the caption is: the rows where F3 changed the picture (a lecture hall's back row needs large text).
 rows = [y for y in range(0, h // 2) if any(sum(abs(r["tuned"][y][4 * x + c] - r["plain"][y][4 * x + c]) for c in range(3)) > 24
@@ -1018,7 +1021,8 @@ assert stats["caption tuned/plain"] > 0.05, "F3 showed no caption"
 assert stats["view tuned/plain"] < 0.01, "F3 (the lab's defaults) changed the view, or the caption is not at the top"
 assert rows and rows[-1] - rows[0] >= 60, "the caption is too small to read from afar"
 assert stats["caption back/tuned (Page Up)"] > 0.05 and stats["view back/tuned (Page Up)"] > 0.01, "Page Up did not step back to peter-panning"
-assert stats["all again/tuned (Page Down)"] < 0.005, "Page Down did not step forward to tuned again"
+assert stats["all again/F2 then F3 (Page Down)"] < 0.005 and stats["view again/back (Page Down)"] > 0.01, \
+    "Page Down did not step forward to tuned again"
 assert stats["caption hidden panel/plain"] > 0.05, "the caption went with the panel (H)"
 # "Solution beside it": the right half is the solution's (as in zpass_solution), the left stays the exercise's.
 mid = w // 2  # the divider (compare.divider 0.5 of the width); right of it, where the scene's shadows fall
