@@ -34,6 +34,7 @@ A count of the exam corpus's answers names its folders (a glob), counted as chec
 The project's README.md is held to its markers. Exit 0 when every text agrees, 1 otherwise (each
 disagreement printed with its file and line).
 """
+import functools
 import json
 import pathlib
 import re
@@ -85,8 +86,20 @@ def initializer(text, start):
     return items, i
 
 
+@functools.lru_cache(maxsize=None)
+def read(path):
+    """A file's text, read once per run: hundreds of markers name the same few files."""
+    return path.read_text(encoding="utf-8")
+
+
+@functools.lru_cache(maxsize=None)
+def recorded(file):
+    """A recorded run, decoded once per run (764 markers name 15 files)."""
+    return json.loads(read(ROOT / "docs" / "measured" / file))
+
+
 def constant(path, name):
-    text = path.read_text(encoding="utf-8")
+    text = read(path)
     preset = re.fullmatch(r"preset\(([^)]*)\)\.([\w.]+)", name)
     if preset:  # a lab's preset: {"name", "description", {{"key", "value"}, ...}}
         m = re.search(r'\{"' + re.escape(preset.group(1)) + r'",\s*"(?:[^"\\]|\\.)*",\s*\{(.*?)\}\}', text, re.DOTALL)
@@ -143,7 +156,7 @@ def number(node, name):
 
 
 def measured_value(file, pointer):
-    node = resolve(json.loads((ROOT / "docs" / "measured" / file).read_text(encoding="utf-8")), pointer)
+    node = resolve(recorded(file), pointer)
     return number(node, f"{file}:{pointer}")
 
 
@@ -168,7 +181,7 @@ def texts():
 def measured_markers():
     """Every measured marker: (file:line, printed figure, JSON file, pointer, scale)."""
     for path, _ in texts():
-        for i, line in enumerate(path.read_text(encoding="utf-8").splitlines()):
+        for i, line in enumerate(read(path).splitlines()):
             for m in MEASURED.finditer(line):
                 printed, file, pointer, scale = m.groups()
                 yield f"{path.relative_to(ROOT)}:{i + 1}", printed, file, pointer, float(scale) if scale else 1.0
@@ -188,7 +201,7 @@ def whole_numbers(bare):
 
 def check_text(readme, kind="student"):
     problems = []
-    lines = readme.read_text(encoding="utf-8").splitlines()
+    lines = read(readme).splitlines()
     where = lambda i: f"{readme.relative_to(ROOT)}:{i + 1}"
     section = ""
     sections = set()
@@ -269,7 +282,7 @@ def main():
         print(p)
     tied = measured = counted = 0
     for path, _ in found:
-        text = path.read_text(encoding="utf-8")
+        text = read(path)
         tied += len(MARKED.findall(text))
         measured += len(MEASURED.findall(text))
         counted += len(COUNTED.findall(text))

@@ -71,15 +71,15 @@ def main():
         print("the unmodified texts do not pass:\n" + clean.stdout)
         return 1
     failures = 0
-    with tempfile.TemporaryDirectory() as tmp:  # the copy itself passes: a mutation is caught for itself
+    # One copy for all mutations: each is made on the copy and undone before the next (the file's text
+    # written back), so every run sees the copy that passed above with that one change.
+    with tempfile.TemporaryDirectory() as tmp:
         copy_texts(tmp)
         copied = run(tmp)
         if copied.returncode != 0:
             print("the unmodified copy does not pass:\n" + copied.stdout)
             return 1
-    for file, old, new, expected in MUTATIONS:
-        with tempfile.TemporaryDirectory() as tmp:
-            copy_texts(tmp)
+        for file, old, new, expected in MUTATIONS:
             path = pathlib.Path(tmp) / file
             text = path.read_text(encoding="utf-8")
             if old not in text:
@@ -88,6 +88,7 @@ def main():
                 continue
             path.write_text(text.replace(old, new, 1), encoding="utf-8")
             out = run(tmp)
+            path.write_text(text, encoding="utf-8")
             if out.returncode != 1 or expected not in out.stdout:
                 print(f"{file}: '{old}' -> '{new}' not caught (exit {out.returncode}):\n{out.stdout}")
                 failures += 1
