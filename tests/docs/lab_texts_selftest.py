@@ -26,7 +26,7 @@ MUTATIONS = [
     ("docs/measured/lab_09.json", '"interior_agreement": 0.0005110269467045736', '"interior_agreement": 0.0105110269467045736', "the recorded run lab_09.json"),
     ("README.md", "fewer than 500<!--", "fewer than 400<!--", "the text says 400"),
     # A preset's value changed in the code; an untied figure in a student's text.
-    ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}}', '{{"vsm.bleed_delta", "0.15"}}',
+    ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}, ', '{{"vsm.bleed_delta", "0.15"}, ',
      "preset(course).vsm.bleed_delta = 0.15"),
     ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
     # Whole numbers: an untied one in a student's text and in an instructor note; an integer constant and
@@ -51,10 +51,10 @@ def run(root):
 
 
 def copy_texts(tmp):
-    """What the texts name: app/, labs/, renderer/, shaders/, docs/measured/, docs/*.json (the benchmark's recorded
+    """What the texts name: the product rooms (app/, core/, oracle/, renderer/, grading/, labs/), shaders/, docs/measured/, docs/*.json (the benchmark's recorded
     runs), README.md, the test sources whose constants a text quotes and the exam corpus whose answers the README
     counts."""
-    for folder in ("app", "labs", "renderer", "shaders", "docs/measured"):
+    for folder in ("app", "core", "oracle", "renderer", "grading", "labs", "shaders", "docs/measured"):
         shutil.copytree(ROOT / folder, pathlib.Path(tmp) / folder)
     (pathlib.Path(tmp) / "tests").mkdir()
     for source in ROOT.glob("tests/*.cpp"):
