@@ -33,8 +33,13 @@ if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR="$copy" CCACHE_NOHASHDIR=1
 fi
-# The build folder inside the copy, as scripts/build has it: the same relative paths, the same ccache keys.
-cmake -S "$copy" -B "$copy/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_TESTS=OFF \
+# The build folder inside the copy, as scripts/build has it: the same relative paths, the same generator
+# as the tree's own build (else Ninja where installed; Make runs each compiler in another folder, so its relative paths, and ccache's
+# keys, differ from a Ninja build's: the copy then compiled everything again, 245 s here), the same ccache keys.
+generator=()
+made_with=$(sed -n 's/^CMAKE_GENERATOR:INTERNAL=//p' "${SHADOWLAB_BUILD_DIR:-$src/build}/CMakeCache.txt" 2>/dev/null || true)
+if [ -n "$made_with" ]; then generator=(-G "$made_with"); elif command -v ninja >/dev/null; then generator=(-G Ninja); fi
+cmake -S "$copy" -B "$copy/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWLAB_BUILD_TESTS=OFF \
   -DSHADOWLAB_DATA_DIR="$src" "${launcher[@]}" >/dev/null
 cmake --build "$copy/build" --target shadowlab -j "$(nproc)" >"$work/build.log" 2>&1 \
   || { tail -30 "$work/build.log" >&2; echo "one_folder: the copy with labs/98_throwaway does not build" >&2; exit 1; }
