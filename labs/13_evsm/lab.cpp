@@ -114,16 +114,16 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, blurred wide, on the stacked occluders.",
        {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
-       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+       {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
       {"EVSM", "w = exp(42 z) in RG32F.", {{"vsm.warp", "exponential"}, {"vsm.evsm_exponent", "42"}, {"vsm.format", "RG32F"}}},
       {"small c", "c = 5 (the RG16F limit), blurred wide, on the stacked occluders: less sharpening, more bleeding.",
        {{"vsm.evsm_exponent", "5"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
-       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+       {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
       {"half floats", "RG16F (c is clamped to 5), blurred wide, on the stacked occluders.",
        {{"vsm.format", "RG16F"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
-       {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+       {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {

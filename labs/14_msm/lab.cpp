@@ -87,7 +87,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.presets = {
       {"paper", "alpha = 3e-5, the paper's moment bias.", {{"vsm.msm_moment_bias", "3e-5"}}},
       {"large bias", "alpha = 3e-3: the bound softens and light bleeds again.", {{"vsm.msm_moment_bias", "0.003"}},
-       {.provokes = "light bleeding", .fixed_by = "paper"}, {.scene = kStackedOccludersScene, .camera = kStackedOccludersCamera}},
+       {.provokes = "light bleeding", .fixed_by = "paper"}, {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {
