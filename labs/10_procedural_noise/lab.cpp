@@ -2,7 +2,7 @@
 // Demonstrates: 2D gradient noise from a texture of gradients (the four corners' gradients dotted with
 // the vectors from the corners to the point, blended with a smooth fade), the octave sum
 // noise(p) + 0.5 noise(2p) + 0.25 noise(4p), and a pattern it perturbs: the floor that receives the
-// shadows is wood (rings fract(10 |p|) through a smoothstep between two browns), busy enough to hide
+// shadows is wood (rings fract(rings |p|) through a smoothstep between the lecture's two browns), busy enough to hide
 // some acne and aliasing and not others.
 // Check: the student's functions run on chosen points (a probe, read back from a float target) and are
 // compared with a CPU reference of the same definition on the same gradient texture: determinism,
@@ -33,6 +33,10 @@ constexpr const char* kSolution = "shaders/noise/gradient_noise.glsl";
 // The gradient texture: kPeriod x kPeriod gradients at angles drawn from mt19937 with this seed (its
 // raw output, which the C++ standard fixes), stored as RGBA8 (g * 0.5 + 0.5).
 constexpr int kPeriod = 16;
+// The wood's defaults (shaders/noise/wood.glsl; the README says why they are not the lecture's 10 rings per
+// unit and 0.1 x noise added to the position).
+constexpr double kDefaultRings = 3.0;       // rings per world unit
+constexpr double kDefaultTurbulence = 0.8;  // rings the octave sum moves them
 constexpr std::uint32_t kGradientSeed = 1910;
 constexpr int kGridPerUnit = 16;                  // the spectrum grid: 16 samples per unit over one period
 constexpr int kGrid = kPeriod * kGridPerUnit;     // 256 x 256 samples
@@ -398,8 +402,8 @@ Lab SHADOWLAB_LAB_MAKER() {
        {"wood", "noise", "octave sum", "octaves (RGB)"}},
       {"noise.scale", "Noise scale", ParamKind::Float, 1.5, 0.25, 8.0,
        "Noise units (gradient texels) per world unit on the floor.", {}},
-      {"noise.rings", "Rings per unit", ParamKind::Float, 3.0, 1.0, 40.0, "The wood's rings per world unit.", {}},
-      {"noise.turbulence", "Turbulence", ParamKind::Float, 0.8, 0.0, 6.0,
+      {"noise.rings", "Rings per unit", ParamKind::Float, kDefaultRings, 1.0, 40.0, "The wood's rings per world unit.", {}},
+      {"noise.turbulence", "Turbulence", ParamKind::Float, kDefaultTurbulence, 0.0, 6.0,
        "How far the octave sum pushes the rings, in rings.", {}},
   };
   lab.presets = {
