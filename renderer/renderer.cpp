@@ -454,7 +454,7 @@ VolumeTriangles Renderer::count_volume_triangles(bool caps) {
   auto* volumes = dynamic_cast<ShadowVolumePass*>(shadow_.get());
   if (!volumes || !lit_) throw std::logic_error("count_volume_triangles needs the shadow-volume technique and a frame");
   glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
-  const VolumeTriangles count = volumes->count_triangles(light_.vector4(), caps);
+  const VolumeTriangles count = volumes->count_triangles(light_.vector4(), caps, local_scene_.bounds());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return count;
 }

@@ -11,7 +11,7 @@ namespace shadowlab {
 
 ShadowVolumePass::ShadowVolumePass()
     : program_({"shaders/volume/volume.vert", "shaders/volume/extrude.geom", "shaders/volume/volume.frag", {},
-                {{"lab/volume.glsl", "shaders/volume/volume.glsl"}}, {}, {"v_world_w"}}),
+                {{"lab/volume.glsl", "shaders/volume/volume.glsl"}}, {}, {"v_world_corner"}}),
       vao_(GlVertexArray::create()),
       positions_(GlBuffer::create()),
       indices_(GlBuffer::create()) {}
@@ -146,12 +146,13 @@ void ShadowVolumePass::draw_stencil(const glm::mat4& view_proj, const glm::vec4&
   glDepthMask(GL_TRUE);
 }
 
-VolumeTriangles ShadowVolumePass::count_triangles(const glm::vec4& light, bool caps) {
-  // Each input triangle emits at most max_vertices = 18 vertices: a strip of at most 16 triangles.
-  const std::size_t most = index_count_ / 6 * 16 * 3;
+VolumeTriangles ShadowVolumePass::count_triangles(const glm::vec4& light, bool caps, const Bounds& box) {
+  // Each input triangle emits at most max_vertices = 18 vertices: a strip of at most 16 triangles, each
+  // captured as its three corners in world space (v_world_corner).
+  const std::size_t most = index_count_ / 6 * 16 * 3 * 4;
   GlBuffer feedback = GlBuffer::create();
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedback.id());
-  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(most, 3) * sizeof(float)),
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(most, 12) * sizeof(float)),
                nullptr, GL_STATIC_READ);
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedback.id());
   GlQuery written = GlQuery::create();
@@ -166,15 +167,24 @@ VolumeTriangles ShadowVolumePass::count_triangles(const glm::vec4& light, bool c
   glDisable(GL_RASTERIZER_DISCARD);
   GLuint64 triangles = 0;
   glGetQueryObjectui64v(written.id(), GL_QUERY_RESULT, &triangles);
-  std::vector<float> w(static_cast<std::size_t>(triangles) * 3);
-  if (!w.empty()) glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLsizeiptr>(w.size() * sizeof(float)), w.data());
+  std::vector<glm::vec4> corners(static_cast<std::size_t>(triangles) * 3);
+  if (!corners.empty())
+    glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLsizeiptr>(corners.size() * sizeof(glm::vec4)),
+                       corners.data());
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+  // On the occluders: finite and inside the box, grown by a thousandth of its size for rounding.
+  const glm::vec3 slack = 1e-3f * (box.max - box.min) + glm::vec3(1e-6f);
+  const auto on_occluders = [&](const glm::vec4& c) {
+    if (c.w == 0.0f) return false;
+    const glm::vec3 p = glm::vec3(c) / c.w;
+    return glm::all(glm::greaterThanEqual(p, box.min - slack)) && glm::all(glm::lessThanEqual(p, box.max + slack));
+  };
   VolumeTriangles count;
   for (std::size_t t = 0; t < static_cast<std::size_t>(triangles); ++t) {
-    int finite = 0;
-    for (int v = 0; v < 3; ++v) finite += w[3 * t + static_cast<std::size_t>(v)] != 0.0f;
-    (finite == 3 ? count.near_caps : finite == 0 ? count.far_caps : count.sides) += 1;
+    int on = 0;
+    for (std::size_t v = 0; v < 3; ++v) on += on_occluders(corners[3 * t + v]);
+    (on == 3 ? count.near_caps : on == 0 ? count.far_caps : count.sides) += 1;
   }
   return count;
 }

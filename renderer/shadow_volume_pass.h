@@ -46,11 +46,14 @@ struct VolumeMeshReport {
   bool closed_manifold() const { return open_edges == 0 && non_manifold_edges == 0 && inconsistent_edges == 0; }
 };
 
-// The triangles a volume program emits for one light, sorted by kind.
+// The triangles a volume program emits for one light, sorted by kind. A corner is on the occluders when
+// it is a finite point inside the scene's box, and extruded otherwise: a point at infinity (w = 0), or a
+// finite point swept out of the box (a volume that stops at a far but finite distance must not pass for
+// caps).
 struct VolumeTriangles {
-  long sides = 0;      // finite points and points at infinity: the quads swept by edges
-  long near_caps = 0;  // finite points only
-  long far_caps = 0;   // points at infinity only
+  long sides = 0;      // corners on the occluders and extruded ones: the quads swept by edges
+  long near_caps = 0;  // corners on the occluders only
+  long far_caps = 0;   // extruded corners only
 };
 
 class ShadowVolumePass final : public ShadowPass {
@@ -84,7 +87,8 @@ class ShadowVolumePass final : public ShadowPass {
   // Captures the triangles the volumes emit for this light (transform feedback, nothing rasterised) and
   // sorts them by kind: how a grader tells an extrusion of the silhouette from one of every edge. A
   // complete framebuffer must be bound (draws need one even with rasterisation off).
-  VolumeTriangles count_triangles(const glm::vec4& light, bool caps);
+  // `box` is the scene's in the frame the volumes are drawn in.
+  VolumeTriangles count_triangles(const glm::vec4& light, bool caps, const Bounds& box);
   // The same geometry as lines, in colour, depth-tested against the scene (the debug view).
   void draw_wireframe(const glm::mat4& view_proj, const glm::vec4& light, bool caps, long& draws);
 

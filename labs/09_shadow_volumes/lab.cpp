@@ -91,15 +91,19 @@ void grade(CheckResult& result, const std::string& tag, const CheckContext::Meas
   }
 }
 
-// The side triangles the solution's volumes hold for the current scene and light.
-long solution_sides(CheckContext& ctx, const ParamSet& params, bool caps) {
+// The triangles the solution's volumes hold for the current scene and light.
+VolumeTriangles solution_triangles(CheckContext& ctx, const ParamSet& params, bool caps) {
   ctx.use(ctx.lab.hooks(Impl::Solution));
   FrameRequest request;
   request.camera = OrbitCamera::framing(ctx.scene().bounds());
   request.width = 64;
   request.height = 64;
   ctx.renderer.render(params, request);
-  return ctx.renderer.count_volume_triangles(caps).sides;
+  return ctx.renderer.count_volume_triangles(caps);
+}
+
+double ratio(long graded, long reference) {
+  return reference > 0 ? static_cast<double>(graded) / static_cast<double>(reference) : 0.0;
 }
 
 void check_volumes(CheckContext& ctx, CheckResult& result) {
@@ -123,11 +127,10 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
       if (std::string(type) != "point" || !z_fail) continue;
       // Each silhouette edge once: the point light's side triangles against the solution's.
       const VolumeTriangles graded = ctx.renderer.count_volume_triangles(true);
-      const long reference = solution_sides(ctx, p, true);
+      const VolumeTriangles reference = solution_triangles(ctx, p, true);
       result.metrics["volume_triangles"] = {{"sides", graded.sides}, {"near_caps", graded.near_caps},
-                                            {"far_caps", graded.far_caps}, {"solution_sides", reference}};
-      result.criteria.push_back({"silhouettes.side_triangles_ratio_to_solution",
-                                 reference > 0 ? static_cast<double>(graded.sides) / static_cast<double>(reference) : 0.0,
+                                            {"far_caps", graded.far_caps}, {"solution_sides", reference.sides}};
+      result.criteria.push_back({"silhouettes.side_triangles_ratio_to_solution", ratio(graded.sides, reference.sides),
                                  Criterion::kAtMost, kMaxSidesRatio,
                                  "each silhouette edge extruded once: no more side triangles than the solution's",
                                  "extrude only the silhouette edges, each once (from its light-facing triangle): extruding "

@@ -15,9 +15,9 @@ in vec3 v_world_position[];
 uniform mat4 u_view_proj;  // the camera's, with the far plane at infinity
 uniform vec4 u_light;      // w = 1: the position of a point or spot light; w = 0: direction toward the light
 uniform bool u_caps;       // z-fail needs closed volumes; z-pass draws no caps
-// Per vertex: 1 a point, 0 a point at infinity. Only read when the grader captures the volumes'
-// triangles (transform feedback) to tell sides from caps.
-out float v_world_w;
+// Each vertex's world position (w = 0 a point at infinity). Only read when the grader captures the
+// volumes' triangles (transform feedback) to tell sides from caps by where their corners are.
+out vec4 v_world_corner;
 
 bool directional_light() { return u_light.w == 0.0; }
 
@@ -45,14 +45,14 @@ vec4 at_infinity(vec3 p) { return vec4(-toward_light(p), 0.0); }
 // End each strip with EndPrimitive().
 void emit(vec4 world) {
   gl_Position = u_view_proj * world;
-  v_world_w = world.w;
+  v_world_corner = world;
   EmitVertex();
 }
 
 #include "lab/volume.glsl"
 
 void main() {
-  v_world_w = 1.0;  // written here too: an exercise that emits nothing must still link with the capture
+  v_world_corner = vec4(0.0);  // written here too: an exercise that emits nothing must still link with the capture
   emit_volume(v_world_position[0], v_world_position[1], v_world_position[2], v_world_position[3],
               v_world_position[4], v_world_position[5]);
 }
