@@ -62,6 +62,7 @@ void print_result(const CheckResult& r) {
                                          : r.status() == CheckStatus::CompileError ? "your file does not build"
                                                                                    : "your exercise failed", r.error.c_str());
   if (!r.warnings.empty()) std::printf("    warnings:\n%s", r.warnings.c_str());
+  for (const auto& note : r.notes) std::printf("    note: %s\n", note.c_str());
   for (const auto& c : r.criteria) {
     std::printf("    %-4s %-40s %12.6g %s %-10.6g %s\n", c.passed() ? "ok" : "FAIL", c.metric.c_str(), c.value,
                 c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());

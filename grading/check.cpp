@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -58,6 +60,7 @@ nlohmann::json CheckResult::to_json() const {
   if (!images.empty()) j["images"] = images;
   if (!error.empty()) j["error"] = error;
   if (!warnings.empty()) j["warnings"] = warnings;
+  if (!notes.empty()) j["notes"] = notes;
   return j;
 }
 
@@ -251,6 +254,38 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
       throw BuildError(file + ": not in the submission (lay it out like the project: " + file + ")");
     graded.push_back(path);
   }
+}
+
+namespace {
+
+// A text file's bytes without carriage returns: a checkout with CRLF line ends and the copy the compiler
+// embedded (which reads them as plain line ends) are the same file.
+std::string without_carriage_returns(std::string text) {
+  std::erase(text, '\r');
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> CheckContext::grade_edited_cpp_files() {
+  std::vector<std::string> notes;
+  for (auto& file : graded) {
+    const auto copy = lab.compiled_copies.find(file.generic_string());
+    if (copy == lab.compiled_copies.end()) continue;
+    const std::filesystem::path on_disk = data_dir() / file;
+    std::ifstream in(on_disk, std::ios::binary);
+    if (!in) throw BuildError(copy->first + ": cannot be read (" + on_disk.string() + ")");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (without_carriage_returns(text) == without_carriage_returns(std::string(copy->second))) continue;
+    if (const std::string why = platform::grading_unavailable(); !why.empty())
+      throw ExerciseError("compile_error", copy->first + " has changed since this shadowlab was built: rebuild it "
+                                               "(cmake --build build), then Check again (on Linux, Check builds an edited "
+                                               "C++ exercise on its own; here " + why + ")");
+    notes.push_back(copy->first + " differs from the copy built into this program: graded from the file on disk, "
+                    "compiled on its own (as a submission is)");
+    file = std::filesystem::absolute(on_disk);
+  }
+  return notes;
 }
 
 Features CheckContext::hooks_with_only(std::size_t slot) const {
@@ -461,7 +496,10 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
   const auto start = std::chrono::steady_clock::now();
   try {
     CheckContext ctx(renderer, lab, run.impl, scene, run.out_dir);
-    if (!run.submission.empty()) ctx.grade_submission(run.submission);
+    if (!run.submission.empty())
+      ctx.grade_submission(run.submission);
+    else if (run.impl == Impl::Exercise)
+      result.notes = ctx.grade_edited_cpp_files();
     ctx.seed = run.seed;
     ctx.assignments = run.assignments;
     result.parameters = ctx.params().to_json();

@@ -63,6 +63,7 @@ struct CheckResult {
   bool students_error = false;                       // error is the student's (their file does not build)
   CheckStatus students_failure = CheckStatus::CompileError;  // with students_error: how their code failed
   std::string warnings;                              // compiler warnings in the graded files
+  std::vector<std::string> notes;                    // what the student should know of how it was graded
   double seconds = 0.0;
 
   bool passed() const;
@@ -106,6 +107,11 @@ class CheckContext {
 
   // Grade a submission: a folder laid out like the project, whose files take the exercise's slots.
   void grade_submission(const std::filesystem::path& folder);
+  // Grade the lab's own C++ exercise files from disk where they differ from the copies compiled into this
+  // program (Lab::compiled_copies): each such slot then holds the file's absolute path, which the lab
+  // builds on its own like a submission's. Returns a note per file so graded; throws ExerciseError where
+  // this platform cannot build a file on its own (no sandbox: rebuild instead).
+  std::vector<std::string> grade_edited_cpp_files();
 
   // The graded files' hooks; and the solution's hooks with only slot `slot` taken from the graded
   // files (to grade one part of a multi-file exercise on its own).

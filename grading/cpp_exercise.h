@@ -14,8 +14,9 @@
 // system's functions (main, a C function), code that runs before main, calls into the grader's code
 // other than the functions the lab offers. Compiling and linking each have a time limit; so does a call.
 //
-// The local student flow is unchanged: without a submission, lab 2 grades the exercise compiled into
-// the binary (edit, rebuild, Check).
+// The local student flow: without a submission, a lab grades the exercise compiled into the binary while
+// the file on disk is that copy, and builds the file here, like a submission's, once it was edited
+// (CheckContext::grade_edited_cpp_files, grading/check.h).
 #pragma once
 
 #include <filesystem>

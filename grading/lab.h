@@ -91,6 +91,10 @@ struct Lab {
   // Files the student edits, relative to the data folder; the solution's files in the same order.
   std::vector<std::string> exercise_files;
   std::vector<std::string> solution_files;
+  // The C++ exercise files compiled into this program, each with its text as it was built (relative path
+  // -> text; labs/CMakeLists.txt embeds them). Check grades the file on disk, never a stale copy: when the
+  // file differs from its copy, it is built on its own like a submission's (grading/check.cpp).
+  std::map<std::string, std::string_view> compiled_copies;
   // The virtual includes a student's file may use (e.g. "lab/bias.glsl"); any other include in a
   // student's file is refused, so an exercise cannot borrow the solution.
   std::set<std::string> offered_includes;

@@ -7,6 +7,9 @@ namespace shadowlab {
 Lab folder_lab(Lab lab, int number, std::string slug) {
   lab.number = number;
   lab.slug = std::move(slug);
+  const std::string prefix = lab.folder() + "/";
+  for (const auto& [file, text] : compiled_exercises())
+    if (file.starts_with(prefix)) lab.compiled_copies.emplace(file, text);
   return lab;
 }
 

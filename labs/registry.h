@@ -3,6 +3,7 @@
 // there are, so only the labs and what stands above them (the app, the bench) can ask it.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,5 +28,9 @@ const Lab* find_lab_offering(std::string_view bench_technique);
 // Generated from the folders (build/labs/lab_list.cpp): each folder's lab, numbered by folder_lab.
 std::vector<Lab> folder_labs();
 Lab folder_lab(Lab lab, int number, std::string slug);
+// Generated at build time (build/labs/compiled_exercises.cpp, by cmake/embed_exercises.cmake): every
+// lab's C++ exercise file (labs/NN_slug/exercise.cpp) as it was when this program was built, by its path
+// relative to the project. folder_lab hands each lab its own (Lab::compiled_copies).
+const std::map<std::string, std::string_view>& compiled_exercises();
 
 }  // namespace shadowlab

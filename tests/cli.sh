@@ -294,6 +294,34 @@ PY
       || fail "JSON does not record the exercise failing"
     "$bin" check --help | grep -q "the default" || fail "--help does not say which is graded by default"
     ;;
+  check_edited_cpp)  # issue 34: Check grades a C++ exercise edited since the build from disk, never the compiled copy
+    # A data folder like the source tree (SHADOWLAB_DATA_DIR), with labs 2 and 12 copied so their exercises can be edited.
+    mkdir -p "$tmp/data/labs"
+    for f in "$src"/*; do [ "$(basename "$f")" = labs ] || ln -s "$f" "$tmp/data/"; done
+    for f in "$src"/labs/*; do ln -s "$f" "$tmp/data/labs/"; done
+    for lab in 02_ortho_fit 12_cascaded_shadow_maps; do rm "$tmp/data/labs/$lab"; cp -r "$src/labs/$lab" "$tmp/data/labs/"; done
+    export SHADOWLAB_DATA_DIR="$tmp/data"
+    # Unchanged: the copy compiled in is graded (the stock exercise fails), and no note says otherwise.
+    "$bin" check --lab 2 --json "$tmp/stock.json" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "the stock exercise: exit $rc, expected 1: $(cat "$tmp/out")"
+    grep -q "note:" "$tmp/out" && fail "an unchanged exercise was graded from disk: $(cat "$tmp/out")"
+    # Edited into a right answer: graded from the file (passes), and the report says so.
+    cp "$src/tests/answers/02_ortho_fit/right/own_basis__exercise.cpp" "$tmp/data/labs/02_ortho_fit/exercise.cpp"
+    "$bin" check --lab 2 --json "$tmp/edited.json" >"$tmp/out" || fail "an edited right answer fails: $(cat "$tmp/out")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='passed' and 'labs/02_ortho_fit/exercise.cpp differs' in r['notes'][0], r" "$tmp/edited.json" \
+      || fail "the JSON does not record the edited file graded from disk"
+    # The same file with CRLF line ends is the compiled copy (a Windows checkout): not rebuilt.
+    sed 's/$/\r/' "$src/labs/12_cascaded_shadow_maps/exercise.cpp" >"$tmp/data/labs/12_cascaded_shadow_maps/exercise.cpp"
+    "$bin" check --lab 12 >"$tmp/out"
+    grep -q "note:" "$tmp/out" && fail "CRLF line ends alone made the exercise count as edited: $(cat "$tmp/out")"
+    # Edited into a compile error: the student's file and line, status compile_error, exit 1.
+    printf 'int broken = ;\n' >>"$tmp/data/labs/12_cascaded_shadow_maps/exercise.cpp"
+    "$bin" check --lab 12 --json "$tmp/broken.json" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "an edited file that does not build: exit $rc, expected 1"
+    grep -q "labs/12_cascaded_shadow_maps/exercise.cpp:[0-9]*:[0-9]*: error" "$tmp/out" || fail "the error does not name the student's line: $(cat "$tmp/out")"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='compile_error', r" "$tmp/broken.json" \
+      || fail "the JSON does not record a compile error"
+    ;;
   check_submission)  # a submission's file is graded; its compile error is the student's: status compile_error, exit 1
     mkdir -p "$tmp/sub/labs/06_pcf" "$tmp/bad/labs/06_pcf" "$tmp/borrow/labs/06_pcf"
     cp "$src/shaders/shadow/pcf.glsl" "$tmp/sub/labs/06_pcf/exercise.glsl"
