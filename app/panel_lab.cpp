@@ -138,6 +138,7 @@ void draw_check_result(const CheckResult& r, bool interactive) {
   }
   ImGui::PushTextWrapPos(0.0f);
   if (!r.error.empty()) ImGui::TextColored(kRed, "%s", r.error.c_str());
+  for (const auto& note : r.notes) ImGui::TextDisabled("%s", note.c_str());  // e.g. an edited C++ file graded from disk
   std::vector<std::string> hints;
   for (const auto& c : r.criteria) {
     if (c.passed()) continue;
