@@ -1,6 +1,7 @@
 #include "oracle/soft_truth.h"
 
 #include "oracle/parallel_rows.h"
+#include "oracle/sampling.h"
 
 #include <algorithm>
 #include <array>
@@ -20,24 +21,6 @@ constexpr int kPilots = 17;         // EdgeRefined's rays per pixel before it de
 // a 5-degree sun, 1 left 94 pixels off Full sampling's truth (worst 0.082) and 2 leaves 16 (worst 0.039),
 // for about a third more rays.
 constexpr std::size_t kReach = 2;
-
-// A well-mixed 32-bit integer hash (Wellons' "lowbias32") to [0, 1): the jitter of a sample in its cell.
-float hash01(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return static_cast<float>(x >> 8) * (1.0f / 16777216.0f);
-}
-
-
-// Two unit vectors perpendicular to unit d and to each other.
-void basis(const glm::vec3& d, glm::vec3& e1, glm::vec3& e2) {
-  const glm::vec3 a = std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  e1 = glm::normalize(glm::cross(a, d));
-  e2 = glm::cross(d, e1);
-}
 
 }  // namespace
 
@@ -69,7 +52,7 @@ SoftTruth evaluate_soft(const Oracle& oracle, const GBuffer& gbuffer, const Orac
     const float len = glm::length(light.to_light);
     if (!(len > 0.0f) || !std::isfinite(len)) throw std::invalid_argument("soft truth: light direction is zero or not finite");
     to_light = light.to_light / len;
-    basis(to_light, sun_e1, sun_e2);
+    orthonormal_pair(to_light, sun_e1, sun_e2);
   }
   const bool hard = size == 0.0f;
   const int k = hard ? 1 : strata;
@@ -103,7 +86,7 @@ SoftTruth evaluate_soft(const Oracle& oracle, const GBuffer& gbuffer, const Orac
       const float dist = glm::length(d);
       if (!(dist > 0.0f) || !std::isfinite(dist)) return std::nullopt;
       r.l = d / dist;
-      basis(r.l, r.e1, r.e2);  // the disk faces the point
+      orthonormal_pair(r.l, r.e1, r.e2);  // the disk faces the point
     }
     if (!(glm::dot(n, r.l) > 0.0f)) return std::nullopt;
     r.origin = p + n * r.eps;
@@ -128,13 +111,11 @@ SoftTruth evaluate_soft(const Oracle& oracle, const GBuffer& gbuffer, const Orac
   auto full_estimate = [&](std::size_t i, const Rays& r) {
     if (hard) return reaches(r, 0.0f, 0.0f) ? 1.0f : 0.0f;
     int free = 0;
-    const auto seed = static_cast<std::uint32_t>(i) * 2654435761U;
+    const std::uint32_t seed = pixel_seed(i);
     for (int sy = 0; sy < k; ++sy)
       for (int sx = 0; sx < k; ++sx) {
-        const auto s = static_cast<std::uint32_t>(sy * k + sx);
-        const float u = (static_cast<float>(sx) + hash01(seed ^ (2 * s + 1) * 0x9e3779b9U)) / static_cast<float>(k);
-        const float v = (static_cast<float>(sy) + hash01(seed ^ (2 * s + 2) * 0x85ebca6bU)) / static_cast<float>(k);
-        const glm::vec2 q = radius * concentric_disk(u, v);
+        const glm::vec2 uv = jittered_cell(seed, sx, sy, k);
+        const glm::vec2 q = radius * concentric_disk(uv.x, uv.y);
         free += reaches(r, q.x, q.y) ? 1 : 0;
       }
     return static_cast<float>(free) / static_cast<float>(k * k);
