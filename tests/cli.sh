@@ -898,7 +898,7 @@ PY
     "$bin" render --lab 1 --preset acne --set shadow.slope_bias=1 --out "$tmp/acne" --width 64 --height 64 >/dev/null || fail "render --preset failed"
     python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['parameters']; assert p['shadow.bias'] == 0 and p['shadow.slope_bias'] == 1, p" \
       "$tmp/acne/render.json" || fail "render --preset acne --set shadow.slope_bias=1 not applied in that order"
-    want="--preset nope: lab 1 (Bias: acne vs peter-panning) has no preset 'nope'; its presets: 'acne', 'peter-panning', 'tuned'"
+    want="--preset nope: lab 1 (Bias: acne vs peter-panning) has no preset 'nope'; its presets: 'acne', 'peter-panning', 'tuned', 'cull front', 'no culling'"
     for cmd in "render --out $tmp/o" "check" ""; do
       expect_error "$want" "$bin" $cmd --lab 1 --preset nope; one_line
       "$bin" $cmd --lab 1 --preset nope >/dev/null 2>&1; rc=$?
