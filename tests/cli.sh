@@ -1032,6 +1032,26 @@ ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
 assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
 PY
     ;;
+  window_click)  # issue 35: a click on a panel button, through ImGui's mouse callbacks, does what the button says
+    # Lab 1 at 1280x720: the button "F4 cull front" has its centre at (62, 302) in the panel (measured in a
+    # screenshot of this layout). Clicking it must give the picture F4 gives (the preset's values, camera and
+    # caption). A click that misses it leaves the view as it was (at (62, 340), below the button: 0.08 % of the view changed, against 90 % for the hit).
+    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,click:62;302,frames:3,screenshot:$tmp/clicked.png"
+    window --lab 1 --size 1280x720 --script "frames:3,key:f4,frames:3,screenshot:$tmp/f4.png"
+    png_python - "$tmp" <<'PY' || fail "clicking the preset's button did not choose the preset"
+import sys
+from png_tools import load, differing
+w, h, _ = load(f"{sys.argv[1]}/plain.png")
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "clicked", "f4")}
+# Right of the panel, above and below the row where the button's tooltip (its description) spills into the view.
+above, below = (460, 0, w, 300), (460, 340, w, h)
+stats = {"clicked/plain": (differing(r["clicked"], r["plain"], *above) + differing(r["clicked"], r["plain"], *below)) / 2,
+         "clicked/F4": (differing(r["clicked"], r["f4"], *above) + differing(r["clicked"], r["f4"], *below)) / 2}
+print(stats)
+assert stats["clicked/plain"] > 0.3, "the click changed (almost) nothing in the view: did it miss the button?"
+assert stats["clicked/F4"] < 0.005, "the click gave another picture than the preset's key F4"
+PY
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"
