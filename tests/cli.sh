@@ -594,7 +594,10 @@ assert stats["view bad/before"] < 0.01, "a bad file changed the scene"
 assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
 PY
     ;;
-  window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
+  window_bad_script)
+    expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey"
+    for step in "click:62" "click:62;" "click:x;302" "click:-1;302"; do expect_error "--script: bad step '$step'" "$bin" --script "frames:1,$step"; done
+    ;;
   render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words, visible at 1280x720 without scrolling
     "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 1280 --height 720 >/dev/null || fail "render failed"
     "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
