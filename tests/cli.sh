@@ -983,7 +983,7 @@ assert stats["text size 2: panel"] > 0.2, "the kept text size was not used"
 PY
     ;;
   window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
-    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture).
+    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture), cull front, no culling.
     window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png,key:f2,frames:3,key:f3,frames:3,screenshot:$tmp/f2f3.png"
     # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
     window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
