@@ -48,6 +48,12 @@ InputScript::InputScript(const std::string& text) {
         s.a = std::stoi(s.arg);
       } else if (s.kind == "wait") {
         s.a = static_cast<int>(std::stod(s.arg) * 1000.0);
+      } else if (s.kind == "click") {
+        const auto semicolon = s.arg.find(';');
+        if (semicolon == std::string::npos) throw bad();
+        s.a = std::stoi(s.arg.substr(0, semicolon));
+        s.b = std::stoi(s.arg.substr(semicolon + 1));
+        if (s.a < 0 || s.b < 0) throw bad();
       } else if (s.kind == "resize") {
         const auto x = s.arg.find('x');
         s.a = std::stoi(s.arg.substr(0, x));
@@ -75,12 +81,29 @@ std::string InputScript::advance(GLFWwindow* window, double now) {
     wait_until_frame_ = frames_drawn_ + 1;  // let a frame see the release before the next press
     return {};
   }
+  if (pending_click_release_) {
+    ImGui_ImplGlfw_MouseButtonCallback(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, 0);
+    pending_click_release_ = false;
+    wait_until_frame_ = frames_drawn_ + 1;
+    return {};
+  }
   std::string screenshot;
   while (next_ < steps_.size() && frames_drawn_ >= wait_until_frame_ && now >= wait_until_time_) {
     const Step& s = steps_[next_++];
     if (s.kind == "key") {
       ImGui_ImplGlfw_KeyCallback(window, s.a, glfwGetKeyScancode(s.a), GLFW_PRESS, 0);
       pending_release_ = s.a;
+      wait_until_frame_ = frames_drawn_ + 1;  // the next drawn frame sees it pressed
+    } else if (s.kind == "click") {
+      // The pointer moved as a person's mouse would move it; ImGui 1.86's backend reads its position
+      // from GLFW once it knows the pointer is over the window, later ones take it from the callback.
+      glfwSetCursorPos(window, s.a, s.b);
+      ImGui_ImplGlfw_CursorEnterCallback(window, GLFW_TRUE);
+#if IMGUI_VERSION_NUM >= 18700
+      ImGui_ImplGlfw_CursorPosCallback(window, s.a, s.b);
+#endif
+      ImGui_ImplGlfw_MouseButtonCallback(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
+      pending_click_release_ = true;
       wait_until_frame_ = frames_drawn_ + 1;  // the next drawn frame sees it pressed
     } else if (s.kind == "frames") {
       wait_until_frame_ = frames_drawn_ + s.a;

@@ -2,6 +2,8 @@
 // Key presses go through ImGui's GLFW key callback, the handler a real key press reaches, so a test
 // exercises the same path a person's keyboard does. Steps, in order, one per comma:
 //   key:K          press and release K (a digit, a letter, f1..f12, left, right, escape, pagedown, pageup)
+//   click:X;Y      move the mouse to pixel (X, Y) of the window (0;0 its top left) and click the left button
+//                  there (pressed one frame, released the next), through ImGui's GLFW mouse callbacks
 //   frames:N       let N frames pass
 //   screenshot:F   save the next drawn frame, panel included, to F
 //   resize:WxH     set the window's size
@@ -32,7 +34,9 @@ class InputScript {
   std::string advance(GLFWwindow* window, double now);
   // Call after each drawn frame.
   void frame_drawn() { ++frames_drawn_; }
-  bool finished() const { return next_ >= steps_.size() && pending_release_ < 0 && frames_drawn_ >= wait_until_frame_; }
+  bool finished() const {
+    return next_ >= steps_.size() && pending_release_ < 0 && !pending_click_release_ && frames_drawn_ >= wait_until_frame_;
+  }
   // True once after a `check` step.
   bool take_check_request() { return std::exchange(check_requested_, false); }
   // True once after a `solution-beside` step.
@@ -46,6 +50,7 @@ class InputScript {
   std::vector<Step> steps_;
   std::size_t next_ = 0;
   int pending_release_ = -1;  // a key pressed last turn, released this turn (ImGui 1.86 reads key state)
+  bool pending_click_release_ = false;  // the left button pressed last turn, released this turn
   long frames_drawn_ = 0;
   long wait_until_frame_ = 0;
   double wait_until_time_ = 0.0;

@@ -333,7 +333,7 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
   // Shadow volumes reach to infinity: the camera's far plane goes there too (third row 0, 0, -1, -2n).
   camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(camera.fov_y_deg), aspect, camera.near_plane)
                                           : camera.projection(aspect);
-  const int cull = features_.shadow_cull_override ? features_.shadow_cull_override() : static_cast<int>(params.get("shadow.cull"));
+  const int cull = features_.shadow_cull_override ? features_.shadow_cull_override(params) : static_cast<int>(params.get("shadow.cull"));
   std::optional<OrbitCamera> cascade_camera;
   if (request.cascade_camera) cascade_camera = to_local(*request.cascade_camera, placement_);
   return {local_scene_,

@@ -58,8 +58,9 @@ struct Features {
   IncludeRules include_rules;
   LightFit light_fit;  // a directional light's view and projection; empty: fit_light_ortho
   // Front-, back- or no culling in the shadow pass (0, 1, 2), when something other than the shadow.cull
-  // parameter decides it (e.g. a directive in an included file).
-  std::function<int()> shadow_cull_override;
+  // parameter alone decides it (e.g. a directive in an included file, unless a parameter says otherwise);
+  // called with the frame's parameters.
+  std::function<int(const ParamSet&)> shadow_cull_override;
   // What the shadow pass stores. Moments: the vsm.* parameters apply (core/vsm_params.h), and
   // "lab/moments.glsl", "lab/chebyshev.glsl", "lab/blur.glsl" with it. ShadowVolumes: "lab/volume.glsl"
   // (what a triangle emits) and the volume.* parameters (core/technique_params.h).

@@ -622,7 +622,10 @@ assert stats["view bad/before"] < 0.01, "a bad file changed the scene"
 assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
 PY
     ;;
-  window_bad_script) expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey" ;;
+  window_bad_script)
+    expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey"
+    for step in "click:62" "click:62;" "click:x;302" "click:-1;302"; do expect_error "--script: bad step '$step'" "$bin" --script "frames:1,$step"; done
+    ;;
   render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words, visible at 1280x720 without scrolling
     "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 1280 --height 720 >/dev/null || fail "render failed"
     "$bin" render --lab 1 --impl exercise --panel --check --out "$tmp/panel" --width 1280 --height 720 >/dev/null || fail "render --panel failed"
@@ -886,7 +889,7 @@ PY
     # over the artifact preset's, in the artifact preset's scene and camera, so only what the fix sets
     # differs. One `render` per picture (about 1 s each at 1280x720 on llvmpipe; 2 per pair).
     "$bin" labs --presets --json >"$tmp/presets.json" || fail "labs --presets --json: exit $?"
-    png_python - "$bin" "$tmp" "$tmp/presets.json" "2:aliasing" <<'PY' || fail "an artifact's preset barely differs from its fix (figures above)"
+    png_python - "$bin" "$tmp" "$tmp/presets.json" <<'PY' || fail "an artifact's preset barely differs from its fix (figures above)"
 import json, subprocess, sys
 from png_tools import load, differing
 bin_, tmp, listing = sys.argv[1:4]
@@ -900,9 +903,6 @@ def render(lab, preset, sets, out):
            "--height", str(H), "--out", out] + [a for kv in sets for a in ("--set", kv)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     return load(out + "/final.png")[2]
-# Pairs whose view has not been found yet (issue 35 open for them): below 2 % here, each must still
-# change at least 0.1 % of the frame, and one that reaches 2 % must leave this list.
-BELOW = set(sys.argv[4:])
 bad, n = [], 0
 for lab in json.load(open(listing))["labs"]:
     presets = {p["name"]: p for p in lab["presets"]}
@@ -919,10 +919,8 @@ for lab in json.load(open(listing))["labs"]:
         n += 1
         share = differing(a, b, 0, 0, W, H)
         print("%-55s against '%s': %6.2f %% of the pixels differ" % (where, fix["name"], 100 * share))
-        known = "%d:%s" % (lab["number"], p["name"]) in BELOW
-        if known != (share < 0.02) or share < 0.001:
-            bad.append("%s against '%s': %.2f %% (%s)" % (where, fix["name"], 100 * share,
-                                                      "listed as below 2 %" if known else "< 2 %"))
+        if share < 0.02:
+            bad.append("%s against '%s': %.2f %% < 2 %%" % (where, fix["name"], 100 * share))
 assert n >= 20, n
 assert not bad, bad
 PY
@@ -931,7 +929,7 @@ PY
     "$bin" render --lab 1 --preset acne --set shadow.slope_bias=1 --out "$tmp/acne" --width 64 --height 64 >/dev/null || fail "render --preset failed"
     python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['parameters']; assert p['shadow.bias'] == 0 and p['shadow.slope_bias'] == 1, p" \
       "$tmp/acne/render.json" || fail "render --preset acne --set shadow.slope_bias=1 not applied in that order"
-    want="--preset nope: lab 1 (Bias: acne vs peter-panning) has no preset 'nope'; its presets: 'acne', 'peter-panning', 'tuned'"
+    want="--preset nope: lab 1 (Bias: acne vs peter-panning) has no preset 'nope'; its presets: 'acne', 'peter-panning', 'tuned', 'cull front', 'no culling'"
     for cmd in "render --out $tmp/o" "check" ""; do
       expect_error "$want" "$bin" $cmd --lab 1 --preset nope; one_line
       "$bin" $cmd --lab 1 --preset nope >/dev/null 2>&1; rc=$?
@@ -1013,7 +1011,7 @@ assert stats["text size 2: panel"] > 0.2, "the kept text size was not used"
 PY
     ;;
   window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
-    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture).
+    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture), cull front, no culling.
     window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png,key:f2,frames:3,key:f3,frames:3,screenshot:$tmp/f2f3.png"
     # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
     window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
@@ -1063,6 +1061,26 @@ rs, re_, le = stats["beside: right vs solution, right vs exercise, left vs exerc
 assert re_ > 0.02 and rs < re_ / 3 and le < re_ / 3, "Solution beside it did not put the solution's picture on the right"
 ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
 assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
+PY
+    ;;
+  window_click)  # issue 35: a click on a panel button, through ImGui's mouse callbacks, does what the button says
+    # Lab 1 at 1280x720: the button "F4 cull front" has its centre at (62, 302) in the panel (measured in a
+    # screenshot of this layout). Clicking it must give the picture F4 gives (the preset's values, camera and
+    # caption). A click that misses it leaves the view as it was (at (62, 340), below the button: 0.08 % of the view changed, against 90 % for the hit).
+    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,click:62;302,frames:3,screenshot:$tmp/clicked.png"
+    window --lab 1 --size 1280x720 --script "frames:3,key:f4,frames:3,screenshot:$tmp/f4.png"
+    png_python - "$tmp" <<'PY' || fail "clicking the preset's button did not choose the preset"
+import sys
+from png_tools import load, differing
+w, h, _ = load(f"{sys.argv[1]}/plain.png")
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "clicked", "f4")}
+# Right of the panel, above and below the row where the button's tooltip (its description) spills into the view.
+above, below = (460, 0, w, 300), (460, 340, w, h)
+stats = {"clicked/plain": (differing(r["clicked"], r["plain"], *above) + differing(r["clicked"], r["plain"], *below)) / 2,
+         "clicked/F4": (differing(r["clicked"], r["f4"], *above) + differing(r["clicked"], r["f4"], *below)) / 2}
+print(stats)
+assert stats["clicked/plain"] > 0.3, "the click changed (almost) nothing in the view: did it miss the button?"
+assert stats["clicked/F4"] < 0.005, "the click gave another picture than the preset's key F4"
 PY
     ;;
   *) fail "unknown case $case_name" ;;

@@ -15,13 +15,22 @@ namespace shadowlab {
 
 namespace {
 
+// Lab 1's shadow.cull: the renderer's three choices and a fourth, the lab's default, that leaves the
+// culling to the file's `#define SHADOW_PASS_CULL` line (what the check grades). The other three try a
+// culling without editing the file (the presets "cull front" and "cull back").
+constexpr double kCullFromFile = 3.0;
+
 // The culling the student chose with `#define SHADOW_PASS_CULL ...` in the exercise file: 0 none,
-// 1 front, 2 back (the order of the shadow.cull parameter's choices). Re-read when the file changes;
-// called every frame, so an unchanged file costs one stat and no allocation (the path is resolved once).
+// 1 front, 2 back (the order of the shadow.cull parameter's choices), unless shadow.cull names one of
+// these. Re-read when the file changes; called every frame, so an unchanged file costs one stat and no
+// allocation (the path is resolved once).
 class CullDirective {
  public:
   explicit CullDirective(std::filesystem::path file) : file_(std::move(file)) {}
-  int operator()() {
+  int operator()(const ParamSet& params) {
+    // A parameter set without lab 1's declaration of shadow.cull (a benchmark's, a test's) leaves it to the file.
+    const double chosen = params.get("shadow.cull");
+    if (chosen != kCullFromFile && params.find("shadow.cull")->choices.size() > kCullFromFile) return static_cast<int>(chosen);
     if (!resolved_) {
       file_ = data_dir() / file_;
       resolved_ = true;
@@ -145,6 +154,11 @@ const HardLimits kCullingLimits{
                      "sides and drops the single-sided ground, so the ground behind the boxes' feet is lit. Use NONE "
                      "or BACK on this scene."};
 
+// The "cull front" preset's view: low beside the big box's shadow-side corner, where its far sides meet
+// the ground. Against "no culling" 33.43 % of a 1280x720 frame's pixels differ (cli.preset_contrast): the
+// ground behind both feet is lit in a wedge nearly as wide as the box.
+constexpr const char* kCullLeakCamera = "eye=-4.6,0.8,0.6 target=-3.4,0.2,-0.6 fov=40";
+
 void check_culling(CheckContext& ctx, CheckResult& result, ParamSet params) {
   Features hooks = ctx.lab.hooks(Impl::Solution);
   hooks.shadow_cull_override = ctx.hooks().shadow_cull_override;
@@ -161,6 +175,7 @@ void check_bias(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
   params.set("light.elevation", 10.0);  // grazing light: where a constant bias breaks down
   params.set("view.debug_quad", 0.0);
+  params.set("shadow.cull", kCullFromFile);  // the file's #define line is graded, whatever the parameter says
   grade_lab_and_held_out_lights(ctx, result, "lab01", "grazing", params, params, kHeldOut, kLimits);
   // 3. The culling alone.
   check_culling(ctx, result, params);
@@ -180,14 +195,24 @@ Lab SHADOWLAB_LAB_MAKER() {
   slope.default_value = 2.0;
   auto elevation = *ParamSet(renderer_param_specs()).find("light.elevation");
   elevation.default_value = 10.0;
-  lab.params = {bias, slope, elevation};
+  auto cull = *ParamSet(renderer_param_specs()).find("shadow.cull");
+  cull.choices.push_back("#define");
+  cull.max = cull.default_value = kCullFromFile;
+  cull.tooltip = "Which faces the shadow pass skips. #define: as the file's `#define SHADOW_PASS_CULL` line says (what "
+                 "the check grades); none, front or back: try one without editing the file.";
+  lab.params = {bias, slope, elevation, cull};
   lab.presets = {
       {"acne", "No bias at all: stripes of self-shadowing.", {{"shadow.bias", "0"}, {"shadow.slope_bias", "0"}},
        {.provokes = "acne", .fixed_by = "tuned"}},
       {"peter-panning", "A large bias under a low light, seen from the thin plate's foot: its shadow detaches from it.",
        {{"shadow.bias", "0.05"}, {"shadow.slope_bias", "0"}, {"light.elevation", "20"}},
        {.provokes = "peter-panning", .fixed_by = "tuned"}, {.camera = "eye=-1.6,0.7,2.6 target=0.1,0.1,0.4 fov=40"}},
-      {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}}},
+      {"tuned", "The lab's defaults.", {{"shadow.bias", "0.0005"}, {"shadow.slope_bias", "2"}, {"shadow.cull", "#define"}}},
+      {"cull front", "Front faces culled in the shadow pass: the map holds no ground, only the boxes' far sides; light leaks in at their feet.",
+       {{"shadow.cull", "front"}, {"light.elevation", "8"}, {"shadow.map_size", "256"}},
+       {.provokes = "culling leak", .fixed_by = "no culling"}, {.camera = kCullLeakCamera}},
+      {"no culling", "Nothing culled in the shadow pass (the solution's #define): the bias alone keeps lit faces lit.",
+       {{"shadow.cull", "none"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;
