@@ -233,13 +233,20 @@ TEST_F(ShadowedLightTest, AThirdLightIsOneMoreEntry) {
   EXPECT_EQ(labels, expected);
 }
 
+// The most the lit pass takes (its whole unrolled loop) builds and draws, each entry's map once; one more
+// is refused and the features before stay.
 TEST_F(ShadowedLightTest, MoreLightsThanTheLitPassTakesAreRefused) {
   auto r = std::make_unique<Renderer>();
   r->set_scene(scene);
   Features hooks;
-  hooks.lights.assign(kMaxShadowedLights + 1, torch());
+  hooks.lights.assign(kMaxShadowedLights, torch());
+  ASSERT_TRUE(r->set_features(hooks)) << r->shader_error();
+  r->render(params({}), request());
+  EXPECT_EQ(r->stats().flashlight_shadow_passes, kMaxShadowedLights);
+  hooks.lights.push_back(torch());
   EXPECT_FALSE(r->set_features(hooks));
   EXPECT_NE(r->shader_error().find("at most 4"), std::string::npos) << r->shader_error();
+  EXPECT_EQ(r->shadowed_lights().size(), static_cast<std::size_t>(kMaxShadowedLights));
 }
 
 }  // namespace
