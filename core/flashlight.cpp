@@ -65,6 +65,12 @@ FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const 
   return light;
 }
 
+ShadowedLightSpec flashlight_spec() {
+  return {"flashlight", "flashlight shadow", flashlight_light,
+          [](const ParamSet& params) { return static_cast<float>(params.get_or("flashlight.intensity", 0.8)); },
+          [](const ParamSet& params) { return static_cast<float>(params.get_or("flashlight.slope_bias", 2.0)); }};
+}
+
 double advance_flashlight_phase(const ParamSet& params, double seconds) {
   const double phase = params.get_or("flashlight.phase", 200.0) + params.get_or("flashlight.speed", 30.0) * seconds;
   return phase - 360.0 * std::floor(phase / 360.0);

@@ -2,9 +2,9 @@
 // that circles the scene (a ship's reflector) or by the camera. It has a shadow map of its own (a
 // perspective depth map, DepthMapPass) drawn only when the flashlight, its casters or the map's settings
 // change, so that moving it never redraws the sun's map (FrameStats::flashlight_shadow_passes counts its
-// updates, shadow_passes the sun's). The lit pass gets the FLASHLIGHT define: each light's Lambert term
-// and its own shadow term go to "lab/combine.glsl" (default shaders/shadow/combine_lights.glsl), which
-// returns the direct light.
+// updates, shadow_passes the sun's). It is one entry of Features::lights (flashlight_spec()): the lit pass
+// gets the SHADOWED_LIGHTS define, and each light's Lambert term and its own shadow term go to
+// "lab/combine.glsl" (default shaders/shadow/combine_lights.glsl), which returns the direct light.
 #pragma once
 
 #include <string>
@@ -14,6 +14,7 @@
 
 #include "core/frame_light.h"
 #include "core/params.h"
+#include "core/shadowed_light_spec.h"
 
 namespace shadowlab {
 
@@ -29,6 +30,9 @@ std::vector<ParamSpec> flashlight_param_specs();
 // (flashlight.mount). `camera_view` is the view matrix in the same frame as `bounds`.
 FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const glm::mat4& camera_view);
 FlashlightMount flashlight_mount(const ParamSet& params);
+// The flashlight as an entry of Features::lights: named "flashlight", placed by flashlight_light, weighted
+// by flashlight.intensity (default 0.8), its bias flashlight.slope_bias (default 2).
+ShadowedLightSpec flashlight_spec();
 
 // The window's animation: the phase after `seconds` more at flashlight.speed degrees per second.
 double advance_flashlight_phase(const ParamSet& params, double seconds);

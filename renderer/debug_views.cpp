@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/lit_pass.h"
+#include "renderer/shadowed_light.h"
 
 namespace shadowlab {
 
@@ -174,12 +175,18 @@ void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit)
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
   std::vector<DebugQuadLabel>* labels = ctx.annotations ? &ctx.annotations->quads : nullptr;
-  // Beside the flashlight's map, the frame light's says whose it is too.
+  // Beside the other shadowed lights' maps, the frame light's says whose it is too.
+  const bool more_lights = ctx.lights && !ctx.lights->empty();
   shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao,
-                           ctx.flashlight_pass ? "sun" : "", labels});
-  // The flashlight's map left of the sun's.
-  if (ctx.flashlight_pass)
-    ctx.flashlight_pass->draw_debug_quads({lit.width() - side - 8, lit.height(), side, "depth", ctx.empty_vao, "flashlight", labels});
+                           more_lights ? "sun" : "", labels});
+  // Each shadowed light's map left of the one before, named after its light.
+  if (more_lights) {
+    int right = lit.width();
+    for (ShadowedLight& light : *ctx.lights) {
+      right -= side + 8;
+      light.pass().draw_debug_quads({right, lit.height(), side, "depth", ctx.empty_vao, light.name(), labels});
+    }
+  }
   glEnable(GL_DEPTH_TEST);
   glViewport(0, 0, lit.width(), lit.height());
 }

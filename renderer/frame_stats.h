@@ -33,7 +33,9 @@ struct FrameStats {
   // Counters over the renderer's lifetime, so tests can see what was skipped.
   long frames = 0;
   long shadow_passes = 0;   // shadow-map updates (depth, cube or moments) of the frame's light (the sun)
-  long flashlight_shadow_passes = 0;  // updates of the flashlight's map (core/flashlight.h)
+  // Updates of the maps of the shadowed lights beside the frame light (Features::lights), all entries
+  // together (lab 15: its one entry, the flashlight; each entry counts its own: ShadowedLight::map_updates).
+  long flashlight_shadow_passes = 0;
   long moments_passes = 0;  // of which moments passes
   long blur_passes = 0;     // blur passes, one per direction (X and Y: two per blurred shadow map; brute2d: one)
   long cube_faces = 0;      // cube-map faces rendered for point lights (six per shadow pass)

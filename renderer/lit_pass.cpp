@@ -6,6 +6,7 @@
 
 #include "core/image_io.h"
 #include "renderer/debug_annotations.h"
+#include "renderer/shadowed_light.h"
 #include "core/technique_params.h"
 
 namespace shadowlab {
@@ -34,7 +35,7 @@ void set_material_define(ProgramDesc& d, bool on) {
 }
 
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
-                     LitVariant variant, bool materials, bool flashlight, bool own_shadow_coords) {
+                     LitVariant variant, bool materials, int lights, bool own_shadow_coords) {
   const bool remap = is_overlay(variant);
   const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
                          : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
@@ -43,7 +44,7 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
-  if (flashlight && variant == LitVariant::Lit) d.defines.emplace_back("FLASHLIGHT", "1");
+  if (lights > 0 && variant == LitVariant::Lit) d.defines.emplace_back("SHADOWED_LIGHTS", std::to_string(lights));
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
   if (own_shadow_coords && !remap) d.defines.emplace_back(kOwnShadowCoordsDefine, "1");
@@ -93,7 +94,7 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
-       {},    // flash: below, for the FLASHLIGHT variant
+       {},    // lights: below, for the SHADOWED_LIGHTS variant
        {}};  // csm: below, per cascade
   for (int i = 0; i < kMaxCascades; ++i) {
     const std::string at = "[" + std::to_string(i) + "]";
@@ -109,16 +110,19 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
   u.csm.camera_view = Uniform(id, "u_csm_camera_view");
   u.csm.blend = Uniform(id, "u_csm_blend");
   u.csm.maps = Uniform(id, "u_csm_maps");
-  u.flash = {Uniform(id, "u_flash_map"),       Uniform(id, "u_flash_tex_matrix"), Uniform(id, "u_flash_position"),
-             Uniform(id, "u_flash_direction"), Uniform(id, "u_flash_cos_cone"),   Uniform(id, "u_flash_near"),
-             Uniform(id, "u_flash_far"),       Uniform(id, "u_flash_texel_angle"), Uniform(id, "u_flash_bias_slope"),
-             Uniform(id, "u_sun_intensity"),   Uniform(id, "u_flash_intensity")};
+  for (int i = 0; i < kMaxShadowedLights; ++i) {
+    const std::string at = "[" + std::to_string(i) + "]", field = "u_lights" + at + ".";
+    const auto f = [&](const char* name) { return Uniform(id, (field + name).c_str()); };
+    u.lights.entry[i] = {Uniform(id, ("u_light_maps" + at).c_str()), f("tex_matrix"), f("position"), f("direction"),
+                         f("cos_cone"), f("near"), f("far"), f("texel_angle"), f("bias_slope"), f("intensity")};
+  }
+  u.lights.sun_intensity = Uniform(id, "u_sun_intensity");
 }
 
 }  // namespace
 
 bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-                    const std::vector<LitVariant>& variants, bool flashlight, bool own_shadow_coords) {
+                    const std::vector<LitVariant>& variants, int lights, bool own_shadow_coords) {
   bool ok = true;
   for (LitVariant variant : variants)
     for (bool gbuffer : {false, true}) {
@@ -127,7 +131,7 @@ bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, Light
       slot.specialised.clear();  // built from the old includes; made again when drawn
       slot.failed.clear();
       slot.generic.program.set_desc(
-          lit_desc(includes, rules, gbuffer, light, variant, materials_, flashlight, own_shadow_coords));
+          lit_desc(includes, rules, gbuffer, light, variant, materials_, lights, own_shadow_coords));
       ok = slot.generic.program.rebuild() && ok;
     }
   return ok;
@@ -403,23 +407,10 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
   u.pcss_view.set(static_cast<int>(technique_param(params, "pcss.view")));
   u.pcss_view_range.set(pcss_view_range(params));  // the legend's high end too (debug_annotations.h)
-  if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
-    const FrameLight& f = *ctx.flashlight;
-    const glm::mat4& fp = f.view.projection;
-    u.flash.tex_matrix.set(clip_to_texture() * f.view.view_projection());
-    u.flash.position.set(f.position);
-    u.flash.direction.set(f.spot_direction);
-    u.flash.cos_cone.set(std::cos(glm::radians(f.spot_cone_deg)));
-    u.flash.near.set(fp[3][2] / (fp[2][2] - 1.0f));
-    u.flash.far.set(fp[3][2] / (fp[2][2] + 1.0f));
-    u.flash.texel_angle.set(f.texel_angle(std::max(ctx.flashlight_pass->size(), 1)));
-    u.flash.bias_slope.set(static_cast<float>(params.get_or("flashlight.slope_bias", 2.0)));
-    u.flash.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
-    u.flash.intensity.set(static_cast<float>(params.get_or("flashlight.intensity", 0.8)));
-    glActiveTexture(GL_TEXTURE0 + kFlashlightUnit);
-    glBindTexture(GL_TEXTURE_2D, ctx.flashlight_map);
-    glBindSampler(kFlashlightUnit, 0);
-    u.flash.map.set(kFlashlightUnit);
+  if (ctx.lights && !ctx.lights->empty()) {  // each uniform set when present: an answer may leave some unused
+    u.lights.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
+    for (std::size_t i = 0; i < ctx.lights->size(); ++i)
+      (*ctx.lights)[i].bind_lit_inputs(params, u.lights.entry[i], kShadowedLightUnits[i]);
     glActiveTexture(GL_TEXTURE0);
   }
   shadow.bind_lit_inputs(params, u);

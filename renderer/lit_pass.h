@@ -24,13 +24,13 @@ namespace shadowlab {
 
 class LitPass {
  public:
-  // Builds these variants' programs (plain and G-buffer; with `flashlight` the lit one lit by the
-  // flashlight too: the FLASHLIGHT define, core/flashlight.h; with `own_shadow_coords`, those whose
+  // Builds these variants' programs (plain and G-buffer; with `lights` > 0 the lit one lit by that many
+  // shadowed lights too: the SHADOWED_LIGHTS define, Features::lights; with `own_shadow_coords`, those whose
   // shadow test is the lab's, without the renderer's mapping into the shadow map: see
   // Features::own_shadow_coords); false keeps the old programs (the error is in them). Programs of other
   // variants stay until keep_only().
   bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-             const std::vector<LitVariant>& variants, bool flashlight = false, bool own_shadow_coords = false);
+             const std::vector<LitVariant>& variants, int lights = 0, bool own_shadow_coords = false);
   void keep_only(const std::vector<LitVariant>& variants);
   // Compiles the material variant (MATERIAL_TEXTURE: base-colour texture, alpha modes) or the plain
   // one into every program; draw() switches to what the scene needs, so a scene without textures or

@@ -8,8 +8,6 @@
 #include "renderer/billboards.h"
 #include "renderer/cube_shadow_pass.h"
 #include "renderer/debug_views.h"
-#include "renderer/depth_map_pass.h"
-#include "core/flashlight.h"
 #include "renderer/lit_pass.h"
 #include "renderer/moments_pass.h"
 #include "renderer/shadow_volume_pass.h"
@@ -32,16 +30,6 @@ struct Renderer::ShadowMapInputs {
   std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
   std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
   bool operator==(const ShadowMapInputs&) const = default;
-};
-
-// Everything the flashlight's map is drawn from: its light, the casters, its targets, its programs and the
-// culling. Not the sun's parameters: moving the sun (or only the flashlight) leaves the other's map alone.
-struct Renderer::FlashlightInputs {
-  glm::mat4 light_view{1.0f}, light_projection{1.0f};
-  int cull = 0;
-  long scene = 0, targets = 0;
-  std::vector<int> programs;
-  bool operator==(const FlashlightInputs&) const = default;
 };
 
 namespace {
@@ -162,11 +150,16 @@ void append_once(std::string& out, const std::string& text) {
 }  // namespace
 
 bool Renderer::build_programs(const Features& features, LightType light) {
+  if (features.lights.size() > static_cast<std::size_t>(kMaxShadowedLights)) {  // nothing built: the old features stay
+    failed_build_error_ = std::to_string(features.lights.size()) + " shadowed lights: the lit pass takes at most " +
+                          std::to_string(kMaxShadowedLights) + " (kMaxShadowedLights)\n";
+    return false;
+  }
   const ShadowPassEntry& entry = shadow_pass_entry(features.technique, light);
   IncludeMap includes;
   for (const auto& [name, file] : entry.default_includes(light)) includes[name] = file;
   includes[kMaterialInclude] = kPlainMaterial;
-  // The lit pass reads its includes before the preprocessor: the FLASHLIGHT part needs its file always.
+  // The lit pass reads its includes before the preprocessor: the SHADOWED_LIGHTS part needs its file always.
   includes["lab/combine.glsl"] = "shaders/shadow/combine_lights.glsl";
   for (const auto& [name, file] : features.includes) includes[name] = file;
   // The same technique keeps its pass (and targets); another gets a new one, kept only if it builds.
@@ -177,11 +170,12 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : *shadow_;
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, features.include_rules, light, variants, features.flashlight, features.own_shadow_coords);
-  std::unique_ptr<DepthMapPass> flash;
-  if (features.flashlight) {
-    flash = std::make_unique<DepthMapPass>("flashlight shadow");
-    ok = flash->set_includes(includes, features.include_rules) && ok;
+  bool ok = lit_->build(includes, features.include_rules, light, variants, static_cast<int>(features.lights.size()),
+                        features.own_shadow_coords);
+  std::vector<ShadowedLight> lights;
+  for (const ShadowedLightSpec& spec : features.lights) {
+    lights.emplace_back(spec);
+    ok = lights.back().set_includes(includes, features.include_rules) && ok;
   }
   ok = pass.set_includes(includes, features.include_rules) && ok;
   std::unique_ptr<BillboardPass> billboards;
@@ -196,13 +190,12 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     lit_->for_each_program(collect);
     pass.for_each_program(collect);
     if (billboards) billboards->for_each_program(collect);
+    for (const ShadowedLight& shadowed : lights) shadowed.for_each_program(collect);
     return false;
   }
   failed_build_error_.clear();
   billboards_ = std::move(billboards);
-  flash_ = std::move(flash);
-  flash_inputs_valid_ = false;
-  ++flash_targets_generation_;
+  lights_ = std::move(lights);
   if (fresh) {
     shadow_ = std::move(fresh);
     shadow_entry_ = &entry;
@@ -220,7 +213,7 @@ void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f
   views_->for_each_program(f);
   if (shadow_) shadow_->for_each_program(f);
   if (billboards_) billboards_->for_each_program(f);
-  if (flash_) flash_->for_each_program(f);
+  for (const ShadowedLight& light : lights_) light.for_each_program(f);
 }
 
 bool Renderer::poll_shader_files() {
@@ -245,7 +238,7 @@ std::string Renderer::shader_warnings() const {
 
 void Renderer::invalidate_shadow_map() {
   shadow_inputs_valid_ = false;
-  flash_inputs_valid_ = false;
+  for (ShadowedLight& light : lights_) light.invalidate();
 }
 
 void Renderer::set_lit_constants(bool on) { lit_->set_specialise(on); }
@@ -294,16 +287,9 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's
   // view needs before it is lit (shadow volumes: the ambient and stencil passes).
   if (shape.has_map) update_shadow_map(ctx);
-  // 2b. The flashlight's own map, with its own inputs: moving it leaves the sun's map alone.
-  if (flash_) {
-    flash_light_ = flashlight_light(params, local_scene_.bounds(), camera_view_);
-    flash_light_.scene_position = placement_.to_scene(flash_light_.position);
-    if (flash_->ensure_targets(params)) ++flash_targets_generation_;
-    update_flashlight_map(ctx);
-    ctx.flashlight = &flash_light_;
-    ctx.flashlight_pass = flash_.get();
-    ctx.flashlight_map = flash_->texture();
-  }
+  // 2b. Each further shadowed light's own map, with its own inputs: moving one leaves the others' alone.
+  for (ShadowedLight& light : lights_) light.update(ctx, placement_, scene_generation_);
+  ctx.lights = &lights_;
   shadow.draw_view_passes(ctx, *lit_);
 
   // 3. Lit pass from the camera, reading the shadow map (or the moments, or the stencil).
@@ -369,37 +355,10 @@ void Renderer::update_shadow_map(PassContext& ctx) {
   shadow_inputs_valid_ = true;
 }
 
-void Renderer::update_flashlight_map(PassContext& ctx) {
-  if (!flash_scratch_) flash_scratch_ = std::make_unique<FlashlightInputs>();
-  if (!flash_inputs_) flash_inputs_ = std::make_unique<FlashlightInputs>();
-  FlashlightInputs& in = *flash_scratch_;
-  in.light_view = flash_light_.view.view;
-  in.light_projection = flash_light_.view.projection;
-  in.cull = ctx.cull;
-  in.scene = scene_generation_;
-  in.targets = flash_targets_generation_;
-  in.programs.clear();
-  flash_->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
-  if (flash_inputs_valid_ && *flash_inputs_ == in) return;
-  // The same frame's context with the flashlight as its light (and no billboards: they follow the sun).
-  PassContext light_ctx{ctx.scene,          ctx.gpu_scene,    ctx.params,         flash_light_,
-                        ctx.stats,          ctx.timer,        ctx.empty_vao,      ctx.cull,
-                        ctx.camera_view,    ctx.camera_projection, ctx.infinite_far_plane, ctx.gbuffer,
-                        ctx.cascade_view,   ctx.cascade_projection, ctx.cascade_splits, ctx.cascade_fit};
-  flash_->draw_map(light_ctx);
-  ++stats_.flashlight_shadow_passes;
-  std::swap(flash_inputs_, flash_scratch_);
-  flash_inputs_valid_ = true;
-}
-
-std::vector<float> Renderer::read_flashlight_depth(int* size) const {
-  if (!flash_) throw std::logic_error("read_flashlight_depth needs the flashlight feature");
-  return flash_->read_depth(size);
-}
-
-std::vector<std::uint8_t> Renderer::flashlight_map_image(int* size) const {
-  if (!flash_) throw std::logic_error("flashlight_map_image needs the flashlight feature");
-  return flash_->image(size);
+const ShadowedLight& Renderer::shadowed_light(const std::string& name) const {
+  for (const ShadowedLight& light : lights_)
+    if (light.name() == name) return light;
+  throw std::logic_error("the features have no shadowed light named \"" + name + "\"");
 }
 
 void Renderer::shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const {

@@ -31,16 +31,17 @@
 #include "renderer/pass_timer.h"
 #include "core/placement.h"
 #include "core/scene.h"
+#include "core/shadowed_light_spec.h"
 #include "renderer/shader.h"
 #include "renderer/shadow_pass.h"
 #include "renderer/shadow_passes.h"
+#include "renderer/shadowed_light.h"
 #include "core/technique_params.h"
 
 namespace shadowlab {
 
 class ShadowPass;
 class BillboardPass;
-class DepthMapPass;
 struct PassContext;
 class LitPass;
 class DebugViews;
@@ -89,12 +90,14 @@ struct Features {
   // alpha test. Their size and cutoff are the billboard.* parameters (billboard_param_specs). With the
   // depth-map technique only.
   std::vector<glm::vec3> billboards;
-  // A second shadowed light, the flashlight (core/flashlight.h: a spot on a node circling the scene or
-  // on the camera, the flashlight.* parameters): its own perspective depth map, redrawn only when it, its
-  // casters or its map's settings change; the lit pass combines both lights' terms in "lab/combine.glsl"
-  // (default shaders/shadow/combine_lights.glsl). With the techniques that have a map (not shadow
-  // volumes); billboards cast no shadow from it.
-  bool flashlight = false;
+  // Shadowed lights beside the frame's own (at most kMaxShadowedLights), e.g. lab 15's flashlight
+  // (core/flashlight.h's flashlight_spec(): a spot on a node circling the scene or on the camera). Each
+  // gets a ShadowedLight (renderer/shadowed_light.h): its own perspective depth map, redrawn only when it,
+  // its casters or its map's settings change. The lit pass combines the frame light's term with the first
+  // entry's in "lab/combine.glsl" (default shaders/shadow/combine_lights.glsl), then each further entry's
+  // with the light so far (shaders/lit.frag). With the techniques that have a map (not shadow volumes);
+  // billboards cast no shadow from them.
+  std::vector<ShadowedLightSpec> lights;
   // The lab's shadow test maps world space into the shadow map itself, from u_light_view_proj (lab 0's
   // lesson: the bias matrix). Its programs are then compiled with OWN_SHADOW_COORDS
   // (kOwnShadowCoordsDefine): none of what would hand it that mapping is in them, not
@@ -215,11 +218,11 @@ class Renderer {
   // (renderer/debug_annotations.h); the app draws them (app/view_annotations.h).
   const DebugAnnotations& annotations() const { return annotations_; }
 
-  // The flashlight of the last frame (null unless the features have one), in the local frame but for
-  // scene_position; its map's depths (bottom row first) and its map as a picture (as the debug quad).
-  const FrameLight* flashlight() const { return features_.flashlight && flash_ ? &flash_light_ : nullptr; }
-  std::vector<float> read_flashlight_depth(int* size) const;
-  std::vector<std::uint8_t> flashlight_map_image(int* size) const;
+  // The shadowed lights beside the frame's own (Features::lights, in order): each with its last frame's
+  // light, its map and its map's updates (renderer/shadowed_light.h). shadowed_light(name) throws when the
+  // features have no entry of that name.
+  const std::vector<ShadowedLight>& shadowed_lights() const { return lights_; }
+  const ShadowedLight& shadowed_light(const std::string& name) const;
 
   // The light of the last frame. For spot and point lights to_light() points from the scene's centre
   // toward the light (for display); the lit pass uses the position.
@@ -246,9 +249,6 @@ class Renderer {
 
  private:
   struct ShadowMapInputs;
-  struct FlashlightInputs;
-  // The flashlight's map, unless everything it was last drawn from is unchanged.
-  void update_flashlight_map(PassContext& ctx);
   bool build_programs(const Features& features, LightType light);
   PassContext frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane);
   // Draws the shadow map unless everything it was last drawn from is unchanged.
@@ -280,11 +280,7 @@ class Renderer {
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;
   std::unique_ptr<BillboardPass> billboards_;  // only while the features have billboards
-  std::unique_ptr<DepthMapPass> flash_;          // only while the features have a flashlight
-  FrameLight flash_light_;
-  std::unique_ptr<FlashlightInputs> flash_inputs_, flash_scratch_;
-  bool flash_inputs_valid_ = false;
-  long flash_targets_generation_ = 0;
+  std::vector<ShadowedLight> lights_;           // one per Features::lights entry
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
   long targets_generation_ = 0;  // bumps whenever the shadow pass reallocates its targets

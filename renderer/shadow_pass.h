@@ -36,6 +36,10 @@ namespace shadowlab {
 // Virtual include name -> file, e.g. "lab/visibility.glsl" -> "shaders/shadow/hard.glsl".
 using IncludeMap = std::map<std::string, std::filesystem::path>;
 
+// At most this many shadowed lights beside the frame's own (Features::lights): the lit shader unrolls its
+// loop over them (GLSL 3.30 indexes a sampler array with constants only).
+constexpr int kMaxShadowedLights = 4;
+
 // Uniform locations of a lit program, resolved once per program generation. A program lacks the ones
 // its shadow test does not read (-1: setting them is a no-op).
 struct LitUniforms {
@@ -48,10 +52,12 @@ struct LitUniforms {
   Uniform pcss_view, pcss_view_range;  // PCSS's debug view (pcss.view)
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
-  struct Flashlight {  // the FLASHLIGHT variant's (shaders/shadow/flashlight.glsl)
-    Uniform map, tex_matrix, position, direction, cos_cone, near, far, texel_angle, bias_slope;
-    Uniform sun_intensity, intensity;
-  } flash;
+  struct ShadowedLights {  // the SHADOWED_LIGHTS variant's (shaders/shadow/shadowed_lights.glsl), per entry
+    struct Entry {
+      Uniform map, tex_matrix, position, direction, cos_cone, near, far, texel_angle, bias_slope, intensity;
+    } entry[kMaxShadowedLights];
+    Uniform sun_intensity;  // the frame light's weight beside them
+  } lights;
   struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
     Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
     Uniform near, count, camera_view, blend, maps;
@@ -75,8 +81,10 @@ enum class LitVariant {
 class BillboardPass;
 class ShadowPass;
 
-// The texture unit of the flashlight's map in the lit pass (the techniques use the first few).
-constexpr int kFlashlightUnit = 7;
+// The texture unit of each shadowed light's map in the lit pass (Features::lights; the techniques use
+// the first few, the material from 8 up).
+constexpr int kShadowedLightUnits[kMaxShadowedLights] = {7, 15, 14, 13};
+class ShadowedLight;
 
 // What a pass reads and records during one frame.
 struct PassContext {
@@ -99,11 +107,9 @@ struct PassContext {
   const CascadeFitFn* cascade_fit = nullptr;
   // The features' billboards (null: none), which the depth map's pass draws after the casters.
   BillboardPass* billboards = nullptr;
-  // The flashlight beside the frame's light (core/flashlight.h): its light and its map's pass (null:
-  // no flashlight). The lit pass reads its map on texture unit kFlashlightUnit.
-  const FrameLight* flashlight = nullptr;
-  ShadowPass* flashlight_pass = nullptr;
-  GLuint flashlight_map = 0;  // its depth texture
+  // The shadowed lights beside the frame's light (Features::lights, renderer/shadowed_light.h), each with
+  // its light and its map (null or empty: none). The lit pass reads entry i's map on kShadowedLightUnits[i].
+  std::vector<ShadowedLight>* lights = nullptr;
   // The frame's words (debug quads' labels, false-colour legends), filled as the passes draw (null: none).
   DebugAnnotations* annotations = nullptr;
 

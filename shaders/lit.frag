@@ -11,13 +11,12 @@
 #include "shadow/common.glsl"
 #include "lab/visibility.glsl"
 #include "lab/material.glsl"
-#ifdef FLASHLIGHT
-// A second shadowed light, the flashlight (core/flashlight.h): its own map and test, and the lab's
-// combination of both lights' terms.
-#include "shadow/flashlight.glsl"
+#ifdef SHADOWED_LIGHTS
+// Further shadowed lights beside the sun (Features::lights, e.g. lab 15's flashlight): each with its own
+// map and test, and the lab's combination of two lights' terms.
+#include "shadow/shadowed_lights.glsl"
 #include "lab/combine.glsl"
 uniform float u_sun_intensity;
-uniform float u_flash_intensity;
 #endif
 
 in vec3 v_normal;
@@ -82,11 +81,23 @@ void main() {
   float visibility = n_dot_l > 0.0 ? shadow_visibility(v_world_position, n, n_dot_l) : 0.0;
   vec3 albedo = surface_albedo(v_world_position, n, base);  // the lab's material over the base colour
   vec3 ambient = albedo * u_ambient;
-#ifdef FLASHLIGHT
-  float flash_n_dot_l = flashlight_n_dot_l(v_world_position, n);
-  float flash_visibility = flash_n_dot_l > 0.0 ? flashlight_visibility(v_world_position, n, flash_n_dot_l) : 0.0;
-  float direct = combine_lights(u_sun_intensity * max(n_dot_l, 0.0), visibility,
-                                u_flash_intensity * max(flash_n_dot_l, 0.0), flash_visibility);
+#ifdef SHADOWED_LIGHTS
+  // The loop over the lights, unrolled (each map's sampler indexed by a constant): the sun and light 0 as
+  // the lab's combine_lights says, then each further light combined with the light so far, which stands in
+  // as a light fully lit (with the sum, the default, every light's term times its own shadow term added).
+  float light_shadow;
+  float light_lambert = shadowed_light_terms(0, u_light_maps[0], v_world_position, n, light_shadow);
+  float direct = combine_lights(u_sun_intensity * max(n_dot_l, 0.0), visibility, light_lambert, light_shadow);
+#define COMBINE_SHADOWED_LIGHT(i) light_lambert = shadowed_light_terms(i, u_light_maps[i], v_world_position, n, light_shadow); direct = combine_lights(direct, 1.0, light_lambert, light_shadow);
+#if SHADOWED_LIGHTS > 1
+  COMBINE_SHADOWED_LIGHT(1)
+#endif
+#if SHADOWED_LIGHTS > 2
+  COMBINE_SHADOWED_LIGHT(2)
+#endif
+#if SHADOWED_LIGHTS > 3
+  COMBINE_SHADOWED_LIGHT(3)
+#endif
   vec3 linear = ambient + albedo * (1.0 - u_ambient) * direct;
 #else
   vec3 linear = ambient + albedo * (1.0 - u_ambient) * max(n_dot_l, 0.0) * visibility;
@@ -107,8 +118,8 @@ void main() {
 #endif
 #endif
 #ifdef WRITE_GBUFFER
-#ifdef FLASHLIGHT
-  o_visibility = direct;  // two lights: the direct light the lab's combination returned (what lab 15 grades)
+#ifdef SHADOWED_LIGHTS
+  o_visibility = direct;  // several lights: the direct light the lab's combination returned (what lab 15 grades)
 #else
   o_visibility = visibility;
 #endif

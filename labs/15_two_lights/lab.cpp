@@ -4,7 +4,7 @@
 // shadow term; the flashlight's map redrawn alone while it moves. The student writes combine_lights.
 // Check: per light and combined. Three frames per condition: the sun alone (flashlight.intensity 0), the
 // flashlight alone (sun.intensity 0) and both; in each the direct light the combination returned (the
-// G-buffer's visibility under FLASHLIGHT) against the oracle's truth for each light (Embree, cast toward the
+// G-buffer's visibility under SHADOWED_LIGHTS) against the oracle's truth for each light (Embree, cast toward the
 // sun and toward the flashlight) times its Lambert term, on pixels in the interior of both lights' truths.
 // Conditions: the lab's own (node at flashlight.phase), and held out from the seed: the node elsewhere on its
 // circle with other intensities and the flashlight on the camera seen from another side.
@@ -72,9 +72,10 @@ void grade_condition(CheckContext& ctx, CheckResult& result, const Features& hoo
     ctx.renderer.render(p, request);
     const std::vector<float> direct = ctx.renderer.read_visibility();
     const GBuffer g = ctx.renderer.read_gbuffer();
-    const FrameLight& f = *ctx.renderer.flashlight();
+    const ShadowedLight& flashlight = ctx.renderer.shadowed_light("flashlight");
+    const FrameLight& f = flashlight.light();
     int map_size = 0;
-    ctx.renderer.read_flashlight_depth(&map_size);
+    flashlight.read_depth(&map_size);
     OracleLight sun = oracle_light(ctx.renderer);
     OracleLight flash;
     flash.positional = true;
@@ -188,7 +189,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;
     hooks.light = LightType::Directional;
-    hooks.flashlight = true;
+    hooks.lights = {flashlight_spec()};  // the sun is the frame's light, the flashlight the list's one entry
     hooks.includes["lab/combine.glsl"] = files.at(0).string();
     return hooks;
   };
