@@ -140,15 +140,11 @@ void probe_warp(CheckContext& ctx, CheckResult& result) {
   result.metrics["warp_probe"] = probe;
 }
 
-struct BoundCase {
-  glm::vec4 moments, w;
-  double want;
-  int side;  // 0: lit (both bounds 1), 1: the positive warp's bound is the smaller, 2: the negative's
-};
-
-std::vector<BoundCase> bound_cases(std::mt19937 rng) {
+// The bound probe's cases: in0 the moments, in1 the receiver's warped depths; kind 0: lit (both bounds 1),
+// 1: the positive warp's bound is the smaller, 2: the negative's.
+std::vector<ProbeCase> bound_cases(std::mt19937 rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<BoundCase> cases;
+  std::vector<ProbeCase> cases;
   int count[3] = {0, 0, 0};
   for (int tries = 0; tries < 200000 && (count[0] < kBoundCasesPerSide || count[1] < kBoundCasesPerSide ||
                                          count[2] < kBoundCasesPerSide); ++tries) {
@@ -173,40 +169,20 @@ std::vector<BoundCase> bound_cases(std::mt19937 rng) {
 }
 
 void probe_bound(CheckContext& ctx, CheckResult& result) {
-  const std::vector<BoundCase> cases = bound_cases(ctx.held_out_rng());
-  ProbeRequest request;
-  request.fragment = "shaders/probe/evsm_bound.frag";
-  for (const BoundCase& c : cases) {
-    request.in0.push_back(c.moments);
-    request.in1.push_back(c.w);
-  }
-  const auto v = run_probe(ctx.hooks(), request);
-  int wrong[3] = {0, 0, 0}, total[3] = {0, 0, 0};
-  double worst = 0.0;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const double error = std::abs(static_cast<double>(v[0][i]) - cases[i].want);
-    wrong[cases[i].side] += !(error <= kBoundTolerance);  // NaN is wrong
-    ++total[cases[i].side];
-    worst = std::max(worst, std::isfinite(error) ? error : 1e30);
-  }
-  result.metrics["bound_probe"] = {{"lit_cases", total[0]}, {"positive_cases", total[1]}, {"negative_cases", total[2]},
-                                   {"worst_error", worst}};
-  const std::string why = "probe: evsm_bound on the moments of two-depth distributions against the CPU bound, within 1e-3";
-  const struct {
-    const char* metric;
-    const char* advice;
-  } sides[3] = {
-      {"bound.lit_mismatch", "a receiver in front of both warps' means (w <= E[w] for each) is fully lit: 1."},
-      {"bound.positive_mismatch",
-       "behind the mean, each warp's bound is sigma^2 / (sigma^2 + (w - mu)^2) with sigma^2 = E[w^2] - E[w]^2 of that "
-       "warp's pair; both are upper bounds on the light, so return the smaller."},
-      {"bound.negative_mismatch",
-       "the negative warp's pair (moments.zw, w.y) gives its own bound, the smaller one where the occluders are near the "
-       "light: take the minimum of both warps' bounds, with no depth-variance clamp on the negative warp's tiny variances."},
-  };
-  for (int k = 0; k < 3; ++k)
-    result.criteria.push_back({sides[k].metric, total[k] ? static_cast<double>(wrong[k]) / total[k] : 1.0,
-                               Criterion::kAtMost, kMaxProbeMismatch, why, sides[k].advice});
+  const ProbeTally t = probe_kinds(
+      result, ctx.hooks(), "shaders/probe/evsm_bound.frag", bound_cases(ctx.held_out_rng()),
+      {{"bound.lit_mismatch", "a receiver in front of both warps' means (w <= E[w] for each) is fully lit: 1."},
+       {"bound.positive_mismatch",
+        "behind the mean, each warp's bound is sigma^2 / (sigma^2 + (w - mu)^2) with sigma^2 = E[w^2] - E[w]^2 of that "
+        "warp's pair; both are upper bounds on the light, so return the smaller."},
+       {"bound.negative_mismatch",
+        "the negative warp's pair (moments.zw, w.y) gives its own bound, the smaller one where the occluders are near the "
+        "light: take the minimum of both warps' bounds, with no depth-variance clamp on the negative warp's tiny "
+        "variances."}},
+      kBoundTolerance, kMaxProbeMismatch,
+      "probe: evsm_bound on the moments of two-depth distributions against the CPU bound, within 1e-3");
+  result.metrics["bound_probe"] = {{"lit_cases", t.cases[0]}, {"positive_cases", t.cases[1]}, {"negative_cases", t.cases[2]},
+                                   {"worst_error", t.worst_error}};
 }
 
 void check_evsm(CheckContext& ctx, CheckResult& result) {
