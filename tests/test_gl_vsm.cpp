@@ -338,7 +338,7 @@ TEST(VsmFeatures, TheSharedVsmFeatureSetIsLab4sSolution) {
 TEST_F(VsmTest, MsmStoresFourPowerMomentsAndStaysFinite) {
   // Lab 14's pass: RGBA32F moments (z, z^2, z^3, z^4) of the stored depth, the background the far
   // plane's (1, 1, 1, 1); the Hamburger bound finite and in [0, 1] under steep, grazing and straight-down
-  // lights, with the solution and with the stock exercise (whose missing moments make the solve singular).
+  // lights, with the solution and with the stock exercise (Chebyshev's bound on the first two moments).
   const Lab& lab = *find_lab(14);
   ParamSet p = lab_params(lab);
   p.set("view.debug_quad", 0.0);
