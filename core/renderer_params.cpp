@@ -123,8 +123,8 @@ std::vector<ParamSpec> vsm_param_specs() {
       {"vsm.match_distance", "Matched blocker height", ParamKind::Float, 1.0, 0.05, 10.0,
        "The blocker-to-receiver distance (world units) that vsm.match_light sizes the blur for.", {}, moments},
       {"vsm.msm_moment_bias", "MSM moment bias (alpha)", ParamKind::Float, 3e-5, 1e-7, 1e-2,
-       "Moment shadow maps: the share of a uniform distribution's moments mixed into the filtered ones, so the "
-       "4x4 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
+       "Moment shadow maps: the share of (0.5, 0.5, 0.5, 0.5), the moments of half the weight at depth 0 and half "
+       "at 1, mixed into the filtered ones, so the 3x3 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
        "moments are nearly singular (flat receivers).", {}, kInvalidatesNothing, true},
   };
 }
