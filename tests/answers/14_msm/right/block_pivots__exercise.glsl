@@ -1,5 +1,4 @@
-// right: the solve by eliminating with the centred moments (the same pivots as the Cholesky, named
-// variance and D33), the roots by the quadratic formula, the weights by branches written out
+// right: the solve by elimination with the centred moments (the Cholesky's pivots, named), the roots by the quadratic formula, the weights by branches
 // expect: variant
 float msm_hamburger(vec4 b, float z) {
   float variance = b.y - b.x * b.x;        // D22
