@@ -102,13 +102,18 @@ std::vector<ParamSpec> vsm_param_specs() {
        "1.7-6x faster on llvmpipe for radii 1-16). brute2d: one pass over all (2r+1)^2 texels, for comparison.",
        {"separable", "fast", "brute2d"}, moments},
       {"vsm.warp", "Depth warp", ParamKind::Choice, 0.0, 0.0, 1.0,
-       "What the moments are of. none: depth z (VSM). exponential: w = exp(c z) (EVSM, two moments), which "
-       "sharpens Chebyshev's bound behind an occluder and so cuts light bleeding. Needs a moments shader that "
-       "reads u_warp_exponent (lab 13's).",
+       "What the moments are of. none: depth z (VSM, two moments). exponential: EVSM, the moments of two warps, "
+       "exp(c+ z) and -exp(-c- z) (four moments: the format's RGBA variant), and the smaller of their two "
+       "Chebyshev bounds, which cuts light bleeding. Needs the moments and test shaders of lab 13.",
        {"none", "exponential"}, moments},
-      {"vsm.evsm_exponent", "EVSM exponent c", ParamKind::Float, 42.0, 1.0, 42.0,
-       "c in w = exp(c z), z in [0, 1]. Clamped to the format's range: 42 for RG32F (2c = 84 < ln(FLT_MAX) = 88.7, "
-       "room for the slope term), 5 for RG16F (2c = 10 < ln(65504 / 2) = 10.4). Larger c: less bleeding.",
+      {"vsm.evsm_exponent", "EVSM exponent c+", ParamKind::Float, 42.0, 1.0, 42.0,
+       "c+ in the positive warp exp(c+ z), z in [0, 1]. Clamped to the format's range: 42 for 32-bit floats "
+       "(2c = 84 < ln(FLT_MAX) = 88.7, room for the slope term), 5 for 16-bit (2c = 10 < ln(65504 / 2) = 10.4). "
+       "Larger: less bleeding.",
+       {}, moments},
+      {"vsm.evsm_negative_exponent", "EVSM exponent c-", ParamKind::Float, 42.0, 1.0, 42.0,
+       "c- in the negative warp -exp(-c- z), z in [0, 1]. Clamped like c+: 42 for 32-bit floats (exp(-84) = 3e-37, "
+       "the far plane's second moment, stays above FLT_MIN = 1.2e-38), 5 for 16-bit.",
        {}, moments},
       {"vsm.match_light", "Blur matched to the light", ParamKind::Bool, 0.0, 0.0, 1.0,
        "With light.size above 0 (a sun): instead of vsm.blur_radius and vsm.blur_sigma, a Gaussian as wide as "
@@ -118,8 +123,8 @@ std::vector<ParamSpec> vsm_param_specs() {
       {"vsm.match_distance", "Matched blocker height", ParamKind::Float, 1.0, 0.05, 10.0,
        "The blocker-to-receiver distance (world units) that vsm.match_light sizes the blur for.", {}, moments},
       {"vsm.msm_moment_bias", "MSM moment bias (alpha)", ParamKind::Float, 3e-5, 1e-7, 1e-2,
-       "Moment shadow maps: the share of a uniform distribution's moments mixed into the filtered ones, so the "
-       "4x4 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
+       "Moment shadow maps: the share of (0.5, 0.5, 0.5, 0.5), the moments of half the weight at depth 0 and half "
+       "at 1, mixed into the filtered ones, so the 3x3 Hankel solve stays defined in float32. Larger: more light bleeding; smaller: noise where the "
        "moments are nearly singular (flat receivers).", {}, kInvalidatesNothing, true},
   };
 }

@@ -216,4 +216,29 @@ std::vector<std::vector<float>> run_probe(const Features& hooks, const ProbeRequ
   return values;
 }
 
+ProbeTally probe_kinds(CheckResult& result, const Features& hooks, const char* fragment, const std::vector<ProbeCase>& cases,
+                       const std::vector<ProbeKind>& kinds, double tolerance, double max_mismatch, const std::string& why) {
+  ProbeRequest request;
+  request.fragment = fragment;
+  for (const ProbeCase& c : cases) {
+    request.in0.push_back(c.in0);
+    request.in1.push_back(c.in1);
+  }
+  const std::vector<float> got = run_probe(hooks, request)[0];
+  ProbeTally tally;
+  tally.cases.assign(kinds.size(), 0);
+  std::vector<int> wrong(kinds.size(), 0);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto k = static_cast<std::size_t>(cases[i].kind);
+    const double error = std::abs(static_cast<double>(got[i]) - cases[i].want);
+    wrong[k] += !(error <= tolerance);  // NaN is off
+    ++tally.cases[k];
+    tally.worst_error = std::max(tally.worst_error, std::isfinite(error) ? error : 1e30);
+  }
+  for (std::size_t k = 0; k < kinds.size(); ++k)
+    result.criteria.push_back({kinds[k].metric, tally.cases[k] ? static_cast<double>(wrong[k]) / tally.cases[k] : 1.0,
+                               Criterion::kAtMost, max_mismatch, why, kinds[k].advice});
+  return tally;
+}
+
 }  // namespace shadowlab

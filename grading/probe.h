@@ -77,4 +77,24 @@ void set_uniform(GLuint program, const char* name, int value);
 void set_uniform(GLuint program, const char* name, const glm::mat4& value);
 void set_uniform(GLuint program, const char* name, const glm::vec3& value);
 
+// A probe whose cases fall into kinds (e.g. lit, one bound the smaller, the other): runs `fragment` on
+// every case's inputs and adds, per kind, the criterion `metric` (at most `max_mismatch`: the share of that
+// kind's cases whose result is off `want` by more than `tolerance`; NaN counts as off, a kind without cases
+// as all off), with `why` and the kind's advice.
+struct ProbeCase {
+  glm::vec4 in0, in1;
+  double want = 0.0;
+  int kind = 0;
+};
+struct ProbeKind {
+  const char* metric;
+  const char* advice;
+};
+struct ProbeTally {
+  std::vector<int> cases;  // per kind
+  double worst_error = 0.0;
+};
+ProbeTally probe_kinds(CheckResult& result, const Features& hooks, const char* fragment, const std::vector<ProbeCase>& cases,
+                       const std::vector<ProbeKind>& kinds, double tolerance, double max_mismatch, const std::string& why);
+
 }  // namespace shadowlab

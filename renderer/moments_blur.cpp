@@ -178,12 +178,26 @@ void MomentsPass::blur(int direction, int radius, float sigma, GLuint empty_vao)
   glDisable(GL_DEPTH_TEST);
   glUseProgram(program.id());
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, direction == 0 ? moments_texture_.id() : blur_texture_.id());
+  const GLuint source = direction == 0 ? moments_texture_.id() : blur_texture_.id();
+  glBindTexture(GL_TEXTURE_2D, source);
   u.moments.set(0);
   u.radius.set(radius);
   u.sigma.set(sigma);
   glBindVertexArray(empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (!four_moments_) {
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    // The shader blurs .rg and writes it to both pairs (shaders/vsm/blur.frag): the first pair as is, then
+    // the second, read through a swizzle (B, A) and written through the mask (B, A) only.
+    const GLint identity[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA}, second[4] = {GL_BLUE, GL_ALPHA, GL_BLUE, GL_ALPHA};
+    glColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, second);
+    glColorMask(GL_FALSE, GL_FALSE, GL_TRUE, GL_TRUE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, identity);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
   glEnable(GL_DEPTH_TEST);
 }
 

@@ -14,7 +14,14 @@ namespace {
 GlTexture make_moments_texture(GLenum internal_format, int size) {
   // Linear filtering is what VSM is for: the average of moments is still a pair of moments, while the
   // average of depths compared with one depth means nothing.
-  return make_texture_2d(internal_format, size, size, GL_RG, GL_FLOAT, GL_LINEAR);
+  const bool four = internal_format == GL_RGBA32F || internal_format == GL_RGBA16F;
+  return make_texture_2d(internal_format, size, size, four ? GL_RGBA : GL_RG, GL_FLOAT, GL_LINEAR);
+}
+
+// The moments' internal format: vsm.format, or its RGBA variant for four moments (EVSM).
+GLenum moments_format(const std::string& format, bool four) {
+  if (format == "RG16F") return four ? GL_RGBA16F : GL_RG16F;
+  return four ? GL_RGBA32F : GL_RG32F;
 }
 
 GlFramebuffer make_color_fbo(GLuint texture, GLuint depth_renderbuffer, const char* what) {
@@ -79,9 +86,9 @@ bool MomentsPass::set_includes(const IncludeMap& includes, const IncludeRules& r
 
 bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur) {
   bool changed = false;
-  if (size != size_ || format != format_) {
-    const GLenum internal_format = format == "RG16F" ? GL_RG16F : GL_RG32F;
-    moments_texture_ = make_moments_texture(internal_format, size);
+  const bool four = warp_exponent_ != 0.0f;
+  if (size != size_ || format != format_ || four != four_moments_) {
+    moments_texture_ = make_moments_texture(moments_format(format, four), size);
     depth_ = GlRenderbuffer::create();
     glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
@@ -90,11 +97,11 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
     blur_fbo_ = {};
     size_ = size;
     format_ = format;
+    four_moments_ = four;
     changed = true;
   }
   if (blur && !blur_texture_) {
-    const GLenum internal_format = format_ == "RG16F" ? GL_RG16F : GL_RG32F;
-    blur_texture_ = make_moments_texture(internal_format, size_);
+    blur_texture_ = make_moments_texture(moments_format(format_, four_moments_), size_);
     blur_fbo_ = make_color_fbo(blur_texture_.id(), 0, "blur");
     changed = true;
   } else if (!blur && blur_texture_) {
@@ -110,12 +117,12 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
                                long& draws, long& culled) {
   if (moments_u_.generation != moments_.generation())
     moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj"),
-                  Uniform(moments_.id(), "u_warp_exponent")};
+                  Uniform(moments_.id(), "u_warp_exponent"), Uniform(moments_.id(), "u_warp_negative_exponent")};
   bind_color_target(moments_fbo_.id(), size_, size_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  const std::array<float, 4> clear = moments_clear(warp_exponent_);
+  const std::array<float, 4> clear = moments_clear(warp_exponent_, negative_exponent_);
   glClearBufferfv(GL_COLOR, 0, clear.data());
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
@@ -123,9 +130,11 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);
   moments_u_.warp_exponent.set(warp_exponent_);
+  moments_u_.negative_exponent.set(negative_exponent_);
   const auto counts = scene.draw_casters(&light_view_proj, 1, cull_casters, mask_.prepare(scene, [&](AlphaMaskVariant& v) {
     v.set("u_light_view_proj", light_view_proj);
     v.set("u_warp_exponent", warp_exponent_);
+    v.set("u_warp_negative_exponent", negative_exponent_);
   }));
   draws += counts.drawn;
   culled += counts.culled;
@@ -150,7 +159,8 @@ MomentsBlur moments_blur(const ParamSet& params, int matched) {
 
 bool MomentsPass::ensure_targets(const ParamSet& params) {
   const bool blur = moments_blur(params, matched_radius_).radius > 0;
-  set_warp_exponent(evsm_exponent(params));
+  const glm::vec2 c = evsm_exponents(params);
+  set_warp_exponent(c.x, c.y);
   return ensure_targets(std::stoi(params.get_choice("shadow.map_size")), vsm_choice(params, "vsm.format"), blur);
 }
 
@@ -173,7 +183,11 @@ void MomentsPass::draw_map(PassContext& ctx) {
   // 2. The Gaussian over the moments. Radius 0 runs none (and ensure_targets allocated no ping-pong
   // texture).
   const MomentsBlur b = moments_blur(ctx.params, matched_radius_);
-  if (b.radius > 0) blur_map(ctx, b.radius, b.sigma, blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
+  // Four moments (EVSM) are blurred by the taught separable shader, a pair at a time (blur()): the fast and
+  // brute-force blurs read and write two channels.
+  if (b.radius > 0)
+    blur_map(ctx, b.radius, b.sigma,
+             four_moments_ ? BlurMethod::Separable : blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
   // Half floats run out of precision on large depth ranges: measure it so that it can be shown.
   // (Of depths only: warped moments have another background and scale.)
   ctx.stats.moments_negative_variance =
@@ -198,20 +212,32 @@ void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod
   ctx.stats.blur_passes += 2;
 }
 
-float evsm_exponent(const ParamSet& params) {
-  if (vsm_choice(params, "vsm.warp") != "exponential") return 0.0f;
+glm::vec2 evsm_exponents(const ParamSet& params) {
+  if (vsm_choice(params, "vsm.warp") != "exponential") return glm::vec2(0.0f);
   const float limit = vsm_choice(params, "vsm.format") == "RG16F" ? kEvsmMaxExponentRG16F : kEvsmMaxExponentRG32F;
-  return std::clamp(static_cast<float>(vsm_param(params, "vsm.evsm_exponent")), 0.0f, limit);
+  auto clamped = [&](const char* key) { return std::clamp(static_cast<float>(vsm_param(params, key)), 0.0f, limit); };
+  return {clamped("vsm.evsm_exponent"), clamped("vsm.evsm_negative_exponent")};
 }
 
-std::array<float, 4> moments_clear(float warp_exponent) {
+float evsm_exponent(const ParamSet& params) { return evsm_exponents(params).x; }
+
+std::array<float, 4> moments_clear(float warp_exponent, float negative_exponent) {
   if (warp_exponent == 0.0f) return {kMomentsClear[0], kMomentsClear[1], kMomentsClear[2], kMomentsClear[3]};
-  return {static_cast<float>(std::exp(static_cast<double>(warp_exponent))),
-          static_cast<float>(std::exp(2.0 * warp_exponent)), 0.0f, 0.0f};
+  const double cp = warp_exponent, cn = negative_exponent;
+  return {static_cast<float>(std::exp(cp)), static_cast<float>(std::exp(2.0 * cp)), static_cast<float>(-std::exp(-cn)),
+          static_cast<float>(std::exp(-2.0 * cn))};
 }
 
 void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  u.warp_exponent.set(evsm_exponent(params));
+  const glm::vec2 c = evsm_exponents(params);
+  u.warp_exponent.set(c.x);
+  GLint program = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+  if (program != lit_program_) {
+    lit_negative_exponent_ = Uniform(static_cast<GLuint>(program), "u_warp_negative_exponent");
+    lit_program_ = program;
+  }
+  lit_negative_exponent_.set(c.y);
   u.min_variance.set(static_cast<float>(vsm_param(params, "vsm.min_variance")));
   u.bleed_delta.set(static_cast<float>(vsm_param(params, "vsm.bleed_delta")));
   glActiveTexture(GL_TEXTURE0);
@@ -229,11 +255,11 @@ void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {
   // "all": E[z], E[z^2] and the variance left to right; else the one channel ("depth" is E[z]).
   const int only = area.channel == "moment 2" ? 1 : area.channel == "variance" ? 2 : area.channel == "all" ? -1 : 0;
   const int count = only < 0 ? 3 : 1;
-  // With a warp (EVSM) the moments are those of the warped depth w = exp(c z).
+  // With the warps (EVSM) the quads show the positive warp's moments, of w+ = exp(c+ z).
   const bool warped = warp_exponent_ != 0.0f;
-  const char* labels[3] = {warped ? "warped moments: E[w]" : "moments: E[z]",
-                           warped ? "warped moments: E[w²]" : "moments: E[z²]",
-                           warped ? "variance E[w²] - E[w]² (red: negative)" : "variance E[z²] - E[z]² (red: negative)"};
+  const char* labels[3] = {warped ? "positive warp: E[w+]" : "moments: E[z]",
+                           warped ? "positive warp: E[w+²]" : "moments: E[z²]",
+                           warped ? "variance E[w+²] - E[w+]² (red: negative)" : "variance E[z²] - E[z]² (red: negative)"};
   for (int i = 0; i < count; ++i) {
     const int channel = only < 0 ? i : only;
     area.place(area.width - (count - i) * (area.side + 8), 8, area.side, area.side, labels[channel]);

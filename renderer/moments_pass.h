@@ -47,18 +47,23 @@ struct MomentsTargetInfo {
 // was drawn into read as "nothing in front of anything" and light every point.
 inline constexpr float kMomentsClear[4] = {1.0f, 1.0f, 0.0f, 0.0f};
 
-// Exponential variance shadow maps (EVSM, two moments) reuse this pass, its targets and its blur: the
-// moments are of w = exp(c z) instead of z (vsm.warp, vsm.evsm_exponent; the shaders are lab 13's). c is
-// clamped for the format so that exp(2c), the cleared background's second moment, and the slope term
-// (at most w^2 more) stay finite: 2 exp(2c) <= the format's largest value.
+// Exponential variance shadow maps (EVSM, Lauritzen & McCool 2008) reuse this pass, its targets and its
+// blur: the moments are of two warped depths, w+ = exp(c+ z) and w- = -exp(-c- z), four moments in the
+// format's RGBA variant (RGBA32F for vsm.format RG32F, RGBA16F for RG16F; vsm.warp, vsm.evsm_exponent,
+// vsm.evsm_negative_exponent; the shaders are lab 13's). Each exponent is clamped for the format so that
+// exp(2c+), the cleared background's second positive moment, and the slope term (at most w^2 more) stay
+// finite, 2 exp(2c) <= the format's largest value; the same limit holds c- (exp(-2c-) at the far plane).
 inline constexpr float kEvsmMaxExponentRG32F = 42.0f;  // 2 e^84 = 6e36 < 3.4e38
 inline constexpr float kEvsmMaxExponentRG16F = 5.0f;   // 2 e^10 = 44053 < 65504
-// The exponent the moments are warped with under these parameters: 0 without the warp (plain VSM),
-// else vsm.evsm_exponent clamped to the format's limit above.
+// The exponents the moments are warped with under these parameters, (c+, c-): (0, 0) without the warp
+// (plain VSM, two moments), else vsm.evsm_exponent and vsm.evsm_negative_exponent clamped to the format's
+// limit above.
+glm::vec2 evsm_exponents(const ParamSet& params);
+// c+ alone (evsm_exponents(params).x).
 float evsm_exponent(const ParamSet& params);
-// The clear value of the moments texture for an exponent from evsm_exponent(): kMomentsClear at 0, else
-// (exp(c), exp(2c)), the warped far plane.
-std::array<float, 4> moments_clear(float warp_exponent);
+// The clear value of the moments texture for the exponents from evsm_exponents(): kMomentsClear at c+ = 0,
+// else the warped far plane's moments (exp(c+), exp(2c+), -exp(-c-), exp(-2c-)).
+std::array<float, 4> moments_clear(float warp_exponent, float negative_exponent = 0.0f);
 
 // How the moments are blurred (the vsm.blur_method choices, in order).
 enum class BlurMethod {
@@ -117,12 +122,17 @@ class MomentsPass final : public ShadowPass {
   // 1. The moments of the nearest surface per texel, from the light. cull: 0 none, 1 front, 2 back.
   void draw_moments(const GpuScene& scene, const glm::mat4& light_view_proj, int cull, bool cull_casters, long& draws,
                     long& culled);
-  // The exponent of EVSM's warp (0: none, plain VSM) the next draw_moments uses: its clear value and the
-  // moments shader's u_warp_exponent. ensure_targets(params) sets it from evsm_exponent(params).
-  void set_warp_exponent(float c) { warp_exponent_ = c; }
+  // The exponents of EVSM's warps (c+ = 0: none, plain VSM) the next draw_moments uses: its clear value and
+  // the moments shader's u_warp_exponent and u_warp_negative_exponent. ensure_targets(params) sets them
+  // from evsm_exponents(params); with c+ > 0 the targets hold four moments (RGBA).
+  void set_warp_exponent(float c, float negative = 0.0f) {
+    warp_exponent_ = c;
+    negative_exponent_ = negative;
+  }
   float warp_exponent() const { return warp_exponent_; }
   // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
-  // Needs ensure_targets(..., blur = true).
+  // Needs ensure_targets(..., blur = true). Four moments (EVSM): two draws, the first pair and then the
+  // second (the source swizzled so that .rg reads B and A, the target written through B and A only).
   void blur(int direction, int radius, float sigma, GLuint empty_vao);
   // The same direction with the fast blur: the same output within float rounding. Call it for 0 then
   // 1: at small radii direction 0 does both (fused) and direction 1 swaps A and B.
@@ -152,8 +162,12 @@ class MomentsPass final : public ShadowPass {
   AlphaMaskVariant mask_;  // moments_ with ALPHA_MASK: alpha-tested (MASK) casters
   struct MomentsUniforms {
     int generation = -1;
-    Uniform light_view_proj, warp_exponent;
+    Uniform light_view_proj, warp_exponent, negative_exponent;
   } moments_u_;
+  // The lit program's u_warp_negative_exponent (not among the shared LitUniforms): looked up again when
+  // another program is bound.
+  mutable GLint lit_program_ = 0;
+  mutable Uniform lit_negative_exponent_;
   struct BlurUniforms {
     int generation = -1;
     Uniform moments, radius, sigma;
@@ -184,8 +198,9 @@ class MomentsPass final : public ShadowPass {
   void blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method);
 
   int size_ = 0;
-  float warp_exponent_ = 0.0f;
+  float warp_exponent_ = 0.0f, negative_exponent_ = 0.0f;
   std::string format_;
+  bool four_moments_ = false;  // RGBA targets (EVSM's two warps)
   GlTexture moments_texture_;  // A
   GlRenderbuffer depth_;       // the depth test while the moments are drawn
   GlFramebuffer moments_fbo_;

@@ -10,7 +10,8 @@ MsmPass::MsmPass()
 std::map<std::string, std::string> MsmPass::default_includes(LightType) {
   return {{"lab/bias.glsl", "shaders/shadow/bias.glsl"},
           {"lab/visibility.glsl", "shaders/msm/visibility.glsl"},
-          {"lab/msm_moments.glsl", "shaders/msm/power_moments.glsl"}};
+          {"lab/msm_moments.glsl", "shaders/msm/power_moments.glsl"},
+          {"lab/hamburger.glsl", "shaders/msm/hamburger.glsl"}};
 }
 
 bool MsmPass::set_includes(const IncludeMap& includes, const IncludeRules& rules) {

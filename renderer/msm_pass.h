@@ -1,13 +1,14 @@
 // Moment shadow maps (Peters & Klein 2015, "Moment Shadow Mapping"), the four-moment Hamburger bound:
 // the moments pass stores (z, z^2, z^3, z^4) of the nearest surface per texel in an RGBA32F texture
-// (linear filtering; no blur: VSM's blurs are two-channel), and the lit pass bounds the light reaching
-// depth z from below by the Hamburger problem's extreme distribution (shaders/msm/hamburger.glsl).
+// (linear filtering; no blur: VSM's blurs are two-channel), and the lit pass bounds the shadow at depth z
+// from below (the light from above) by the Hamburger problem's extreme distribution, the one with the
+// least weight strictly in front of z (lab 14's msm_hamburger; solution shaders/msm/hamburger.glsl).
 //
 //   moments pass:  scene from the light -> moments texture (RGBA32F, linear) + D24 renderbuffer
 //
 // The texture is cleared to the far plane's moments (1, 1, 1, 1). The moment bias (vsm.msm_moment_bias)
-// pulls the filtered moments towards those of a uniform distribution so the Hankel matrix stays
-// invertible in float32.
+// mixes (0.5, 0.5, 0.5, 0.5) into the filtered moments, the moments of half the weight at depth 0 and half
+// at depth 1 (not a uniform distribution's), so the Hankel matrix stays positive definite in float32.
 #pragma once
 
 #include <array>

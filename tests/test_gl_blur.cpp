@@ -186,6 +186,68 @@ TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+// Four moments (EVSM, lab 13): the taught blur runs twice per direction, the second pair read through a
+// swizzle and written through a colour mask (MomentsPass::blur). Each pair must come out as the CPU
+// reference's blur of that pair alone, and the swizzle must be undone (the texture reads R, G, B, A after).
+TEST_F(BlurTest, FourMomentsAreBlurredPairByPair) {
+  constexpr int n = 128;
+  std::vector<float> rgba(static_cast<std::size_t>(n) * n * 4);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const float z = (x / 5 + y / 7) % 3 == 0 ? 0.1f : 0.3f + 0.0023f * static_cast<float>((x * 7 + y * 13) % 256);
+      float* t = &rgba[(static_cast<std::size_t>(y) * n + x) * 4];
+      t[0] = std::exp(5.0f * z);
+      t[1] = t[0] * t[0];
+      t[2] = -std::exp(-5.0f * (1.0f - z) * static_cast<float>(1 + x % 3));  // another pattern than the first pair's
+      t[3] = t[2] * t[2];
+    }
+  auto pair = [&](int first) {
+    std::vector<float> out(static_cast<std::size_t>(n) * n * 2);
+    for (std::size_t i = 0; i < out.size() / 2; ++i) {
+      out[2 * i] = rgba[4 * i + static_cast<std::size_t>(first)];
+      out[2 * i + 1] = rgba[4 * i + static_cast<std::size_t>(first) + 1];
+    }
+    return out;
+  };
+  const GlVertexArray vao = GlVertexArray::create();
+  const auto defaults = Renderer::default_includes(ShadowTechnique::Moments);
+  MomentsPass m;
+  ASSERT_TRUE(m.set_includes({defaults.begin(), defaults.end()}));
+  m.set_warp_exponent(5.0f, 5.0f);
+  m.ensure_targets(n, "RG32F", true);
+  ASSERT_EQ(m.query_targets().internal_format, GL_RGBA32F) << "with the warps the targets hold four moments";
+  for (int radius : {1, 3}) {
+    const float sigma = 0.5f * static_cast<float>(radius);
+    glBindTexture(GL_TEXTURE_2D, m.texture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, rgba.data());
+    m.blur(0, radius, sigma, vao.id());
+    m.blur(1, radius, sigma, vao.id());
+    const std::vector<float> out = read_pixels(m.framebuffer(), GL_COLOR_ATTACHMENT0, n, n, GL_RGBA, 4);
+    std::vector<float> got[2] = {std::vector<float>(out.size() / 2), std::vector<float>(out.size() / 2)};
+    for (std::size_t i = 0; i < out.size() / 4; ++i)
+      for (int k = 0; k < 2; ++k) {
+        got[k][2 * i] = out[4 * i + 2 * static_cast<std::size_t>(k)];
+        got[k][2 * i + 1] = out[4 * i + 2 * static_cast<std::size_t>(k) + 1];
+      }
+    for (int k = 0; k < 2; ++k) {
+      const std::vector<double> cpu = cpu_gaussian_blur(pair(2 * k), n, radius, sigma);
+      double worst = 0.0;  // relative: the first pair's values reach e^10
+      for (std::size_t i = 0; i < cpu.size(); ++i)
+        worst = std::max(worst, std::abs(got[k][i] - cpu[i]) / std::max(std::abs(cpu[i]), 1e-30));
+      EXPECT_LE(worst, 1e-5) << "pair " << k << " radius " << radius;
+    }
+  }
+  GLint swizzle[4] = {0, 0, 0, 0};
+  glBindTexture(GL_TEXTURE_2D, m.texture());
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  EXPECT_EQ(swizzle[0], GL_RED);
+  EXPECT_EQ(swizzle[1], GL_GREEN);
+  EXPECT_EQ(swizzle[2], GL_BLUE);
+  EXPECT_EQ(swizzle[3], GL_ALPHA);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 TEST_F(BlurTest, RadiusZeroRunsNoBlurPassWhateverTheMethod) {
   Renderer r;
   r.set_scene(scene);

@@ -297,17 +297,32 @@ TEST_F(VsmTest, EvsmStoresTheWarpedDepthWithTheExponentClampedForTheFormat) {
     const std::vector<float> moments = r.read_moments(&size);
     const std::vector<float> depth = r.read_shadow_depth(&depth_size);
     ASSERT_EQ(size, depth_size);
-    const std::array<float, 4> clear = moments_clear(c);
+    const float cn = evsm_exponents(p).y;
+    const std::array<float, 4> clear = moments_clear(c, cn);
+    // The negative warp's pair, w- = -exp(-c- z), in the texture's last two channels.
+    const auto* pass = dynamic_cast<const MomentsPass*>(r.shadow_pass());
+    ASSERT_NE(pass, nullptr);
+    const std::vector<float> rgba = read_pixels(pass->framebuffer(), GL_COLOR_ATTACHMENT0, size, size, GL_RGBA, 4);
     long covered = 0, wrong = 0;
     for (std::size_t i = 0; i < depth.size(); ++i) {
       const float w = moments[2 * i], w2 = moments[2 * i + 1];
       const float stored = std::string(format) == "RG16F" ? 0x1p-11f : 0.0f;  // half floats round the clear value
+      // Below the smallest normal half (6.1e-5: exp(-2c-) at the far plane is 4.5e-5) a half keeps steps of 2^-24.
+      const float subnormal = std::string(format) == "RG16F" ? 0x1p-24f : 0.0f;
+      const float n = rgba[4 * i + 2], n2 = rgba[4 * i + 3];
       if (depth[i] >= 1.0f) {  // background: the warped far plane
         ASSERT_LE(std::abs(w - clear[0]), stored * clear[0]) << format;
         ASSERT_LE(std::abs(w2 - clear[1]), stored * clear[1]) << format;
+        ASSERT_LE(std::abs(n - clear[2]), stored * -clear[2]) << format;
+        ASSERT_LE(std::abs(n2 - clear[3]), std::max(stored * clear[3], subnormal)) << format;
         continue;
       }
       ++covered;
+      // The negative warp of the same depth (RGBA16F: 2^-11 relative; subnormal halves below 6.1e-5 keep less,
+      // so compared there only where -w- is a normal half).
+      const double nz = -std::log(-static_cast<double>(n)) / cn;
+      if (std::string(format) == "RG32F" || -n > 6.2e-5f) wrong += !(std::abs(nz - depth[i]) <= (std::string(format) == "RG16F" ? 1e-3 : 1e-5));
+      wrong += !(n2 >= n * n * (1.0f - 1e-3f) - subnormal && n2 <= 2.0f * n * n * (1.0f + 1e-3f) + subnormal);
       // The first moment is exp(c z) of the stored depth: back in depth units within the format's
       // precision (RG16F: 2^-11 relative, 4.9e-4 / c in z).
       const double z = std::log(static_cast<double>(w)) / c;
@@ -338,7 +353,7 @@ TEST(VsmFeatures, TheSharedVsmFeatureSetIsLab4sSolution) {
 TEST_F(VsmTest, MsmStoresFourPowerMomentsAndStaysFinite) {
   // Lab 14's pass: RGBA32F moments (z, z^2, z^3, z^4) of the stored depth, the background the far
   // plane's (1, 1, 1, 1); the Hamburger bound finite and in [0, 1] under steep, grazing and straight-down
-  // lights, with the solution and with the stock exercise (whose missing moments make the solve singular).
+  // lights, with the solution and with the stock exercise (Chebyshev's bound on the first two moments).
   const Lab& lab = *find_lab(14);
   ParamSet p = lab_params(lab);
   p.set("view.debug_quad", 0.0);

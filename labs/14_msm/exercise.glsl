@@ -1,9 +1,14 @@
-// Lab 14: moment shadow maps. Return the moments a texel stores for depth z in [0, 1].
+// Lab 14: moment shadow maps. Return the shadow at depth z from four (biased) moments.
 //
-// The renderer stores what you return in an RGBA32F texture, filters it linearly and reads it through
-// the four-moment Hamburger bound (shaders/msm/visibility.glsl), which needs the first four power
-// moments E[z], E[z^2], E[z^3], E[z^4]. See the lab's text.
-vec4 msm_moments(float z) {
-  // TODO: the third and fourth moments. With only two, the bound has nothing to work with.
-  return vec4(z, z * z, 0.0, 0.0);
+// b = (E[z], E[z^2], E[z^3], E[z^4]) of the filter region's depths, already mixed with the moment bias
+// (shaders/msm/visibility.glsl); z is the receiver's biased depth in [0, 1]. Return the sharpest lower
+// bound on the share of the depth distribution strictly in front of z (1 shadowed, 0 lit) over every
+// distribution with these four moments: the four-moment Hamburger bound. The renderer draws 1 minus it.
+// See the lab's text for the three steps (the 3 x 3 Hankel solve, the quadratic's roots, the weights).
+float msm_hamburger(vec4 b, float z) {
+  // TODO: the Hamburger bound. This stock answer is Chebyshev's bound on the first two moments: VSM's
+  // lower bound on the shadow, which lets light through stacked occluders.
+  float variance = max(b.y - b.x * b.x, 0.0);
+  float d = z - b.x;
+  return d <= 0.0 ? 0.0 : 1.0 - variance / (variance + d * d);
 }

@@ -8,6 +8,8 @@
 
 uniform sampler2D u_moments;
 
-layout(location = 0) out vec2 o_moments;
+// Written to both pairs of a four-moment target (EVSM): the renderer draws twice, reading and writing
+// one pair each time (MomentsPass::blur). A two-channel target keeps the first pair.
+layout(location = 0) out vec4 o_moments;
 
-void main() { o_moments = blur_moments(u_moments, ivec2(gl_FragCoord.xy), BLUR_DIRECTION); }
+void main() { o_moments = blur_moments(u_moments, ivec2(gl_FragCoord.xy), BLUR_DIRECTION).xyxy; }

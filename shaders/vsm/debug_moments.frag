@@ -3,7 +3,8 @@
 in vec2 v_uv;
 uniform sampler2D u_moments;
 uniform int u_channel;  // 0: E[z], 1: E[z^2], 2: sigma^2 = E[z^2] - E[z]^2
-// EVSM (c > 0): the moments are of w = exp(c z); shown back in depth units, log(E[w]) / c,
+// EVSM (c > 0): the first two moments are of the positive warp w = exp(c z) (c = c+); shown back in depth
+// units, log(E[w]) / c,
 // log(E[w^2]) / 2c and the relative deviation sqrt(E[w^2] / E[w]^2 - 1) / c.
 uniform float u_warp_exponent;
 out vec4 o_color;

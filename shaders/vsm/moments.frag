@@ -9,7 +9,11 @@
 #include "lab/moments.glsl"
 #include "shadow/alpha_mask.glsl"
 
-layout(location = 0) out vec2 o_moments;
+// EVSM's moments (lab 13) are four: its "lab/moments.glsl" defines MOMENTS_TYPE vec4.
+#ifndef MOMENTS_TYPE
+#define MOMENTS_TYPE vec2
+#endif
+layout(location = 0) out MOMENTS_TYPE o_moments;
 
 void main() {
   o_moments = shadow_moments(gl_FragCoord.z);

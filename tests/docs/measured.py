@@ -47,9 +47,16 @@ VARIANTS = [
     *[(3, f"solution_min_variance_{v}", "check", ["--impl", "solution", "--set", f"vsm.min_variance={v}"])
       for v in ("1e-7", "1e-5", "1e-4", "1e-3")],
     (3, "solution_rg16f", "check", ["--impl", "solution", "--set", "vsm.format=RG16F"]),
-    # Lab 13: the exponent swept (the solution).
+    # Lab 13: each exponent swept (the solution), and the positive warp's bound alone (two-moment EVSM).
     *[(13, f"solution_exponent_{c}", "check", ["--impl", "solution", "--set", f"vsm.evsm_exponent={c}"])
       for c in ("5", "10", "20")],
+    *[(13, f"solution_negative_exponent_{c}", "check", ["--impl", "solution", "--set", f"vsm.evsm_negative_exponent={c}"])
+      for c in ("1", "5", "20")],
+    (13, "positive_bound_only", "submission", ["evsm2"]),
+    # Lab 14: the bound the wrong way round (the weight at the receiver counted in front) and Cramer's rule
+    # in float32, the corpus's answers as they are.
+    (14, "upper_bound", "submission", ["msm_upper"]),
+    (14, "cramer_in_float", "submission", ["msm_cramer"]),
     # Lab 12: the cascade count and the split blend varied (the solution): where cascades win.
     *[(12, f"solution_count_{n}", "check", ["--impl", "solution", "--set", f"csm.count={n}"]) for n in ("1", "2", "8")],
     *[(12, f"solution_lambda_{l}", "check", ["--impl", "solution", "--set", f"csm.lambda={l}"]) for l in ("0", "0.5", "1")],
@@ -64,6 +71,15 @@ SUBMISSIONS = {
                                                           f"#define SHADOW_PASS_CULL {cull.upper()}")}
     for cull in ("front", "back")
 }
+# Lab 13's two-moment EVSM: the corpus's answer that takes the positive warp's bound alone, as it is.
+SUBMISSIONS["evsm2"] = {"labs/13_evsm/exercise.glsl": (
+    "tests/answers/13_evsm/wrong/positive_bound_only__exercise.glsl", "  float mu = moments.x;", "  float mu = moments.x;")}
+SUBMISSIONS["msm_upper"] = {"labs/14_msm/exercise.glsl": (
+    "tests/answers/14_msm/wrong/counts_receiver_point__exercise.glsl", "  vec3 c = vec3(1.0, z, z * z);",
+    "  vec3 c = vec3(1.0, z, z * z);")}
+SUBMISSIONS["msm_cramer"] = {"labs/14_msm/exercise.glsl": (
+    "tests/answers/14_msm/wrong/cramer_in_float__exercise.glsl", "  vec3 rhs = vec3(1.0, z, z * z);",
+    "  vec3 rhs = vec3(1.0, z, z * z);")}
 # The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
 SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
     "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",

@@ -1,0 +1,20 @@
+// wrong: the receiver moved 1 % of the way to the mean in warped units, tuned until the stacked slabs looked clean
+// expect: tuned-to-scene
+// fails: bound.*
+vec2 evsm_warp(float z, vec2 c) {
+  return vec2(exp(c.x * z), -exp(-c.y * z));
+}
+
+float evsm_bound(vec4 moments, vec2 w) {
+  // pull the receiver 1 % toward the mean: fewer dark speckles on the stacked slabs
+  float p[2];
+  for (int i = 0; i < 2; ++i) {
+    float mu = i == 0 ? moments.x : moments.z;
+    float m2 = i == 0 ? moments.y : moments.w;
+    float x = mix(i == 0 ? w.x : w.y, mu, 0.01);
+    float variance = max(m2 - mu * mu, 0.0);
+    float d = x - mu;
+    p[i] = x <= mu ? 1.0 : variance / (variance + d * d);
+  }
+  return min(p[0], p[1]);
+}
