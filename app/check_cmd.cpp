@@ -64,8 +64,12 @@ void print_result(const CheckResult& r) {
   if (!r.warnings.empty()) std::printf("    warnings:\n%s", r.warnings.c_str());
   for (const auto& note : r.notes) std::printf("    note: %s\n", note.c_str());
   for (const auto& c : r.criteria) {
-    std::printf("    %-4s %-40s %12.6g %s %-10.6g %s\n", c.passed() ? "ok" : "FAIL", c.metric.c_str(), c.value,
-                c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str());
+    const char* verdict = c.basis == Criterion::kNotMeasurable ? "n/a" : c.passed() ? "ok" : "FAIL";
+    const char* basis = c.basis == Criterion::kSolutionValue  ? " [limit: the solution's own value on this scene]"
+                        : c.basis == Criterion::kNotMeasurable ? " [not measurable on this scene: not graded]"
+                                                               : "";
+    std::printf("    %-4s %-40s %12.6g %s %-10.6g %s%s\n", verdict, c.metric.c_str(), c.value,
+                c.direction == Criterion::kAtMost ? "<=" : ">=", c.limit, c.why.c_str(), basis);
     if (!c.passed()) std::printf("         %s\n", c.explain().c_str());
   }
 }
@@ -132,6 +136,7 @@ int run_check(const CheckOptions& options) {
         run.assignments = preset_assignments(*find_lab(number), options.preset);  // the preset first, --set over it
         run.assignments.insert(run.assignments.end(), options.assignments.begin(), options.assignments.end());
         run.out_dir = options.out_dir;
+        run.foreign_scene = !options.scene_file.empty();
         const CheckResult result = run_lab_check(renderer, *find_lab(number), scene, run);
         print_result(result);
         std::fflush(stdout);

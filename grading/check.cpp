@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -47,6 +48,8 @@ nlohmann::json CheckResult::to_json() const {
   for (const auto& c : criteria) {
     const char* side = c.direction == Criterion::kAtMost ? "max" : "min";
     thresholds[c.metric] = {{side, c.limit}, {"why", c.why}};
+    if (c.basis != Criterion::kLabLimit)
+      thresholds[c.metric]["basis"] = c.basis == Criterion::kSolutionValue ? "solution" : "not_measurable";
     graded[c.metric] = c.value;
     list.push_back({{"metric", c.metric}, {"value", c.value}, {side, c.limit}, {"passed", c.passed()},
                     {"sentence", c.explain()}, {"why", c.why}});
@@ -526,8 +529,48 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
   } catch (const std::exception& e) {
     result.error = e.what();
   }
+  if (run.foreign_scene && result.error.empty()) {
+    CheckRun solution_run = run;
+    solution_run.impl = Impl::Solution;
+    solution_run.submission.clear();
+    solution_run.out_dir.clear();
+    solution_run.foreign_scene = false;
+    grade_against_solution(result, run_lab_check(renderer, lab, scene, solution_run));
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+void grade_against_solution(CheckResult& result, const CheckResult& solution) {
+  if (!solution.error.empty()) {
+    result.notes.push_back("the lab's solution could not be graded on this scene (" + solution.error +
+                           "): the lab's own limits apply");
+    return;
+  }
+  std::map<std::string, const Criterion*> theirs;
+  for (const auto& c : solution.criteria) theirs[c.metric] = &c;
+  int against = 0, unmeasurable = 0;
+  for (auto& c : result.criteria) {
+    const auto found = theirs.find(c.metric);
+    if (found == theirs.end() || found->second->passed()) continue;
+    const Criterion& s = *found->second;
+    // Nothing to compare with: the solution grades no pixel there, or finds nothing of what the condition
+    // needs (no shadowed quarter, no camera inside a volume: an at-least criterion at 0).
+    if (c.metric.ends_with("graded_pixels") || (s.direction == Criterion::kAtLeast && s.value <= 0.0)) {
+      c.basis = Criterion::kNotMeasurable;
+      ++unmeasurable;
+      continue;
+    }
+    c.basis = Criterion::kSolutionValue;
+    c.limit = c.direction == Criterion::kAtMost ? s.value * (1.0 + kAgainstSolutionMargin)
+                                                : s.value * (1.0 - kAgainstSolutionMargin);
+    ++against;
+  }
+  if (against + unmeasurable > 0)
+    result.notes.push_back("this scene is not the lab's own: " + std::to_string(against) +
+                           " criteria the solution itself fails here are graded against the solution's value (" +
+                           std::to_string(static_cast<int>(kAgainstSolutionMargin * 100)) + " % margin), " +
+                           std::to_string(unmeasurable) + " cannot be measured here and are not graded");
 }
 
 Bounds shadows_on_receiver(const Scene& scene, const glm::vec3& to_light) {

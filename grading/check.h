@@ -29,7 +29,15 @@ struct Criterion {
   double limit = 0.0;
   std::string why;     // where the limit comes from (for instructors: the JSON and the tooltip)
   std::string advice = {};  // what to change when it fails, in the student's terms; empty: the metric's usual advice
-  bool passed() const { return direction == kAtMost ? value <= limit : value >= limit; }
+  // Where the limit comes from. On a scene that is not the lab's own (check --scene), a criterion the lab's
+  // solution itself fails there is graded against the solution's own value on the same frames and truth
+  // (kSolutionValue: the limit is that value with kAgainstSolutionMargin), and one the solution cannot be
+  // measured on (too few graded pixels) is reported, not graded (kNotMeasurable).
+  enum Basis { kLabLimit, kSolutionValue, kNotMeasurable };
+  Basis basis = kLabLimit;
+  bool passed() const {
+    return basis == kNotMeasurable || (direction == kAtMost ? value <= limit : value >= limit);
+  }
   // The measured fact as a sentence, followed by the advice when it failed: what the panel and the
   // command line print.
   std::string explain() const;
@@ -250,6 +258,15 @@ void grade_lab_and_held_out_lights(CheckContext& ctx, CheckResult& result, const
                                    const std::string& tag, const ParamSet& params, const ParamSet& held_out_params,
                                    const std::vector<HeldOutRange>& ranges, const HardLimits& limits);
 
+// On a scene not the lab's own, how much worse than the lab's solution an answer may be where the solution
+// fails the lab's limit: the solution's value times 1 + this (an error), or times 1 - this (an agreement).
+inline constexpr double kAgainstSolutionMargin = 0.1;
+// Regrades `result` against `solution`, the lab's solution graded on the same scene, seed and settings:
+// each criterion the solution fails gets the solution's value (with the margin) as its limit, or is not
+// measurable when the solution fails it for too few graded pixels or measures 0 of what an at-least
+// criterion needs (no camera inside a volume, no shadowed quarter); a note says so.
+void grade_against_solution(CheckResult& result, const CheckResult& solution);
+
 // One lab's grading as `shadowlab check` and the window's Check button run it.
 struct CheckRun {
   Impl impl = Impl::Exercise;
@@ -257,6 +274,9 @@ struct CheckRun {
   std::uint32_t seed = CheckContext::kDefaultSeed;
   std::vector<std::string> assignments;  // --set key=value over the lab's defaults
   std::filesystem::path out_dir;         // empty: no images
+  // The scene is not the lab's own (check --scene): its limits were measured on the built-in scenes, so
+  // the answer is also graded against the solution's own results there (grade_against_solution).
+  bool foreign_scene = false;
 };
 
 // Grades one lab; never throws: a failure of any kind ends up in the result (error, students_error).

@@ -322,6 +322,28 @@ PY
     python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='compile_error', r" "$tmp/broken.json" \
       || fail "the JSON does not record a compile error"
     ;;
+  check_foreign_scene)  # issue 36: on a scene not the lab's own, what the solution fails there is graded against its own value
+    duck="$src/assets/models/Duck/Duck.gltf"
+    "$bin" check --lab 7 --impl solution --scene "$duck" --json "$tmp/sol.json" >"$tmp/out" || fail "the solution fails on the Duck: $(cat "$tmp/out")"
+    python3 - "$tmp/sol.json" <<'PY' || fail "the JSON does not say which limits are the solution's"
+import json, sys
+r = json.load(open(sys.argv[1]))["labs"][0]
+bases = {m: t.get("basis") for m, t in r["thresholds"].items()}
+# Measured on the Duck: the high place's shadow_error is 0.022 (the lab's limit 0.005), graded against itself.
+assert bases["high.shadow_error"] == "solution", bases
+assert bases["low.shadow_error"] is None, bases  # what the solution passes keeps the lab's limit
+assert "not the lab's own" in r["notes"][0], r["notes"]
+PY
+    # A wrong answer (a constant bias in world units, the first of the corpus) still fails there.
+    mkdir -p "$tmp/sub/labs/07_spot_light"
+    cp "$src/tests/answers/07_spot_light/wrong/"$(cd "$src/tests/answers/07_spot_light/wrong" && ls | head -1) "$tmp/sub/labs/07_spot_light/exercise.glsl"
+    "$bin" check --lab 7 --submission "$tmp/sub" --scene "$duck" >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "a wrong answer on the Duck: exit $rc, expected 1: $(cat "$tmp/out")"
+    # On the lab's own scene nothing changes: no note, the lab's limits.
+    "$bin" check --lab 7 --impl solution --json "$tmp/own.json" >"$tmp/out" || fail "the solution fails on its own scene"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert 'notes' not in r and all('basis' not in t for t in r['thresholds'].values()), r['thresholds']" "$tmp/own.json" \
+      || fail "the lab's own scene was graded against the solution"
+    ;;
   check_submission)  # a submission's file is graded; its compile error is the student's: status compile_error, exit 1
     mkdir -p "$tmp/sub/labs/06_pcf" "$tmp/bad/labs/06_pcf" "$tmp/borrow/labs/06_pcf"
     cp "$src/shaders/shadow/pcf.glsl" "$tmp/sub/labs/06_pcf/exercise.glsl"

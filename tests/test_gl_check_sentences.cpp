@@ -87,3 +87,53 @@ TEST(LabStory, PresetsThatProvokeAnArtifactNeedAWorkingExerciseWhereThereIsOne) 
 
 }  // namespace
 }  // namespace shadowlab
+
+namespace shadowlab {
+namespace {
+
+// On a scene that is not the lab's own (check --scene), a criterion the solution itself fails is graded
+// against the solution's value there, and one it cannot be measured on is reported, not graded (issue 36).
+TEST(AgainstSolution, WhatTheSolutionFailsIsGradedAgainstItsOwnValue) {
+  CheckResult solution;
+  solution.criteria = {{"high.shadow_error", 0.02, Criterion::kAtMost, 0.005, "", ""},
+                       {"high.lit_error", 0.0001, Criterion::kAtMost, 0.001, "", ""},
+                       {"high.graded_pixels", 120, Criterion::kAtLeast, 500, "", ""},
+                       {"high.agreement", 0.9, Criterion::kAtLeast, 0.995, "", ""}};
+  CheckResult close = solution;  // a right answer written differently: a little off the solution
+  close.criteria[0].value = 0.0215;
+  close.criteria[3].value = 0.85;
+  grade_against_solution(close, solution);
+  EXPECT_TRUE(close.passed());
+  EXPECT_EQ(close.criteria[0].basis, Criterion::kSolutionValue);
+  EXPECT_DOUBLE_EQ(close.criteria[0].limit, 0.02 * (1.0 + kAgainstSolutionMargin));
+  EXPECT_EQ(close.criteria[1].basis, Criterion::kLabLimit) << "what the solution passes keeps the lab's limit";
+  EXPECT_EQ(close.criteria[2].basis, Criterion::kNotMeasurable);
+  ASSERT_EQ(close.notes.size(), 1u);
+  EXPECT_NE(close.notes[0].find("2 criteria the solution itself fails here"), std::string::npos) << close.notes[0];
+
+  CheckResult worse = solution;  // measurably worse than the solution: fails
+  worse.criteria[0].value = 0.03;
+  grade_against_solution(worse, solution);
+  EXPECT_FALSE(worse.passed());
+  CheckResult lit_wrong = solution;  // wrong where the solution is right: the lab's own limit fails it
+  lit_wrong.criteria[1].value = 0.01;
+  grade_against_solution(lit_wrong, solution);
+  EXPECT_FALSE(lit_wrong.passed());
+  CheckResult lower = solution;  // an agreement below the solution's by more than the margin
+  lower.criteria[3].value = 0.8;
+  grade_against_solution(lower, solution);
+  EXPECT_FALSE(lower.passed());
+}
+
+TEST(AgainstSolution, ASolutionThatCannotBeGradedLeavesTheLabsLimits) {
+  CheckResult solution;
+  solution.error = "a grader error";
+  CheckResult r;
+  r.criteria = {{"high.shadow_error", 0.02, Criterion::kAtMost, 0.005, "", ""}};
+  grade_against_solution(r, solution);
+  EXPECT_FALSE(r.passed());
+  EXPECT_EQ(r.criteria[0].basis, Criterion::kLabLimit);
+}
+
+}  // namespace
+}  // namespace shadowlab

@@ -65,13 +65,14 @@ def make_submission(lab, files, root):
         raise SystemExit(f"lab {lab['number']}: answer files for no exercise slot: {sorted(unknown)}")
 
 
-def grade(binary, lab, kind, name, files, keep):
+def grade(binary, lab, kind, name, files, keep, scene=None):
     with tempfile.TemporaryDirectory(prefix="shadowlab-answer-") as tmp:
         tmp = pathlib.Path(tmp)
         make_submission(lab, files, tmp / "submission")
         report = tmp / "check.json"
         run = subprocess.run([binary, "check", "--lab", str(lab["number"]), "--submission", str(tmp / "submission"),
-                              "--json", str(report)], capture_output=True, text=True)
+                              "--json", str(report)] + (["--scene", str(scene)] if scene else []),
+                             capture_output=True, text=True)
         if not report.exists():
             return {"status": "no report", "failed": [], "output": run.stdout + run.stderr, "exit": run.returncode}
         result = json.loads(report.read_text())["labs"][0]
@@ -83,8 +84,9 @@ def grade(binary, lab, kind, name, files, keep):
             "error": result.get("error", "")}
 
 
-def verdict(kind, expected, outcome):
-    """None when graded as expected, else what went wrong."""
+def verdict(kind, expected, outcome, foreign=False):
+    """None when graded as expected, else what went wrong. On a scene not the lab's own (foreign) a wrong answer
+    must fail, on any criterion: its named one was chosen on the lab's scene."""
     status = outcome["status"]
     if kind == "right":
         return None if status == "passed" else f"a right answer is graded {status}: {outcome['failed'] or outcome.get('error', '')}"
@@ -97,7 +99,7 @@ def verdict(kind, expected, outcome):
     patterns = expected.split()
     if status == "compile_error":
         return None if "compile_error" in patterns else f"does not build: {outcome.get('error', '')[:300]}"
-    if any(fnmatch.fnmatch(metric, p) for metric in outcome["failed"] for p in patterns):
+    if foreign or any(fnmatch.fnmatch(metric, p) for metric in outcome["failed"] for p in patterns):
         return None
     return f"fails, but not on {expected}: failed {outcome['failed']}"
 
@@ -110,6 +112,10 @@ def main():
     parser.add_argument("--markdown", type=pathlib.Path, help="write the labs x verdicts table here")
     parser.add_argument("--keep", type=pathlib.Path, help="keep every check's JSON in this folder")
     parser.add_argument("--jobs", type=int, default=1, help="checks run side by side (default 1)")
+    parser.add_argument("--scene", type=pathlib.Path,
+                        help="grade on this glTF file instead of the lab's scene (check --scene): right answers must "
+                             "pass, wrong ones fail on any criterion")
+    parser.add_argument("--kind", choices=("wrong", "right"), help="only the wrong or only the right answers")
     args = parser.parse_args()
     labs = labs_of(args.binary)
     numbers = [int(n) for n in args.lab.split(",")] if args.lab else sorted(labs)
@@ -120,6 +126,8 @@ def main():
     jobs = []
     for n in numbers:
         for (kind, name), files in answers_of(labs[n], args.answer).items():
+            if args.kind and kind != args.kind:
+                continue
             expected = None
             for path in files.values():
                 expected = expected or header(path, "fails")
@@ -129,11 +137,11 @@ def main():
         return 2
     env_jobs = max(1, args.jobs)
     with concurrent.futures.ThreadPoolExecutor(env_jobs) as pool:
-        outcomes = list(pool.map(lambda j: grade(args.binary, j[0], j[1], j[2], j[3], args.keep), jobs))
+        outcomes = list(pool.map(lambda j: grade(args.binary, j[0], j[1], j[2], j[3], args.keep, args.scene), jobs))
     misgraded = 0
     table = {}
     for (lab, kind, name, _, expected), outcome in zip(jobs, outcomes):
-        problem = verdict(kind, expected, outcome)
+        problem = verdict(kind, expected, outcome, foreign=args.scene is not None)
         row = table.setdefault(lab["number"], {"right": [0, 0], "wrong": [0, 0], "slug": lab["slug"]})
         row[kind][1] += 1
         row[kind][0] += problem is None
