@@ -177,8 +177,8 @@ class Renderer {
   TimingMode timing() const;
   bool timers_work() const;  // false on a software rasteriser: its timer queries measure nothing useful
   // On (the default), the lit pass draws with a program compiled for the technique's settings as
-  // constants (ShadowPass::lit_constants: PCF's kernel and comparison); off, with the generic program
-  // reading them as uniforms. Both draw the same image (tests compare them).
+  // constants (ShadowPass::lit_constants, ShadowTest::constants: PCF's kernel and comparison); off, with
+  // the generic program reading them as uniforms. Both draw the same image (tests compare them).
   void set_lit_constants(bool on);
   // The constants the last frame's lit program was compiled with (empty: the generic program).
   const LitConstants& drawn_lit_constants() const;

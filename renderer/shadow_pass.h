@@ -57,13 +57,13 @@ struct LitUniforms {
   } csm;
 };
 
-// LitConstants (renderer/shadow_test.h): uniforms the lit program may be compiled with as constants
-// (name, value; see ProgramDesc::constants): what a technique's few settings decide per pixel (loop
-// counts, branches), so that the lit pass runs no dead branch and no uniform-bounded loop for what a lab
-// uses.
-
 // What the lit pass binds besides its own uniforms, handed to it with the frame (PassContext::lit_inputs)
-// by the renderer: the lit pass asks no shadow pass or shadow test for anything.
+// by the renderer: the lit pass knows no shadow pass and no shadow test by itself. LitConstants
+// (renderer/shadow_test.h), the uniforms a lit program may be compiled with as constants, are what a
+// technique's few settings decide per pixel (loop counts, branches), so that the lit pass runs no dead
+// branch and no uniform-bounded loop for what a lab uses: the pass's (ShadowPass::lit_constants) and
+// the selected test's (ShadowTest::constants), which the renderer collects each frame before the lit
+// pass draws.
 struct LitInputs {
   int map_size = 0;  // texels per side of the light's map (a texel's depth and angle)
   // The shadow pass's textures and uniforms (ShadowPass::bind_lit_inputs; leaves unit 0 active).
@@ -184,8 +184,8 @@ class ShadowPass {
   // uniforms; leaves texture unit 0 active.
   virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
   // The uniforms among those that the lit program may take as constants, with these parameters' values
-  // (the same bind_lit_inputs sets; the shadow test's own come from the test); empty by default. Only parameters declaring kInvalidatesPrograms
-  // may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
+  // (the same bind_lit_inputs sets; a shadow test's own come from the test, ShadowTest::constants);
+  // empty by default. Only parameters declaring kInvalidatesPrograms may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
   virtual void lit_constants(const ParamSet&, LitConstants& out) const { out.clear(); }
   // 4. The technique's own debug views (after the lit pass), and its map in the corner.
   virtual void draw_views(PassContext&, LitPass&) {}

@@ -22,7 +22,7 @@
 namespace shadowlab {
 
 struct DebugAnnotations;
-// Uniforms the lit program may be compiled with as constants (name, value; see ProgramDesc::constants).
+// Uniforms the lit program may be compiled with as constants (name, value; ProgramDesc::constants).
 using LitConstants = std::vector<std::pair<std::string, std::string>>;
 
 // What a test's bind reads in one frame.

@@ -8,16 +8,10 @@
 # lab list.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
-if [ $# -ge 1 ]; then
-  work="$1"
-  mkdir -p "$work"
-else
-  work="$(mktemp -d)"
-  trap 'rm -rf "$work"' EXIT
-fi
-copy="$work/src"
 # shellcheck source=tests/tree_copy.sh
 source "$src/tests/tree_copy.sh"
+work_folder "$@"
+copy="$work/src"
 copy_tree "$src" "$copy"
 cp -r "$copy/labs/00_basic_shadow_map" "$copy/labs/98_throwaway"
 sed -i 's/lab.title = "Basic shadow map";/lab.title = "Throwaway copy";/' "$copy/labs/98_throwaway/lab.cpp"

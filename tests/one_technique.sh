@@ -16,17 +16,11 @@
 # generated list; at run time SHADOWLAB_DATA_DIR points at the copy (where the new shader is).
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
-if [ $# -ge 1 ]; then
-  work="$1"
-  mkdir -p "$work"
-else
-  work="$(mktemp -d)"
-  trap 'rm -rf "$work"' EXIT
-fi
-copy="$work/src"
-fail() { echo "one_technique: $*" >&2; exit 1; }
 # shellcheck source=tests/tree_copy.sh
 source "$src/tests/tree_copy.sh"
+work_folder "$@"
+copy="$work/src"
+fail() { echo "one_technique: $*" >&2; exit 1; }
 copy_tree "$src" "$copy"
 fingerprint() { (cd "$copy" && find . -path ./build -prune -o -type f -print0 | sort -z | xargs -0 sha1sum); }
 fingerprint >"$work/before.txt"

@@ -1,6 +1,17 @@
 # Sourced by tests/one_folder.sh and tests/one_technique.sh: a copy of the source tree, built as cheaply
 # as the tree itself was.
 #
+# work_folder [WORK_DIR]: sets `work` to WORK_DIR (created), or to a temporary folder removed at exit.
+work_folder() {
+  if [ $# -ge 1 ]; then
+    work="$1"
+    mkdir -p "$work"
+  else
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+  fi
+}
+#
 # copy_tree SRC COPY: the working tree as it is (tracked files and new ones git does not ignore) into COPY.
 copy_tree() {
   local src="$1" copy="$2"
