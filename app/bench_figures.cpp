@@ -108,7 +108,7 @@ struct TechniqueCase {
 
 std::vector<TechniqueCase> technique_cases() {
   Features pcf, spot, point, moments, volumes;
-  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
+  pcf.shadow_test = "pcf";  // shaders/shadow/pcf.glsl
   spot.light = LightType::Spot;
   point.light = LightType::Point;
   moments.technique = ShadowTechnique::Moments;

@@ -124,6 +124,9 @@ int main(int argc, char** argv) {
       ->needs(panel_flag);
   render_cmd->add_option("--bench", render.bench_file, "With --panel: also show the Speed against error window on this bench.json")
       ->needs(panel_flag);
+  render_cmd->add_option("--shadow-test", render.shadow_test,
+                         "Shadow test in the visibility slot instead of the lab's (renderer/shadow_tests/: hard, pcf, pcss, ...); "
+                         "its parameters join the lab's, for --set");
   render_cmd->add_flag("--buffers", render.buffers,
                        "Also write world positions, normals and visibility as float32 .npy files");
   render_cmd->add_option("--ui-scale", render.ui_scale, "With --panel: text and widget scale (2: as on a 200 % monitor)")

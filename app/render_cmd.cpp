@@ -28,6 +28,7 @@
 #include "core/untrusted.h"
 #include "renderer/renderer.h"
 #include "renderer/shader.h"
+#include "renderer/shadow_test.h"
 
 namespace shadowlab {
 
@@ -55,6 +56,16 @@ int run_render(const RenderOptions& options) {
       throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
     }
     ParamSet params = lab_params(*lab);
+    const ShadowTest* shadow_test = nullptr;
+    if (!options.shadow_test.empty()) {
+      try {
+        shadow_test = &find_shadow_test(options.shadow_test);
+      } catch (const std::exception& e) {
+        throw std::invalid_argument(std::string("--shadow-test: ") + e.what());
+      }
+      for (const ParamSpec& spec : shadow_test->params)  // what the lab declares keeps the lab's default
+        if (!params.find(spec.key)) params.declare(spec);
+    }
     const Preset* preset = apply_preset_option(params, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = scene_option(options.scene_file, preset);
@@ -73,7 +84,12 @@ int run_render(const RenderOptions& options) {
       std::optional<CheckResult> check;
       if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene);
       Renderer renderer;
-      if (!renderer.set_features(lab->hooks(impl))) throw std::runtime_error(renderer.shader_error());
+      Features features = lab->hooks(impl);
+      if (shadow_test) {  // the test's own file in the visibility slot, with its uniforms
+        features.shadow_test = shadow_test->name;
+        features.includes.erase("lab/visibility.glsl");
+      }
+      if (!renderer.set_features(features)) throw std::runtime_error(renderer.shader_error());
       renderer.set_scene(scene);
       PenumbraPanelState penumbra;
       std::unique_ptr<Oracle> oracle;

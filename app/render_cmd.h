@@ -24,6 +24,7 @@ struct RenderOptions {
   std::string out_dir;
   bool buffers = false;
   std::string impl = "solution";
+  std::string shadow_test;  // --shadow-test NAME: this registered shadow test instead of the lab's (empty: the lab's)
   // Draw the window's panel (the same code, ImGui offscreen) over final.png, for reproducible
   // documentation pictures; with panel_check the lab's Check runs first and its result is shown.
   bool panel = false;

@@ -143,7 +143,7 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
 
 void CascadePass::draw_views(PassContext& ctx, LitPass& lit) {
   if (csm_param(ctx.params, "csm.show_cascades") != 0.0) {
-    ctx.timed("cascade_view", [&] { lit.draw(ctx, *this, LitVariant::CascadeView); });
+    ctx.timed("cascade_view", [&] { lit.draw(ctx, LitVariant::CascadeView); });
     if (ctx.annotations) ctx.annotations->legends.push_back(cascade_view_legend(count_));
   }
 }

@@ -14,14 +14,6 @@ GLenum depth_internal_format(const std::string& name) {
   return GL_DEPTH_COMPONENT24;
 }
 
-// PCF's kernel radius ((N - 1) / 2): pcf.kernel's, or the one matched to the light (pcf.match_light,
-// `matched` >= 0); and whether each tap compares in hardware.
-int pcf_radius(const ParamSet& params, int matched) {
-  if (matched >= 0 && technique_param(params, "pcf.match_light") != 0.0) return matched;
-  return std::stoi(technique_choice(params, "pcf.kernel")) / 2;
-}
-bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.hardware") != 0.0; }
-
 }  // namespace
 
 DepthMapPass::DepthMapPass(const char* pass_name)
@@ -94,9 +86,7 @@ void DepthMapPass::draw_depth(PassContext& ctx) {
   }));
 }
 
-void DepthMapPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  u.pcf_radius.set(pcf_radius(params, matched_radius_));
-  u.pcf_hardware.set(pcf_hardware(params) ? 1 : 0);
+void DepthMapPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
   if (u.shadow_map_compare.present()) {
     // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
     // the four comparisons bilinearly); unit 0 keeps reading raw depths.
@@ -108,16 +98,6 @@ void DepthMapPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u)
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
-}
-
-void DepthMapPass::lit_constants(const ParamSet& params, LitConstants& out) const {
-  // PCF's kernel bounds its loops and the hardware flag picks each tap's comparison: compiled in, a 3 x 3
-  // kernel is nine unrolled taps of one kind, as a hand-written shader for it would be.
-  out.resize(2);
-  out[0].first = "u_pcf_radius";
-  out[0].second = std::to_string(pcf_radius(params, matched_radius_));
-  out[1].first = "u_pcf_hardware";
-  out[1].second = pcf_hardware(params) ? "1" : "0";
 }
 
 void DepthMapPass::draw_debug_quads(const DebugQuadArea& area) {

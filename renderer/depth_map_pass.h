@@ -1,6 +1,6 @@
 // The plain shadow map of a directional or spot light (the course's first pass): the scene's depth seen
 // from the light, in a depth texture with no colour buffer, compared in the lit pass with one tap or
-// filtered (PCF, in the shader or through a comparison sampler). A spot's map is a perspective
+// filtered (PCF, in the shader or through a comparison sampler: the shadow tests, renderer/shadow_test.h). A spot's map is a perspective
 // projection: its default shadow test (shaders/shadow/spot.glsl) compares linear distances.
 //
 //   depth pass:  scene from the light -> depth texture (16, 24 or 32F bits, nearest)
@@ -24,7 +24,6 @@ class DepthMapPass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   void draw_map(PassContext& ctx) override;
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
-  void lit_constants(const ParamSet& params, LitConstants& out) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }
   GLuint texture() const { return depth_texture_.id(); }

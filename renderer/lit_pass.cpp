@@ -84,13 +84,6 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_texel_angle"),
        Uniform(id, "u_shadow_faces"),
        Uniform(id, "u_shadow_map_compare"),
-       Uniform(id, "u_pcf_radius"),
-       Uniform(id, "u_pcf_hardware"),
-       Uniform(id, "u_light_size"),
-       Uniform(id, "u_pcss_blocker_samples"),
-       Uniform(id, "u_pcss_filter_samples"),
-       Uniform(id, "u_pcss_view"),
-       Uniform(id, "u_pcss_view_range"),
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
@@ -232,12 +225,19 @@ void LitPass::ensure_targets(int width, int height, bool gbuffer, bool stencil, 
   stencil_ = stencil;
 }
 
-void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant) {
+void LitPass::draw(PassContext& ctx, LitVariant variant) {
+  if (!ctx.lit_inputs) throw std::logic_error("the lit pass draws a frame whose context has no lit inputs");
+  const LitInputs& inputs = *ctx.lit_inputs;
   use_materials(ctx.gpu_scene.has_materials());
   const auto it = programs_.find({variant, writes_gbuffer(variant, ctx.gbuffer)});
   if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
   Program& p = program_for(it->second);
-  if (p.u.generation != p.program.generation()) resolve(p.program, p.u);
+  if (p.u.generation != p.program.generation() || p.test != inputs.test) {
+    resolve(p.program, p.u);
+    // The shadow test's own uniforms, looked up by the test on this program.
+    p.test = inputs.test;
+    p.test_bind = p.test && p.test->resolve ? p.test->resolve(p.program.id()) : ShadowTestBind();
+  }
   if (is_overlay(variant)) {
     bind_color_target(framebuffer(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
   } else {
@@ -246,10 +246,7 @@ void LitPass::draw(PassContext& ctx, const ShadowPass& shadow, LitVariant varian
   }
   begin(variant, ctx.gbuffer, to_window_ && window_ == 0);
   glUseProgram(p.program.id());
-  set_uniforms(ctx, shadow, p.u);
-  // A shadow test with PCSS's debug view (it reads u_pcss_view) shows a colour ramp: its legend, once.
-  if (ctx.annotations && p.u.pcss_view.present() && ctx.annotations->legends.empty())
-    if (auto legend = pcss_view_legend(ctx.params)) ctx.annotations->legends.push_back(std::move(*legend));
+  set_uniforms(ctx, p);
   bind_material(p.program, ctx);
   ctx.gpu_scene.bind();
   if (!materials_) {
@@ -378,7 +375,9 @@ void LitPass::end() {
   glDepthFunc(GL_LESS);
 }
 
-void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const {
+void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
+  const LitUniforms& u = p.u;
+  const LitInputs& inputs = *ctx.lit_inputs;
   const FrameLight& light = ctx.light;
   const ParamSet& params = ctx.params;
   u.view_proj.set(ctx.camera_view_proj());
@@ -390,7 +389,7 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
   // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
   const float depth_range = 2.0f / std::abs(light.view.projection[2][2]);
-  u.texel_depth.set(light.view.world_size.x / static_cast<float>(shadow.size()) / depth_range);
+  u.texel_depth.set(light.view.world_size.x / static_cast<float>(inputs.map_size) / depth_range);
   u.ambient.set(params.get_float("view.ambient"));
   // Positional lights: where the light stands, the spot's cone, its projection's planes, a texel's angle.
   u.light_position.set(light.position);
@@ -399,21 +398,16 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   const glm::mat4& proj = light.view.projection;  // near and far back from a perspective matrix
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
-  u.texel_angle.set(light.texel_angle(std::max(shadow.size(), 1)));
-  // A sized light as given (light.size: a directional light's angular diameter in degrees, a positional
-  // light's radius), and PCSS's samples per side (blocker search, filter); no shadow test but PCSS reads them.
-  u.light_size.set(light.size);
-  u.pcss_blocker_samples.set(static_cast<int>(technique_param(params, "pcss.blocker_samples")));
-  u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
-  u.pcss_view.set(static_cast<int>(technique_param(params, "pcss.view")));
-  u.pcss_view_range.set(pcss_view_range(params));  // the legend's high end too (debug_annotations.h)
+  u.texel_angle.set(light.texel_angle(std::max(inputs.map_size, 1)));
   if (ctx.lights && !ctx.lights->empty()) {  // each uniform set when present: an answer may leave some unused
     u.lights.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
     for (std::size_t i = 0; i < ctx.lights->size(); ++i)
       (*ctx.lights)[i].bind_lit_inputs(params, u.lights.entry[i], kShadowedLightUnits[i]);
     glActiveTexture(GL_TEXTURE0);
   }
-  shadow.bind_lit_inputs(params, u);
+  inputs.bind_map(params, u);
+  // The shadow test's own uniforms (only the selected test's: renderer/shadow_test.h).
+  if (p.test_bind) p.test_bind(ShadowTestFrame{params, light, inputs.matched_radius, ctx.annotations});
   u.shadow_map.set(0);
 }
 

@@ -4,7 +4,7 @@
 // programs, one per variant the shadow pass asks for (see LitVariant), built with the technique's
 // includes and the light type's defines. Each variant is built generic (every uniform a uniform: what
 // set_features builds and reports errors from) and, when first drawn with constants (the technique's
-// settings, ShadowPass::lit_constants), compiled once more with them as constants: the program a frame
+// settings, ShadowPass::lit_constants and ShadowTest::constants), compiled once more with them as constants: the program a frame
 // draws with is the one for exactly those settings. A specialisation that fails to build (none should:
 // it only turns uniforms into constants) is not retried and the generic program draws instead.
 #pragma once
@@ -50,8 +50,9 @@ class LitPass {
   // The constants the next draws compile in (empty, or with specialise off: the generic programs).
   void use_constants(const LitConstants& constants) { constants_ = constants; }
   void set_specialise(bool on) { specialise_ = on; }
-  // Draws the scene with a variant's program, reading what `shadow` binds.
-  void draw(PassContext& ctx, const ShadowPass& shadow, LitVariant variant);
+  // Draws the scene with a variant's program, binding what the frame's lit inputs name
+  // (ctx.lit_inputs: the shadow pass's map and the shadow test's uniforms).
+  void draw(PassContext& ctx, LitVariant variant);
   // The constants the last draw's program was compiled with (empty: the generic program).
   const LitConstants& drawn_constants() const { return drawn_constants_; }
 
@@ -70,6 +71,8 @@ class LitPass {
   struct Program {
     ReloadableProgram program;
     LitUniforms u;
+    const ShadowTest* test = nullptr;  // whose uniforms test_bind sets (looked up on this program)
+    ShadowTestBind test_bind;
   };
   struct Slot {
     Program generic;
@@ -81,7 +84,7 @@ class LitPass {
   Program& program_for(Slot& slot);
   static void begin(LitVariant variant, bool gbuffer, bool default_framebuffer);
   static void end();
-  void set_uniforms(const PassContext& ctx, const ShadowPass& shadow, const LitUniforms& u) const;
+  void set_uniforms(const PassContext& ctx, const Program& p) const;
 
   void bind_material(const ReloadableProgram& program, const PassContext& ctx) const;
 

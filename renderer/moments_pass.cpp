@@ -246,7 +246,7 @@ void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
 
 void MomentsPass::draw_views(PassContext& ctx, LitPass& lit) {
   if (vsm_param(ctx.params, "vsm.show_remap") != 0.0) {
-    ctx.timed("remap_view", [&] { lit.draw(ctx, *this, LitVariant::RemapView); });
+    ctx.timed("remap_view", [&] { lit.draw(ctx, LitVariant::RemapView); });
     if (ctx.annotations) ctx.annotations->legends.push_back(remap_view_legend());
   }
 }

@@ -161,6 +161,10 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   includes[kMaterialInclude] = kPlainMaterial;
   // The lit pass reads its includes before the preprocessor: the SHADOWED_LIGHTS part needs its file always.
   includes["lab/combine.glsl"] = "shaders/shadow/combine_lights.glsl";
+  // The selected shadow test's file in the visibility slot, unless the features name another there (a
+  // student's version of that test, which reads the same uniforms).
+  const ShadowTest* test = features.shadow_test.empty() ? nullptr : &find_shadow_test(features.shadow_test);
+  if (test) includes["lab/visibility.glsl"] = test->file;
   for (const auto& [name, file] : features.includes) includes[name] = file;
   // The same technique keeps its pass (and targets); another gets a new one, kept only if it builds.
   std::unique_ptr<ShadowPass> fresh;
@@ -204,6 +208,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   lit_->set_material(features.material_textures, features.material_params);
   views_->set_includes(includes, features.include_rules);
   features_ = features;
+  shadow_test_ = test;
   programs_light_ = light;
   return true;
 }
@@ -269,7 +274,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
   ShadowPass& shadow = *shadow_;
   const ShadowPass::Shape& shape = shadow.shape();
-  shadow.set_matched_radius(matched_filter_radius(params, light_, placement_.scale));
+  const int matched_radius = matched_filter_radius(params, light_, placement_.scale);
+  shadow.set_matched_radius(matched_radius);
   if (shadow.ensure_targets(params)) ++targets_generation_;
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);
@@ -280,8 +286,16 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     billboards_->set_points(features_.billboards, placement_);
     ctx.billboards = billboards_.get();
   }
-  // The lit program compiled for what these parameters use (the technique's few settings as constants).
+  // What the lit pass binds: the pass's map and the selected shadow test's uniforms (a lambda holding one
+  // reference: no allocation).
+  const LitInputs lit_inputs{shadow.size(), [&shadow](const ParamSet& p, const LitUniforms& u) { shadow.bind_lit_inputs(p, u); },
+                             shadow_test_, matched_radius};
+  ctx.lit_inputs = &lit_inputs;
+  // The lit program compiled for what these parameters use (the technique's and the shadow test's few
+  // settings as constants).
   shadow.lit_constants(params, lit_constants_);
+  if (shadow_test_ && shadow_test_->constants)
+    shadow_test_->constants(ShadowTestFrame{params, light_, matched_radius, nullptr}, lit_constants_);
   lit_->use_constants(lit_constants_);
 
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's
@@ -293,7 +307,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   shadow.draw_view_passes(ctx, *lit_);
 
   // 3. Lit pass from the camera, reading the shadow map (or the moments, or the stencil).
-  ctx.timed("lit", [&] { lit_->draw(ctx, shadow, shape.lit); });
+  ctx.timed("lit", [&] { lit_->draw(ctx, shape.lit); });
   if (ctx.billboards) {
     ctx.timed("billboards", [&] {
       glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());

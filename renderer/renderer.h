@@ -105,6 +105,10 @@ struct Features {
   // v_light_tex, nor u_light_tex_matrix, which the lit pass then leaves unset (a test that declares it
   // reads zeros). Probes (grading/probe.h) compile the lab's test the same way.
   bool own_shadow_coords = false;
+  // The shadow test (renderer/shadow_test.h) by name ("pcf"; empty: none, the technique's default file
+  // reads no uniform of its own): its file goes into "lab/visibility.glsl" unless `includes` names
+  // another there (a student's version of it), and the lit pass sets its uniforms, no other test's.
+  std::string shadow_test;
 };
 
 // The define Features::own_shadow_coords compiles the lit pass's and the probes' programs with.
@@ -177,8 +181,8 @@ class Renderer {
   TimingMode timing() const;
   bool timers_work() const;  // false on a software rasteriser: its timer queries measure nothing useful
   // On (the default), the lit pass draws with a program compiled for the technique's settings as
-  // constants (ShadowPass::lit_constants: PCF's kernel and comparison); off, with the generic program
-  // reading them as uniforms. Both draw the same image (tests compare them).
+  // constants (ShadowPass::lit_constants, ShadowTest::constants: PCF's kernel and comparison); off, with
+  // the generic program reading them as uniforms. Both draw the same image (tests compare them).
   void set_lit_constants(bool on);
   // The constants the last frame's lit program was compiled with (empty: the generic program).
   const LitConstants& drawn_lit_constants() const;
@@ -276,6 +280,7 @@ class Renderer {
   std::string failed_build_error_;
   LightType programs_light_ = LightType::Directional;  // the light type the programs were built for
   const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique shadow_ is
+  const ShadowTest* shadow_test_ = nullptr;             // the features' shadow test (null: none selected)
   std::unique_ptr<ShadowPass> shadow_;
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;

@@ -30,6 +30,7 @@
 #include "renderer/gpu_mesh.h"
 #include "renderer/pass_timer.h"
 #include "renderer/shader.h"
+#include "renderer/shadow_test.h"
 
 namespace shadowlab {
 
@@ -47,9 +48,7 @@ struct LitUniforms {
   Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
   Uniform min_variance, bleed_delta, warp_exponent, msm_moment_bias;
   Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
-  Uniform shadow_map_compare, pcf_radius, pcf_hardware;
-  Uniform light_size, pcss_blocker_samples, pcss_filter_samples;  // a sized light; PCSS's taps (shaders/shadow/pcss.glsl)
-  Uniform pcss_view, pcss_view_range;  // PCSS's debug view (pcss.view)
+  Uniform shadow_map_compare;  // the depth map through a comparison sampler (PCF's and PCSS's hardware taps)
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
   struct ShadowedLights {  // the SHADOWED_LIGHTS variant's (shaders/shadow/shadowed_lights.glsl), per entry
@@ -64,10 +63,20 @@ struct LitUniforms {
   } csm;
 };
 
-// Uniforms the lit program may be compiled with as constants (name, value; see ProgramDesc::constants):
-// what a technique's few settings decide per pixel (loop counts, branches), so that the lit pass runs
-// no dead branch and no uniform-bounded loop for what a lab uses.
-using LitConstants = std::vector<std::pair<std::string, std::string>>;
+// What the lit pass binds besides its own uniforms, handed to it with the frame (PassContext::lit_inputs)
+// by the renderer: the lit pass knows no shadow pass and no shadow test by itself. LitConstants
+// (renderer/shadow_test.h), the uniforms a lit program may be compiled with as constants, are what a
+// technique's few settings decide per pixel (loop counts, branches), so that the lit pass runs no dead
+// branch and no uniform-bounded loop for what a lab uses: the pass's (ShadowPass::lit_constants) and
+// the selected test's (ShadowTest::constants), which the renderer collects each frame before the lit
+// pass draws.
+struct LitInputs {
+  int map_size = 0;  // texels per side of the light's map (a texel's depth and angle)
+  // The shadow pass's textures and uniforms (ShadowPass::bind_lit_inputs; leaves unit 0 active).
+  std::function<void(const ParamSet&, const LitUniforms&)> bind_map;
+  const ShadowTest* test = nullptr;  // the shadow test whose own uniforms are set (null: none)
+  int matched_radius = -1;           // ShadowTestFrame::matched_radius
+};
 
 // The lit pass's program variants (the same scene, shader and uniforms; defines differ).
 enum class LitVariant {
@@ -112,6 +121,8 @@ struct PassContext {
   std::vector<ShadowedLight>* lights = nullptr;
   // The frame's words (debug quads' labels, false-colour legends), filled as the passes draw (null: none).
   DebugAnnotations* annotations = nullptr;
+  // What the lit pass binds (every lit draw of the frame reads it; set before the first).
+  const LitInputs* lit_inputs = nullptr;
 
   glm::mat4 camera_view_proj() const { return camera_projection * camera_view; }
   template <typename F>
@@ -179,8 +190,8 @@ class ShadowPass {
   // uniforms; leaves texture unit 0 active.
   virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
   // The uniforms among those that the lit program may take as constants, with these parameters' values
-  // (the same bind_lit_inputs sets); empty by default. Only parameters declaring kInvalidatesPrograms
-  // may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
+  // (the same bind_lit_inputs sets; a shadow test's own come from the test, ShadowTest::constants);
+  // empty by default. Only parameters declaring kInvalidatesPrograms may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
   virtual void lit_constants(const ParamSet&, LitConstants& out) const { out.clear(); }
   // 4. The technique's own debug views (after the lit pass), and its map in the corner.
   virtual void draw_views(PassContext&, LitPass&) {}

@@ -28,7 +28,7 @@ void ShadowVolumePass::for_each_program(const std::function<void(ReloadableProgr
 void ShadowVolumePass::draw_view_passes(PassContext& ctx, LitPass& lit) {
   const bool z_fail = technique_choice(ctx.params, "volume.method") == "z-fail";
   // 1. The scene with ambient light only: colour, depth (and the G-buffer, visibility 0).
-  ctx.timed("ambient", [&] { lit.draw(ctx, *this, LitVariant::VolumeAmbient); });
+  ctx.timed("ambient", [&] { lit.draw(ctx, LitVariant::VolumeAmbient); });
   // 2. The volumes into the stencil buffer.
   ctx.timed("volumes", [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, lit.framebuffer());

@@ -179,7 +179,7 @@ TEST_F(LightsTest, TargetsExistOnlyWhileALabUsesThem) {
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 0) << "no comparison sampler without hardware PCF";
   // Hardware PCF: one sampler object, no extra texture.
   Features pcf;
-  pcf.includes["lab/visibility.glsl"] = "shaders/shadow/pcf.glsl";
+  pcf.shadow_test = "pcf";
   ASSERT_TRUE(r.set_features(pcf)) << r.shader_error();
   r.render(lab_set({"pcf.hardware=true", "pcf.kernel=3"}), request(camera));
   EXPECT_EQ(live_gl_objects(GlKind::Sampler), 1);
@@ -208,6 +208,7 @@ TEST_F(LightsTest, LitProgramCompiledForThePcfSettingsDrawsTheGenericImage) {
   for (const std::string& file : {std::string("shaders/shadow/pcf.glsl"), std::string("labs/06_pcf/exercise.glsl"),
                                  answers + "two_loops_step__exercise.glsl", answers + "per_tap_reach_bias__exercise.glsl"}) {
     Features pcf;
+    pcf.shadow_test = "pcf";  // PCF's uniforms, read by each of these files
     pcf.includes["lab/visibility.glsl"] = file;
     ASSERT_TRUE(r.set_features(pcf)) << r.shader_error();
     for (const char* kernel : {"1", "3", "5", "9"})

@@ -102,7 +102,7 @@ TEST_F(SoftCheckTest, PcssAtSizeZeroIsTheHardTestPixelForPixel) {
   const FrameRequest request = lab16_request(scene);
   const Features pcss = lab.hooks(Impl::Solution);
   Features hard = pcss;
-  hard.includes.erase("lab/visibility.glsl");  // the renderer's default: shaders/shadow/hard.glsl
+  hard.shadow_test = "hard";  // shaders/shadow/hard.glsl
   auto draw = [&](const Features& f, double size) {
     EXPECT_TRUE(renderer.set_features(f)) << renderer.shader_error();
     renderer.set_scene(scene);

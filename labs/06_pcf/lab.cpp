@@ -12,6 +12,7 @@
 #include "grading/check.h"
 #include "grading/lab.h"
 #include "grading/probe.h"
+#include "renderer/shadow_test.h"
 
 namespace shadowlab {
 
@@ -239,8 +240,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   slope.default_value = 2.0;
   size.default_value = 1.0;  // 512^2: texels several pixels wide on screen, where filtering shows
   lab.params = {bias, slope, size};
-  for (auto& spec : technique_param_specs({"pcf.kernel", "pcf.hardware", "pcf.match_light", "pcf.match_distance"}))
-    lab.params.push_back(spec);
+  for (const auto& spec : find_shadow_test("pcf").params) lab.params.push_back(spec);
   lab.presets = {
       {"single tap", "1 x 1: the hard, jagged edge of lab 0.", {{"pcf.kernel", "1"}, {"pcf.hardware", "false"}},
        {.provokes = "aliasing", .fixed_by = "lecture"}, {.camera = kShadowEdgeCamera}},
@@ -252,7 +252,12 @@ Lab SHADOWLAB_LAB_MAKER() {
        {{"light.size", "3"}, {"pcf.match_light", "true"}, {"pcf.match_distance", "1"}, {"pcf.hardware", "false"}}},
   };
   lab.offered_includes = {"lab/bias.glsl"};
-  lab.make_hooks = visibility_lab_hooks();
+  // The exercise (or the solution) in the visibility slot, with PCF's uniforms (renderer/shadow_tests/pcf.cpp).
+  lab.make_hooks = [hooks = visibility_lab_hooks()](const SlotFiles& files) {
+    Features features = hooks(files);
+    features.shadow_test = "pcf";
+    return features;
+  };
   lab.check = check_pcf;
   for (const auto& spec : lab.params)  // one technique per kernel size
     if (spec.key == "pcf.kernel")

@@ -16,6 +16,7 @@
 #include "grading/check.h"
 #include "grading/lab.h"
 #include "grading/probe.h"
+#include "renderer/shadow_test.h"
 
 namespace shadowlab {
 
@@ -23,7 +24,6 @@ namespace {
 
 constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
 constexpr const char* kSolution = "shaders/shadow/penumbra.glsl";
-constexpr const char* kVisibility = "shaders/shadow/pcss.glsl";  // the renderer's PCSS, around the student's estimate
 
 // The probe: receivers from kMinReceiver to kMaxReceiver world units behind the map's near plane, blockers
 // anywhere between the plane and the receiver (every 16th touching it), suns up to the slider's 10 degrees
@@ -179,7 +179,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;
   lab.params = {size, bias, slope};
-  for (auto& spec : technique_param_specs({"pcss.blocker_samples", "pcss.filter_samples", "pcss.view", "pcss.view_range"})) lab.params.push_back(spec);
+  for (const auto& spec : find_shadow_test("pcss").params) lab.params.push_back(spec);
   lab.presets = {
       {"sun", "The sun's own size, about half a degree: a narrow penumbra.", {{"light.size", "0.5"}}},
       {"wide penumbra", "A 10-degree sun: wide penumbrae, widest where the blocker is far above the ground.",
@@ -194,7 +194,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;
     hooks.light = LightType::Directional;
-    hooks.includes["lab/visibility.glsl"] = kVisibility;
+    hooks.shadow_test = "pcss";  // the renderer's PCSS (shaders/shadow/pcss.glsl), around the student's estimate
     hooks.includes["lab/penumbra.glsl"] = files.at(0).string();
     return hooks;
   };
