@@ -17,10 +17,10 @@ GLenum depth_internal_format(const std::string& name) {
 // PCF's kernel radius ((N - 1) / 2): pcf.kernel's, or the one matched to the light (pcf.match_light,
 // `matched` >= 0); and whether each tap compares in hardware.
 int pcf_radius(const ParamSet& params, int matched) {
-  if (matched >= 0 && technique_param(params, "pcf.match_light") != 0.0) return matched;
-  return std::stoi(technique_choice(params, "pcf.kernel")) / 2;
+  if (matched >= 0 && params.get(param::pcf_match_light)) return matched;
+  return std::stoi(params.get(param::pcf_kernel)) / 2;
 }
-bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.hardware") != 0.0; }
+bool pcf_hardware(const ParamSet& params) { return params.get(param::pcf_hardware); }
 
 }  // namespace
 
@@ -50,8 +50,8 @@ void DepthMapPass::for_each_program(const std::function<void(ReloadableProgram&)
 }
 
 bool DepthMapPass::ensure_targets(const ParamSet& params) {
-  const int size = std::stoi(params.get_choice("shadow.map_size"));
-  const std::string& format = params.get_choice("shadow.depth_format");
+  const int size = std::stoi(params.get(param::shadow_map_size));
+  const std::string& format = params.get(param::shadow_depth_format);
   if (size == size_ && format == format_) return false;
   depth_texture_ = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
   fbo_ = GlFramebuffer::create();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/flashlight.h"
 #include "core/image_io.h"
 #include "renderer/debug_annotations.h"
 #include "core/technique_params.h"
@@ -381,13 +382,13 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   u.light_tex_matrix.set(clip_to_texture() * light.view.view_projection());
   u.light_view_proj.set(light.view.view_projection());
   u.to_light.set(light.to_light);
-  u.bias_constant.set(params.get_float("shadow.bias"));
-  u.bias_slope.set(params.get_float("shadow.slope_bias"));
+  u.bias_constant.set(params.get(param::shadow_bias));
+  u.bias_slope.set(params.get(param::shadow_slope_bias));
   // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
   // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
   const float depth_range = 2.0f / std::abs(light.view.projection[2][2]);
   u.texel_depth.set(light.view.world_size.x / static_cast<float>(shadow.size()) / depth_range);
-  u.ambient.set(params.get_float("view.ambient"));
+  u.ambient.set(params.get(param::view_ambient));
   // Positional lights: where the light stands, the spot's cone, its projection's planes, a texel's angle.
   u.light_position.set(light.position);
   u.spot_direction.set(light.spot_direction);
@@ -399,9 +400,9 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
   // A sized light as given (light.size: a directional light's angular diameter in degrees, a positional
   // light's radius), and PCSS's samples per side (blocker search, filter); no shadow test but PCSS reads them.
   u.light_size.set(light.size);
-  u.pcss_blocker_samples.set(static_cast<int>(technique_param(params, "pcss.blocker_samples")));
-  u.pcss_filter_samples.set(static_cast<int>(technique_param(params, "pcss.filter_samples")));
-  u.pcss_view.set(static_cast<int>(technique_param(params, "pcss.view")));
+  u.pcss_blocker_samples.set(params.get(param::pcss_blocker_samples));
+  u.pcss_filter_samples.set(params.get(param::pcss_filter_samples));
+  u.pcss_view.set(params.index(param::pcss_view));
   u.pcss_view_range.set(pcss_view_range(params));  // the legend's high end too (debug_annotations.h)
   if (ctx.flashlight) {  // each uniform set when present: an answer may leave some unused
     const FrameLight& f = *ctx.flashlight;
@@ -413,9 +414,9 @@ void LitPass::set_uniforms(const PassContext& ctx, const ShadowPass& shadow, con
     u.flash.near.set(fp[3][2] / (fp[2][2] - 1.0f));
     u.flash.far.set(fp[3][2] / (fp[2][2] + 1.0f));
     u.flash.texel_angle.set(f.texel_angle(std::max(ctx.flashlight_pass->size(), 1)));
-    u.flash.bias_slope.set(static_cast<float>(params.get_or("flashlight.slope_bias", 2.0)));
-    u.flash.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
-    u.flash.intensity.set(static_cast<float>(params.get_or("flashlight.intensity", 0.8)));
+    u.flash.bias_slope.set(params.get(param::flashlight_slope_bias));
+    u.flash.sun_intensity.set(params.get(param::sun_intensity));
+    u.flash.intensity.set(params.get(param::flashlight_intensity));
     glActiveTexture(GL_TEXTURE0 + kFlashlightUnit);
     glBindTexture(GL_TEXTURE_2D, ctx.flashlight_map);
     glBindSampler(kFlashlightUnit, 0);

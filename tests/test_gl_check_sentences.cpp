@@ -8,6 +8,7 @@
 
 #include "grading/check.h"
 #include "grading/lab.h"
+#include "labs/registry.h"
 
 namespace shadowlab {
 namespace {

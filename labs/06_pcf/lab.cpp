@@ -233,13 +233,13 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Average the shadow test over N x N texels, in a loop or with the hardware's sampler2DShadow.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias"), size = *base.find("shadow.map_size");
+  ParamSpec bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
+  ParamSpec size = param::shadow_map_size.spec();
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;
   size.default_value = 1.0;  // 512^2: texels several pixels wide on screen, where filtering shows
   lab.params = {bias, slope, size};
-  for (auto& spec : technique_param_specs({"pcf.kernel", "pcf.hardware", "pcf.match_light", "pcf.match_distance"}))
+  for (auto& spec : specs_of(param::pcf_kernel, param::pcf_hardware, param::pcf_match_light, param::pcf_match_distance))
     lab.params.push_back(spec);
   lab.presets = {
       {"single tap", "1 x 1: the hard, jagged edge of lab 0.", {{"pcf.kernel", "1"}, {"pcf.hardware", "false"}},

@@ -130,8 +130,8 @@ void measure_case(CheckContext& ctx, CheckResult& result, const ParamSet& p, con
   const auto m = ctx.measure(p, ctx.hooks(), "lab16_" + tag + "_" + impl_name(ctx.impl), nullptr, grading_band(),
                              kWidth, kHeight);
   grade_hard_shadow(result, tag, m.metrics, limits);
-  cases.push_back({{"case", tag}, {"light_size_deg", p.get_float("light.size")},
-                   {"map_size", p.get_choice("shadow.map_size")}, {"render_ms", m.render_ms},
+  cases.push_back({{"case", tag}, {"light_size_deg", p.get(param::light_size)},
+                   {"map_size", p.get(param::shadow_map_size)}, {"render_ms", m.render_ms},
                    {"oracle_ms", m.oracle_ms}});
 }
 
@@ -173,13 +173,14 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "A sun with a size: estimate the penumbra's width from the blockers' distance, and PCSS filters over it.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec size = *base.find("light.size"), bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  ParamSpec size = param::light_size.spec(), bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
   size.default_value = kSunDegrees;
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;
   lab.params = {size, bias, slope};
-  for (auto& spec : technique_param_specs({"pcss.blocker_samples", "pcss.filter_samples", "pcss.view", "pcss.view_range"})) lab.params.push_back(spec);
+  for (auto& spec :
+       specs_of(param::pcss_blocker_samples, param::pcss_filter_samples, param::pcss_view, param::pcss_view_range))
+    lab.params.push_back(spec);
   lab.presets = {
       {"sun", "The sun's own size, about half a degree: a narrow penumbra.", {{"light.size", "0.5"}}},
       {"wide penumbra", "A 10-degree sun: wide penumbrae, widest where the blocker is far above the ground.",
