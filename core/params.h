@@ -53,32 +53,22 @@ struct ParamSpec {
 struct Choice {};
 
 template <class T>
-struct ParamValue;
-template <>
-struct ParamValue<float> {
-  using type = float;
-  static constexpr ParamKind kind = ParamKind::Float;
+struct ParamValue;  // what a Param<T> reads as and the kind it must be declared with
+template <class Type, ParamKind Kind>
+struct ParamValueOf {
+  using type = Type;
+  static constexpr ParamKind kind = Kind;
 };
 template <>
-struct ParamValue<double> {
-  using type = double;
-  static constexpr ParamKind kind = ParamKind::Float;
-};
+struct ParamValue<float> : ParamValueOf<float, ParamKind::Float> {};
 template <>
-struct ParamValue<int> {
-  using type = int;
-  static constexpr ParamKind kind = ParamKind::Int;
-};
+struct ParamValue<double> : ParamValueOf<double, ParamKind::Float> {};
 template <>
-struct ParamValue<bool> {
-  using type = bool;
-  static constexpr ParamKind kind = ParamKind::Bool;
-};
+struct ParamValue<int> : ParamValueOf<int, ParamKind::Int> {};
 template <>
-struct ParamValue<Choice> {
-  using type = const std::string&;
-  static constexpr ParamKind kind = ParamKind::Choice;
-};
+struct ParamValue<bool> : ParamValueOf<bool, ParamKind::Bool> {};
+template <>
+struct ParamValue<Choice> : ParamValueOf<const std::string&, ParamKind::Choice> {};
 
 template <class T>
 class Param {
