@@ -142,8 +142,8 @@ BenchPoint measure(Renderer& renderer, const Oracle& oracle, const Technique& t,
   ParamSet params = lab_params(lab);
   // Every technique of a scene under the same light: the renderer's default direction, whatever the
   // lab's own default (lab 1's is a grazing 10 degrees), then the scene's and the technique's settings.
-  static const std::vector<ParamSpec> renderer_specs = renderer_param_specs();
-  for (const char* key : {"light.azimuth", "light.elevation"}) params.set(key, spec_in(renderer_specs, key, "renderer").default_value);
+  for (const FloatParam* angle : {&param::light_azimuth, &param::light_elevation})
+    params.set(angle->key(), angle->spec().default_value);
   for (const auto& [k, v] : s.sets) params.set_from_string(k, v);
   for (const auto& [k, v] : t.entry.sets) params.set_from_string(k, v);
   if (map_size > 0) params.set_from_string("shadow.map_size", std::to_string(map_size));
@@ -731,7 +731,7 @@ int run_bench(const BenchOptions& options) {
       blur_rows = measure_blur_methods(renderer, blur_params, radii, options.quick ? 3 : 7);
       if (!options.quick) {  // half floats too: less bandwidth, the same passes
         // The blurred-moments lab (lab 4) may not put the format on its panel: declare it here.
-        if (!blur_params.find("vsm.format")) blur_params.declare(vsm_param_specs({"vsm.format"}).at(0));
+        if (!blur_params.find("vsm.format")) blur_params.declare(param::vsm_format.spec());
         blur_params.set_from_string("vsm.format", "RG16F");
         const auto rg16 = measure_blur_methods(renderer, blur_params, radii, 7);
         blur_rows.insert(blur_rows.end(), rg16.begin(), rg16.end());

@@ -79,7 +79,7 @@ std::vector<BlurTiming> measure_blur_methods(Renderer& renderer, const ParamSet&
       t.radius = radius;
       t.sigma = sigma;
       t.map_size = size;
-      t.format = p.get_choice("vsm.format");
+      t.format = p.get(param::vsm_format);
       t.ms_x = median(x[k]);
       t.ms_y = median(y[k]);
       t.ms_total = median(total[k]);

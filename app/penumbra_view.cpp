@@ -37,7 +37,7 @@ PenumbraMeasure measure_penumbra(Renderer& renderer, const ParamSet& params, con
   m.height = height;
   m.metrics = compare_soft(truth, visibility);
   m.rgba = soft_diff_image(truth, visibility);
-  m.light_size = static_cast<float>(params.get_or("light.size", 0.0));
+  m.light_size = params.get(param::light_size);
   m.sun = renderer.light_type() == LightType::Directional;
   m.view_key = penumbra_view_key(params, camera);
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

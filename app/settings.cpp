@@ -439,7 +439,7 @@ void OneOffValues::give(int lab, const ParamSet& before, const ParamSet& given) 
   lab_ = lab;
   values_.clear();
   for (const auto& spec : given.specs()) {
-    const double was = before.get_or(spec.key, spec.default_value), now = given.get(spec.key);
+    const double was = before.value_or_default(spec), now = given.get(spec.key);
     if (now != was) values_.push_back({spec.key, was, now});
   }
 }

@@ -716,7 +716,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
     app.renderer->set_timing(timing);
     app.split.set_timing(timing);
     // The flashlight's node circles the scene while flashlight.animate is on (only its map is redrawn).
-    if (app.params.find("flashlight.animate") && app.params.get_bool("flashlight.animate"))
+    if (app.params.get(param::flashlight_animate))
       app.params.set("flashlight.phase", advance_flashlight_phase(app.params, glfwGetTime() - frame_start));
     const long finishes_before = FrameCost::finishes(app), blocking_before = FrameCost::blocking(app);
     render_view(app, width, height);

@@ -44,7 +44,8 @@ LightView fit_cascade_sphere(const FrustumCorners& slice, const glm::vec3& to_li
   const double z = glm::dot(scene_centre, basis[2]);
   double half_depth = 0.0;
   if (!scene.empty())
-    for (int i = 0; i < 8; ++i) half_depth = std::max(half_depth, std::abs(glm::dot(glm::dvec3(scene.corner(i)) - scene_centre, basis[2])));
+    for (int i = 0; i < 8; ++i) half_depth = std::max(half_depth,
+    std::abs(glm::dot(glm::dvec3(scene.corner(i)) - scene_centre, basis[2])));
   half_depth = std::max(half_depth, 1e-6);
   const glm::dvec3 origin = basis[0] * x + basis[1] * y + basis[2] * z;
   const glm::dmat3 rows = glm::transpose(basis);
@@ -106,28 +107,32 @@ CascadeFrame compute_cascades(const glm::mat4& camera_view, const glm::mat4& cam
   for (int i = 0; i < count; ++i) {
     const FrustumCorners slice = frustum_slice(camera_view, camera_projection, f.splits[static_cast<std::size_t>(i)],
                                                f.splits[static_cast<std::size_t>(i) + 1]);
-    f.views.push_back(fit ? fit(slice, to_light, f.map_size, scene) : fit_cascade_sphere(slice, to_light, f.map_size, scene));
+    f.views.push_back(fit ? fit(slice, to_light, f.map_size, scene) : fit_cascade_sphere(slice, to_light, f.map_size,
+    scene));
   }
   return f;
 }
 
+namespace param {
+
+const IntParam csm_count{{"csm.count", "Cascades", ParamKind::Int, 4.0, 1.0, static_cast<double>(kMaxCascades),
+    "How many slices the camera's view range is split into, each with a map of its own. The cascades share "
+    "the texels of one shadow.map_size map (each floor(size / sqrt(count)) per side), so more cascades are "
+    "sharper near the camera at the same memory.", {}, kInvalidatesShadowMap | kInvalidatesTargets}};
+const FloatParam csm_lambda{{"csm.lambda", "Split blend (lambda)", ParamKind::Float, 0.75, 0.0, 1.0,
+    "Where the splits go: 0 uniform (equal depth per cascade: the near cascade wastes its texels far away), "
+    "1 logarithmic (equal ratio far / near: ideal texel density, but tiny near cascades), between: the "
+    "practical blend lambda log + (1 - lambda) uniform.", {}, kInvalidatesShadowMap}};
+const FloatParam csm_blend{{"csm.blend", "Blend band", ParamKind::Float, 0.0, 0.0, 0.5,
+    "Share of each cascade's depth range, at its far end, over which its visibility fades into the next "
+    "cascade's: hides the seam where the texel size jumps. 0: a hard switch.", {}}};
+const BoolParam csm_show_cascades{{"csm.show_cascades", "Colour the cascades", ParamKind::Bool, 0.0, 0.0, 1.0,
+    "Tints each pixel by the cascade it is shaded from (red, green, blue, yellow, ...): where the splits fall.", {}}};
+
+}  // namespace param
+
 std::vector<ParamSpec> csm_param_specs() {
-  const unsigned shadow = kInvalidatesShadowMap;
-  return {
-      {"csm.count", "Cascades", ParamKind::Int, 4.0, 1.0, static_cast<double>(kMaxCascades),
-       "How many slices the camera's view range is split into, each with a map of its own. The cascades share "
-       "the texels of one shadow.map_size map (each floor(size / sqrt(count)) per side), so more cascades are "
-       "sharper near the camera at the same memory.", {}, shadow | kInvalidatesTargets},
-      {"csm.lambda", "Split blend (lambda)", ParamKind::Float, 0.75, 0.0, 1.0,
-       "Where the splits go: 0 uniform (equal depth per cascade: the near cascade wastes its texels far away), "
-       "1 logarithmic (equal ratio far / near: ideal texel density, but tiny near cascades), between: the "
-       "practical blend lambda log + (1 - lambda) uniform.", {}, shadow},
-      {"csm.blend", "Blend band", ParamKind::Float, 0.0, 0.0, 0.5,
-       "Share of each cascade's depth range, at its far end, over which its visibility fades into the next "
-       "cascade's: hides the seam where the texel size jumps. 0: a hard switch.", {}},
-      {"csm.show_cascades", "Colour the cascades", ParamKind::Bool, 0.0, 0.0, 1.0,
-       "Tints each pixel by the cascade it is shaded from (red, green, blue, yellow, ...): where the splits fall.", {}},
-  };
+  return specs_of(param::csm_count, param::csm_lambda, param::csm_blend, param::csm_show_cascades);
 }
 
 }  // namespace shadowlab

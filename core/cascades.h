@@ -74,4 +74,11 @@ CascadeFrame compute_cascades(const glm::mat4& camera_view, const glm::mat4& cam
 // The csm.* parameters (renderer_params.cpp), declared by the features that use cascades.
 std::vector<ParamSpec> csm_param_specs();
 
+namespace param {
+extern const IntParam csm_count;
+extern const FloatParam csm_lambda;
+extern const FloatParam csm_blend;
+extern const BoolParam csm_show_cascades;
+}  // namespace param
+
 }  // namespace shadowlab

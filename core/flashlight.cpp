@@ -7,42 +7,47 @@
 
 namespace shadowlab {
 
+namespace param {
+
+const FloatParam sun_intensity{{"sun.intensity", "Sun intensity", ParamKind::Float, 1.0, 0.0, 1.5,
+    "The sun's Lambert term is multiplied by this before the lights are combined (0: the flashlight alone).", {}}};
+const FloatParam flashlight_intensity{{"flashlight.intensity", "Flashlight intensity", ParamKind::Float, 0.8, 0.0, 1.5,
+    "The flashlight's Lambert term is multiplied by this before the lights are combined (0: the sun alone).", {}}};
+const ChoiceParam flashlight_mount{{"flashlight.mount", "Flashlight carried by", ParamKind::Choice, 0.0, 0.0, 1.0,
+    "Node: a node circling the scene carries it, aimed at the scene's centre. Camera: it shines from the "
+    "eye along the view.", {"node", "camera"}}};
+const DoubleParam flashlight_phase{{"flashlight.phase", "Flashlight node angle (deg)", ParamKind::Float, 200.0, 0.0,
+    360.0, "Where the node carrying the flashlight stands on its circle around the scene.", {}}};
+const BoolParam flashlight_animate{{"flashlight.animate", "Move the flashlight", ParamKind::Bool, 0.0, 0.0, 1.0,
+    "In the window, the node circles the scene at flashlight.speed.", {}}};
+const DoubleParam flashlight_speed{{"flashlight.speed", "Flashlight speed (deg/s)", ParamKind::Float, 30.0, -180.0,
+    180.0, "How fast the node circles when it moves.", {}}};
+const FloatParam flashlight_radius{{"flashlight.radius", "Flashlight circle radius", ParamKind::Float, 0.9, 0.2, 2.0,
+    "The node's circle, in half diagonals of the scene's box.", {}}};
+const FloatParam flashlight_height{{"flashlight.height", "Flashlight height", ParamKind::Float, 0.5, 0.05, 2.0,
+    "The node's height above the scene's centre, in half diagonals of the scene's box.", {}}};
+const FloatParam flashlight_slope_bias{{"flashlight.slope_bias", "Flashlight slope bias", ParamKind::Float, 2.0, 0.0,
+    10.0, "The flashlight's slope-scaled bias, in texels per unit of tan(angle of incidence) (lab 7's test and "
+    "default): its light meets the ground at a grazing angle far from it.", {}}};
+const FloatParam flashlight_cone_deg{{"flashlight.cone_deg", "Flashlight cone half-angle (deg)", ParamKind::Float,
+    28.0, 5.0, 60.0, "Half the flashlight's opening angle.", {}}};
+
+}  // namespace param
+
 std::vector<ParamSpec> flashlight_param_specs() {
-  return {
-      {"sun.intensity", "Sun intensity", ParamKind::Float, 1.0, 0.0, 1.5,
-       "The sun's Lambert term is multiplied by this before the lights are combined (0: the flashlight alone).", {}},
-      {"flashlight.intensity", "Flashlight intensity", ParamKind::Float, 0.8, 0.0, 1.5,
-       "The flashlight's Lambert term is multiplied by this before the lights are combined (0: the sun alone).", {}},
-      {"flashlight.mount", "Flashlight carried by", ParamKind::Choice, 0.0, 0.0, 1.0,
-       "Node: a node circling the scene carries it, aimed at the scene's centre. Camera: it shines from the "
-       "eye along the view.", {"node", "camera"}},
-      {"flashlight.phase", "Flashlight node angle (deg)", ParamKind::Float, 200.0, 0.0, 360.0,
-       "Where the node carrying the flashlight stands on its circle around the scene.", {}},
-      {"flashlight.animate", "Move the flashlight", ParamKind::Bool, 0.0, 0.0, 1.0,
-       "In the window, the node circles the scene at flashlight.speed.", {}},
-      {"flashlight.speed", "Flashlight speed (deg/s)", ParamKind::Float, 30.0, -180.0, 180.0,
-       "How fast the node circles when it moves.", {}},
-      {"flashlight.radius", "Flashlight circle radius", ParamKind::Float, 0.9, 0.2, 2.0,
-       "The node's circle, in half diagonals of the scene's box.", {}},
-      {"flashlight.height", "Flashlight height", ParamKind::Float, 0.5, 0.05, 2.0,
-       "The node's height above the scene's centre, in half diagonals of the scene's box.", {}},
-      {"flashlight.slope_bias", "Flashlight slope bias", ParamKind::Float, 2.0, 0.0, 10.0,
-       "The flashlight's slope-scaled bias, in texels per unit of tan(angle of incidence) (lab 7's test and "
-       "default): its light meets the ground at a grazing angle far from it.", {}},
-      {"flashlight.cone_deg", "Flashlight cone half-angle (deg)", ParamKind::Float, 28.0, 5.0, 60.0,
-       "Half the flashlight's opening angle.", {}},
-  };
+  return specs_of(param::sun_intensity, param::flashlight_intensity, param::flashlight_mount, param::flashlight_phase,
+      param::flashlight_animate, param::flashlight_speed, param::flashlight_radius, param::flashlight_height,
+      param::flashlight_slope_bias, param::flashlight_cone_deg);
 }
 
 FlashlightMount flashlight_mount(const ParamSet& params) {
-  const ParamSpec* spec = params.find("flashlight.mount");
-  return spec && params.get_choice("flashlight.mount") == "camera" ? FlashlightMount::Camera : FlashlightMount::Node;
+  return params.get(param::flashlight_mount) == "camera" ? FlashlightMount::Camera : FlashlightMount::Node;
 }
 
 FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const glm::mat4& camera_view) {
   FrameLight light;
   light.type = LightType::Spot;
-  light.spot_cone_deg = static_cast<float>(params.get_or("flashlight.cone_deg", 28.0));
+  light.spot_cone_deg = params.get(param::flashlight_cone_deg);
   const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
   const float half_diagonal = bounds.empty() ? 1.0f : std::max(0.5f * glm::length(bounds.extent()), 1e-6f);
   if (flashlight_mount(params) == FlashlightMount::Camera) {
@@ -53,9 +58,9 @@ FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const 
     light.position = glm::vec3(to_world[3]) + 0.1f * half_diagonal * (right - up);
     light.spot_direction = -glm::normalize(glm::vec3(to_world[2]));
   } else {
-    const float phase = glm::radians(static_cast<float>(params.get_or("flashlight.phase", 200.0)));
-    const float radius = static_cast<float>(params.get_or("flashlight.radius", 0.9)) * half_diagonal;
-    const float height = static_cast<float>(params.get_or("flashlight.height", 0.5)) * half_diagonal;
+    const float phase = glm::radians(static_cast<float>(params.get(param::flashlight_phase)));
+    const float radius = params.get(param::flashlight_radius) * half_diagonal;
+    const float height = params.get(param::flashlight_height) * half_diagonal;
     light.position = centre + glm::vec3(radius * std::cos(phase), height, radius * std::sin(phase));
     light.spot_direction = glm::normalize(centre - light.position);
   }
@@ -67,12 +72,12 @@ FrameLight flashlight_light(const ParamSet& params, const Bounds& bounds, const 
 
 ShadowedLightSpec flashlight_spec() {
   return {"flashlight", "flashlight shadow", flashlight_light,
-          [](const ParamSet& params) { return static_cast<float>(params.get_or("flashlight.intensity", 0.8)); },
-          [](const ParamSet& params) { return static_cast<float>(params.get_or("flashlight.slope_bias", 2.0)); }};
+          [](const ParamSet& params) { return params.get(param::flashlight_intensity); },
+          [](const ParamSet& params) { return params.get(param::flashlight_slope_bias); }};
 }
 
 double advance_flashlight_phase(const ParamSet& params, double seconds) {
-  const double phase = params.get_or("flashlight.phase", 200.0) + params.get_or("flashlight.speed", 30.0) * seconds;
+  const double phase = params.get(param::flashlight_phase) + params.get(param::flashlight_speed) * seconds;
   return phase - 360.0 * std::floor(phase / 360.0);
 }
 

@@ -23,6 +23,18 @@ enum class FlashlightMount { Node, Camera };
 // The flashlight.* parameters (and sun.intensity, the sun's weight beside it). None of them invalidates
 // the sun's map: the flashlight's map has inputs of its own (see Renderer).
 std::vector<ParamSpec> flashlight_param_specs();
+namespace param {
+extern const FloatParam sun_intensity;
+extern const FloatParam flashlight_intensity;
+extern const ChoiceParam flashlight_mount;
+extern const DoubleParam flashlight_phase;
+extern const BoolParam flashlight_animate;
+extern const DoubleParam flashlight_speed;
+extern const FloatParam flashlight_radius;
+extern const FloatParam flashlight_height;
+extern const FloatParam flashlight_slope_bias;
+extern const FloatParam flashlight_cone_deg;
+}  // namespace param
 
 // The flashlight of a frame, in the local frame: on its node (flashlight.phase degrees around the
 // scene's centre, flashlight.radius and flashlight.height times the scene's half diagonal out and up,

@@ -8,20 +8,20 @@ namespace shadowlab {
 void FrameLight::update(const ParamSet& params, const Bounds& bounds, std::optional<LightType> pinned, const LightFit& fit,
                         const Placement& placement) {
   type = pinned ? *pinned : light_type(params);
-  to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
-  size = params.find("light.size") ? params.get_float("light.size") : 0.0f;
+  to_light = direction_from_angles(params.get(param::light_azimuth), params.get(param::light_elevation));
+  size = params.get(param::light_size);
   if (type == LightType::Directional) {
     view = fit ? fit(bounds, to_light) : fit_light_ortho(bounds, to_light);
     return;
   }
-  scene_position = {technique_param(params, "light.position_x"), technique_param(params, "light.position_y"),
-                    technique_param(params, "light.position_z")};
+  scene_position = {params.get(param::light_position_x), params.get(param::light_position_y),
+                    params.get(param::light_position_z)};
   position = placement.to_local(scene_position);
   const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
   const glm::vec3 aim = centre - position;
   spot_direction = glm::length(aim) > 1e-6f ? glm::normalize(aim) : glm::vec3(0, -1, 0);
   to_light = -spot_direction;
-  spot_cone_deg = static_cast<float>(technique_param(params, "light.cone_deg"));
+  spot_cone_deg = params.get(param::light_cone_deg);
   if (type == LightType::Spot) {
     view = fit_spot_light(bounds, position, spot_direction, spot_cone_deg);
   } else {

@@ -38,9 +38,9 @@ std::size_t ParamSet::index_of(std::string_view key) const {
 
 double ParamSet::get(std::string_view key) const { return values_[index_of(key)]; }
 
-double ParamSet::get_or(std::string_view key, double fallback) const {
-  const ParamSpec* spec = find(key);
-  return spec ? values_[static_cast<std::size_t>(spec - specs_.data())] : fallback;
+double ParamSet::value_or_default(const ParamSpec& spec) const {
+  const ParamSpec* own = find(spec.key);
+  return own ? values_[static_cast<std::size_t>(own - specs_.data())] : spec.default_value;
 }
 
 const std::string& ParamSet::get_choice(std::string_view key) const {
@@ -181,23 +181,10 @@ void ParamSet::values_invalidating(unsigned bits, std::vector<std::pair<std::str
   out.resize(n);
 }
 
-
 const ParamSpec& spec_in(const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
   for (const auto& spec : all)
     if (spec.key == key) return spec;
   throw std::out_of_range(std::string("no ") + family + " parameter " + std::string(key));
-}
-
-double param_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key, const char* family) {
-  if (params.find(key)) return params.get(key);
-  return spec_in(all, key, family).default_value;
-}
-
-const std::string& choice_or_default(const ParamSet& params, const std::vector<ParamSpec>& all, std::string_view key,
-                                     const char* family) {
-  if (params.find(key)) return params.get_choice(key);
-  const ParamSpec& spec = spec_in(all, key, family);
-  return spec.choices.at(static_cast<std::size_t>(spec.default_value));
 }
 
 }  // namespace shadowlab

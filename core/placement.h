@@ -48,6 +48,13 @@ struct Placement {
 Placement placement_from(const ParamSet& params);
 // The parameters' declarations: scene.offset_x/y/z, scene.scale, scene.local_origin.
 std::vector<ParamSpec> placement_param_specs();
+namespace param {
+extern const BoolParam scene_local_origin;
+extern const DoubleParam scene_offset_x;
+extern const DoubleParam scene_offset_y;
+extern const DoubleParam scene_offset_z;
+extern const DoubleParam scene_scale;
+}  // namespace param
 
 // The scene as the GPU gets it: every position converted with to_local (normals unchanged: the scale is
 // uniform and positive).

@@ -1,7 +1,7 @@
 // The variance-shadow-map parameters (vsm.*), declared once in renderer_params.cpp. They are not in
 // renderer_param_specs(): only a feature set that switches the moments technique on declares them (all
-// or a subset), so the depth-map panels stay short. The renderer reads an undeclared vsm.* key as its
-// declared default (vsm_param()).
+// or a subset), so the depth-map panels stay short. The renderer reads them through their handles (below): an
+// undeclared vsm.* key reads as the handle's declared default.
 #pragma once
 
 #include <string>
@@ -15,9 +15,22 @@ namespace shadowlab {
 std::vector<ParamSpec> vsm_param_specs();
 // The subset with these keys, in declaration order; throws std::out_of_range for an unknown key.
 std::vector<ParamSpec> vsm_param_specs(const std::vector<std::string>& keys);
-// The value of a vsm.* key when the set declares it, else the declared default.
-double vsm_param(const ParamSet& params, std::string_view key);
-// The same for a choice, by name.
-const std::string& vsm_choice(const ParamSet& params, std::string_view key);
+
+// Their handles.
+namespace param {
+extern const ChoiceParam vsm_format;
+extern const FloatParam vsm_min_variance;
+extern const FloatParam vsm_bleed_delta;
+extern const BoolParam vsm_show_remap;
+extern const IntParam vsm_blur_radius;
+extern const FloatParam vsm_blur_sigma;
+extern const ChoiceParam vsm_blur_method;
+extern const ChoiceParam vsm_warp;
+extern const FloatParam vsm_evsm_exponent;
+extern const FloatParam vsm_evsm_negative_exponent;
+extern const BoolParam vsm_match_light;
+extern const DoubleParam vsm_match_distance;
+extern const FloatParam vsm_msm_moment_bias;
+}  // namespace param
 
 }  // namespace shadowlab

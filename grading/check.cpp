@@ -467,7 +467,7 @@ ParamSet DirectionalCase::apply(CheckContext& ctx, const ParamSet& params) const
 
 std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std::vector<HeldOutRange>& ranges) {
   constexpr float kHeldOutAzimuthSpread = 75.0f;
-  const float base_azimuth = ctx.params().get_float("light.azimuth");
+  const float base_azimuth = ctx.params().get(param::light_azimuth);
   std::mt19937 rng = ctx.held_out_rng();
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   auto pick = [&](const std::vector<std::string>& list) {

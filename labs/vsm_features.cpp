@@ -10,8 +10,7 @@ Features vsm_features(const std::filesystem::path& visibility) {
 }
 
 std::vector<ParamSpec> vsm_lab_bias_params() {
-  const ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  ParamSpec bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
   bias.default_value = 0.0005;
   slope.default_value = 0.0;
   return {bias, slope};

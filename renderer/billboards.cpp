@@ -26,26 +26,28 @@ float billboard_alpha(glm::vec2 uv) {
 }
 
 BillboardSize billboard_size(const ParamSet& params) {
-  BillboardSize s;
-  s.width = static_cast<float>(params.get_or("billboard.width", s.width));
-  s.height = static_cast<float>(params.get_or("billboard.height", s.height));
-  s.cutoff = static_cast<float>(params.get_or("billboard.cutoff", s.cutoff));
-  return s;
+  return {params.get(param::billboard_width), params.get(param::billboard_height), params.get(param::billboard_cutoff)};
 }
 
+namespace param {
+
+const FloatParam billboard_width{{"billboard.width", "Tree width", ParamKind::Float, BillboardSize{}.width, 0.2, 4.0,
+    "The billboards' width, world units.", {}, kInvalidatesShadowMap}};
+const FloatParam billboard_height{{"billboard.height", "Tree height", ParamKind::Float, BillboardSize{}.height, 0.2,
+    4.0, "The billboards' height, world units.", {}, kInvalidatesShadowMap}};
+const FloatParam billboard_cutoff{{"billboard.cutoff", "Alpha cutoff", ParamKind::Float, BillboardSize{}.cutoff, 0.05,
+    0.95, "Points of the tree whose alpha is below this are cut out, in the view and (the lab's alpha test) in the "
+    "shadow map.",
+    {}, kInvalidatesShadowMap}};
+const BoolParam billboard_show_shadow_quads{{"billboard.show_shadow_quads", "Show the shadow pass's quads",
+    ParamKind::Bool, 0, 0, 1,
+    "Draws the quads the shadow pass draws (your shadow_quad and shadow_keeps) in the view, in magenta.", {}}};
+
+}  // namespace param
+
 std::vector<ParamSpec> billboard_param_specs() {
-  const BillboardSize d;
-  const unsigned map = kInvalidatesShadowMap;
-  return {
-      {"billboard.width", "Tree width", ParamKind::Float, d.width, 0.2, 4.0, "The billboards' width, world units.", {}, map},
-      {"billboard.height", "Tree height", ParamKind::Float, d.height, 0.2, 4.0, "The billboards' height, world units.", {}, map},
-      {"billboard.cutoff", "Alpha cutoff", ParamKind::Float, d.cutoff, 0.05, 0.95,
-       "Points of the tree whose alpha is below this are cut out, in the view and (the lab's alpha test) in the "
-       "shadow map.",
-       {}, map},
-      {"billboard.show_shadow_quads", "Show the shadow pass's quads", ParamKind::Bool, 0, 0, 1,
-       "Draws the quads the shadow pass draws (your shadow_quad and shadow_keeps) in the view, in magenta.", {}},
-  };
+  return specs_of(param::billboard_width, param::billboard_height, param::billboard_cutoff,
+                  param::billboard_show_shadow_quads);
 }
 
 Mesh billboard_light_quads(const std::vector<glm::vec3>& bases, const BillboardSize& size, const glm::vec3& to_light) {
@@ -72,8 +74,10 @@ Mesh billboard_light_quads(const std::vector<glm::vec3>& bases, const BillboardS
 }
 
 BillboardPass::BillboardPass()
-    : shadow_({"shaders/billboard/billboard.vert", "shaders/billboard/shadow.geom", "shaders/billboard/shadow.frag", {}, {}}),
-      view_({"shaders/billboard/billboard.vert", "shaders/billboard/view.geom", "shaders/billboard/view.frag", {}, {}}) {}
+    : shadow_({"shaders/billboard/billboard.vert", "shaders/billboard/shadow.geom", "shaders/billboard/shadow.frag",
+    {}, {}}),
+      view_({"shaders/billboard/billboard.vert", "shaders/billboard/view.geom", "shaders/billboard/view.frag", {},
+    {}}) {}
 
 bool BillboardPass::set_includes(const std::map<std::string, std::filesystem::path>& includes, const IncludeRules& rules) {
   ProgramDesc desc = shadow_.desc();
@@ -115,7 +119,8 @@ void BillboardPass::set_points(const std::vector<glm::vec3>& bases, const Placem
 void BillboardPass::draw_shadow_program(const PassContext& ctx, const glm::mat4& view_proj) {
   const BillboardSize size = billboard_size(ctx.params);
   const ShadowUniforms& u = shadow_u_.get(shadow_, [](GLuint id) {
-    return ShadowUniforms{{id, "u_light_view_proj"}, {id, "u_to_light"}, {id, "u_eye"}, {id, "u_size"}, {id, "u_cutoff"}};
+    return ShadowUniforms{{id, "u_light_view_proj"}, {id, "u_to_light"}, {id, "u_eye"}, {id, "u_size"}, {id,
+    "u_cutoff"}};
   });
   glUseProgram(shadow_.id());
   u.view_proj.set(view_proj);
@@ -150,7 +155,7 @@ void BillboardPass::draw_view(const PassContext& ctx, bool show_shadow_quads) {
   u.eye.set(eye_of(ctx.camera_view));
   u.size.set(glm::vec2(size.width, size.height));
   u.cutoff.set(size.cutoff);
-  u.ambient.set(ctx.params.get_float("view.ambient"));
+  u.ambient.set(ctx.params.get(param::view_ambient));
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
   if (show_shadow_quads) draw_shadow_program(ctx, ctx.camera_view_proj());

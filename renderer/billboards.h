@@ -32,6 +32,12 @@ struct BillboardSize {
 };
 BillboardSize billboard_size(const ParamSet& params);
 std::vector<ParamSpec> billboard_param_specs();
+namespace param {
+extern const FloatParam billboard_width;
+extern const FloatParam billboard_height;
+extern const FloatParam billboard_cutoff;
+extern const BoolParam billboard_show_shadow_quads;
+}  // namespace param
 
 // The quads a right shadow pass draws for trees standing at `bases` under a directional light: upright,
 // turned about the vertical toward the light, as one MASK mesh (two triangles per tree, uv as the

@@ -11,14 +11,7 @@ namespace shadowlab {
 
 namespace {
 
-// The value of a csm.* key when the set declares it, else the declared default (read from a table built
-// once: the lit inputs read these every frame).
-double csm_param(const ParamSet& params, std::string_view key) {
-  static const std::vector<ParamSpec> table = csm_param_specs();
-  return param_or_default(params, table, key, "csm");
-}
-
-int csm_count(const ParamSet& params) { return static_cast<int>(csm_param(params, "csm.count")); }
+int csm_count(const ParamSet& params) { return params.get(param::csm_count); }
 
 }  // namespace
 
@@ -51,7 +44,7 @@ void CascadePass::for_each_program(const std::function<void(ReloadableProgram&)>
 
 bool CascadePass::ensure_targets(const ParamSet& params) {
   const int count = csm_count(params);
-  const int size = cascade_map_size(std::stoi(params.get_choice("shadow.map_size")), count);
+  const int size = cascade_map_size(std::stoi(params.get(param::shadow_map_size)), count);
   if (size == size_ && count == count_) return false;
   maps_ = GlTexture::create();
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
@@ -78,8 +71,8 @@ bool CascadePass::ensure_targets(const ParamSet& params) {
 void CascadePass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
   static const CascadeSplitFn solution_splits;  // empty: compute_cascades uses the solution's
   static const CascadeFitFn solution_fit;
-  const int budget = std::stoi(ctx.params.get_choice("shadow.map_size"));
-  const float lambda = static_cast<float>(csm_param(ctx.params, "csm.lambda"));
+  const int budget = std::stoi(ctx.params.get(param::shadow_map_size));
+  const float lambda = ctx.params.get(param::csm_lambda);
   // The cascades depend on these alone: a still frame keeps them (and allocates nothing).
   const Bounds& box = ctx.gpu_scene.bounds();
   const FrameKey key{ctx.cascade_view, ctx.cascade_projection, ctx.light.to_light, box.min, box.max, count_, budget, lambda};
@@ -134,7 +127,7 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
   u.csm.near.set(frame_.splits.empty() ? 0.0f : frame_.splits.front());
   u.csm.count.set(frame_.count);
   u.csm.camera_view.set(frame_.camera_view);
-  u.csm.blend.set(static_cast<float>(csm_param(params, "csm.blend")));
+  u.csm.blend.set(params.get(param::csm_blend));
   u.csm.maps.set(2);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
@@ -142,7 +135,7 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
 }
 
 void CascadePass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (csm_param(ctx.params, "csm.show_cascades") != 0.0) {
+  if (ctx.params.get(param::csm_show_cascades)) {
     ctx.timed("cascade_view", [&] { lit.draw(ctx, LitVariant::CascadeView); });
     if (ctx.annotations) ctx.annotations->legends.push_back(cascade_view_legend(count_));
   }

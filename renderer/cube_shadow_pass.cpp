@@ -69,15 +69,15 @@ void CubeShadowPass::for_each_program(const std::function<void(ReloadableProgram
 }
 
 bool CubeShadowPass::ensure_targets(const ParamSet& params) {
-  return ensure_targets(std::stoi(params.get_choice("shadow.map_size")));
+  return ensure_targets(std::stoi(params.get(param::shadow_map_size)));
 }
 
 void CubeShadowPass::draw_map(PassContext& ctx) {
-  const bool single = technique_param(ctx.params, "point.single_pass") != 0.0;
+  const bool single = ctx.params.get(param::point_single_pass);
   far_plane_ = ctx.light.cube.far_plane;
   ctx.timed("cube_shadow", [&] {
     ctx.count_texels([&] {
-      draw(ctx.gpu_scene, ctx.light.cube, ctx.light.position, single, ctx.params.get_bool("shadow.cull_casters"),
+      draw(ctx.gpu_scene, ctx.light.cube, ctx.light.position, single, ctx.params.get(param::shadow_cull_casters),
            ctx.stats.draws, ctx.stats.cube_faces, ctx.stats.casters_culled);
     });
   });

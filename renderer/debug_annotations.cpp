@@ -42,12 +42,12 @@ glm::vec3 over_grey(const glm::vec3& tint, float opacity) { return glm::mix(glm:
 glm::vec3 pcss_view_colour(float t) { return {t, t * t, 0.6f * (1.0f - t)}; }
 
 float pcss_view_range(const ParamSet& params) {
-  if (technique_choice(params, "pcss.view") == "kernel width") return 2.0f * kPcssMaxRadiusTexels;
-  return static_cast<float>(technique_param(params, "pcss.view_range"));
+  if (params.get(param::pcss_view) == "kernel width") return 2.0f * kPcssMaxRadiusTexels;
+  return params.get(param::pcss_view_range);
 }
 
 std::optional<ColourLegend> pcss_view_legend(const ParamSet& params) {
-  const std::string& view = technique_choice(params, "pcss.view");
+  const std::string& view = params.get(param::pcss_view);
   if (view == "shadow") return std::nullopt;
   const float range = pcss_view_range(params);
   ColourLegend legend;

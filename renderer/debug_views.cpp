@@ -42,13 +42,13 @@ void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   const ParamSet& params = ctx.params;
   shadow.draw_views(ctx, lit);
   // The facets first, so the normals' lines are drawn over them.
-  if (params.get_bool("view.flat_normals")) ctx.timed("flat_normals_view", [&] { flat_normals(ctx, lit); });
-  if (params.get_bool("view.normals")) ctx.timed("normals_view", [&] { normals(ctx, lit); });
-  if (params.get_bool("view.volumes")) ctx.timed("volumes_view", [&] { volumes_wireframe(ctx, shadow, lit); });
+  if (params.get(param::view_flat_normals)) ctx.timed("flat_normals_view", [&] { flat_normals(ctx, lit); });
+  if (params.get(param::view_normals)) ctx.timed("normals_view", [&] { normals(ctx, lit); });
+  if (params.get(param::view_volumes)) ctx.timed("volumes_view", [&] { volumes_wireframe(ctx, shadow, lit); });
   // A point light's six frusta fill all space: nothing to draw.
-  if (params.get_bool("view.light_volume") && ctx.light.type != LightType::Point)
+  if (params.get(param::view_light_volume) && ctx.light.type != LightType::Point)
     ctx.timed("light_volume_view", [&] { light_volume(ctx, lit); });
-  if (shadow.shape().has_map && params.get_bool("view.debug_quad"))
+  if (shadow.shape().has_map && params.get(param::view_debug_quad))
     ctx.timed("debug_quad", [&] { debug_quads(ctx, shadow, lit); });
 }
 
@@ -121,7 +121,7 @@ void DebugViews::volumes_wireframe(PassContext& ctx, ShadowPass& shadow, LitPass
   projection[3][2] = -2.0f * near_plane;
   const glm::mat4 view_proj = (ctx.infinite_far_plane ? ctx.camera_projection : projection) * ctx.camera_view;
   if (!ctx.infinite_far_plane) glDisable(GL_DEPTH_TEST);
-  const bool caps = technique_choice(ctx.params, "volume.method") == "z-fail";
+  const bool caps = ctx.params.get(param::volume_method) == "z-fail";
   volumes->draw_wireframe(view_proj, ctx.light.vector4(), caps, ctx.stats.draws);
   glEnable(GL_DEPTH_TEST);
 }
@@ -173,11 +173,11 @@ void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit)
   glDisable(GL_DEPTH_TEST);
   // Squares along the bottom right (clear of an overlay on the left), view.debug_quad_size of the frame height.
   const int side =
-      std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get_float("view.debug_quad_size")));
+      std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get(param::view_debug_quad_size)));
   std::vector<DebugQuadLabel>* labels = ctx.annotations ? &ctx.annotations->quads : nullptr;
   // Beside the other shadowed lights' maps, the frame light's says whose it is too.
   const bool more_lights = ctx.lights && !ctx.lights->empty();
-  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get_choice("view.debug_channel"), ctx.empty_vao,
+  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get(param::view_debug_channel), ctx.empty_vao,
                            more_lights ? "sun" : "", labels});
   // Each shadowed light's map left of the one before, named after its light.
   if (more_lights) {

@@ -42,8 +42,8 @@ void DepthMapPass::for_each_program(const std::function<void(ReloadableProgram&)
 }
 
 bool DepthMapPass::ensure_targets(const ParamSet& params) {
-  const int size = std::stoi(params.get_choice("shadow.map_size"));
-  const std::string& format = params.get_choice("shadow.depth_format");
+  const int size = std::stoi(params.get(param::shadow_map_size));
+  const std::string& format = params.get(param::shadow_depth_format);
   if (size == size_ && format == format_) return false;
   depth_texture_ = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
   fbo_ = GlFramebuffer::create();

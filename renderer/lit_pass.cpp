@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/flashlight.h"
 #include "core/image_io.h"
 #include "renderer/debug_annotations.h"
 #include "renderer/shadowed_light.h"
@@ -384,13 +385,13 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   u.light_tex_matrix.set(clip_to_texture() * light.view.view_projection());
   u.light_view_proj.set(light.view.view_projection());
   u.to_light.set(light.to_light);
-  u.bias_constant.set(params.get_float("shadow.bias"));
-  u.bias_slope.set(params.get_float("shadow.slope_bias"));
+  u.bias_constant.set(params.get(param::shadow_bias));
+  u.bias_slope.set(params.get(param::shadow_slope_bias));
   // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
   // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
   const float depth_range = 2.0f / std::abs(light.view.projection[2][2]);
   u.texel_depth.set(light.view.world_size.x / static_cast<float>(inputs.map_size) / depth_range);
-  u.ambient.set(params.get_float("view.ambient"));
+  u.ambient.set(params.get(param::view_ambient));
   // Positional lights: where the light stands, the spot's cone, its projection's planes, a texel's angle.
   u.light_position.set(light.position);
   u.spot_direction.set(light.spot_direction);
@@ -400,7 +401,7 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
   u.texel_angle.set(light.texel_angle(std::max(inputs.map_size, 1)));
   if (ctx.lights && !ctx.lights->empty()) {  // each uniform set when present: an answer may leave some unused
-    u.lights.sun_intensity.set(static_cast<float>(params.get_or("sun.intensity", 1.0)));
+    u.lights.sun_intensity.set(static_cast<float>(params.get(param::sun_intensity)));
     for (std::size_t i = 0; i < ctx.lights->size(); ++i)
       (*ctx.lights)[i].bind_lit_inputs(params, u.lights.entry[i], kShadowedLightUnits[i]);
     glActiveTexture(GL_TEXTURE0);

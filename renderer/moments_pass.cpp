@@ -150,9 +150,9 @@ struct MomentsBlur {
   float sigma = 1.0f;
 };
 MomentsBlur moments_blur(const ParamSet& params, int matched) {
-  if (matched >= 0 && vsm_param(params, "vsm.match_light") != 0.0)
+  if (matched >= 0 && params.get(param::vsm_match_light))
     return {matched, std::max(0.25f, static_cast<float>(2 * matched + 1) / std::sqrt(12.0f))};
-  return {static_cast<int>(vsm_param(params, "vsm.blur_radius")), static_cast<float>(vsm_param(params, "vsm.blur_sigma"))};
+  return {params.get(param::vsm_blur_radius), params.get(param::vsm_blur_sigma)};
 }
 
 }  // namespace
@@ -161,21 +161,21 @@ bool MomentsPass::ensure_targets(const ParamSet& params) {
   const bool blur = moments_blur(params, matched_radius_).radius > 0;
   const glm::vec2 c = evsm_exponents(params);
   set_warp_exponent(c.x, c.y);
-  return ensure_targets(std::stoi(params.get_choice("shadow.map_size")), vsm_choice(params, "vsm.format"), blur);
+  return ensure_targets(std::stoi(params.get(param::shadow_map_size)), params.get(param::vsm_format), blur);
 }
 
 void MomentsPass::frame_inputs(PassContext& ctx, std::vector<float>& out) {
   // A blur matched to the light follows light.size (and the light's box), which the map's declared
   // inputs do not include.
   out.clear();
-  if (vsm_param(ctx.params, "vsm.match_light") != 0.0) out.push_back(static_cast<float>(matched_radius_));
+  if (ctx.params.get(param::vsm_match_light)) out.push_back(static_cast<float>(matched_radius_));
 }
 
 void MomentsPass::draw_map(PassContext& ctx) {
   // 1. The moments (z, z^2 + slope term) of the nearest surface per texel.
   ctx.timed("moments", [&] {
     ctx.count_texels([&] {
-      draw_moments(ctx.gpu_scene, ctx.light.view.view_projection(), ctx.cull, ctx.params.get_bool("shadow.cull_casters"),
+      draw_moments(ctx.gpu_scene, ctx.light.view.view_projection(), ctx.cull, ctx.params.get(param::shadow_cull_casters),
                    ctx.stats.draws, ctx.stats.casters_culled);
     });
   });
@@ -187,7 +187,7 @@ void MomentsPass::draw_map(PassContext& ctx) {
   // brute-force blurs read and write two channels.
   if (b.radius > 0)
     blur_map(ctx, b.radius, b.sigma,
-             four_moments_ ? BlurMethod::Separable : blur_method_from_name(vsm_choice(ctx.params, "vsm.blur_method")));
+             four_moments_ ? BlurMethod::Separable : blur_method_from_name(ctx.params.get(param::vsm_blur_method)));
   // Half floats run out of precision on large depth ranges: measure it so that it can be shown.
   // (Of depths only: warped moments have another background and scale.)
   ctx.stats.moments_negative_variance =
@@ -213,10 +213,10 @@ void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod
 }
 
 glm::vec2 evsm_exponents(const ParamSet& params) {
-  if (vsm_choice(params, "vsm.warp") != "exponential") return glm::vec2(0.0f);
-  const float limit = vsm_choice(params, "vsm.format") == "RG16F" ? kEvsmMaxExponentRG16F : kEvsmMaxExponentRG32F;
-  auto clamped = [&](const char* key) { return std::clamp(static_cast<float>(vsm_param(params, key)), 0.0f, limit); };
-  return {clamped("vsm.evsm_exponent"), clamped("vsm.evsm_negative_exponent")};
+  if (params.get(param::vsm_warp) != "exponential") return glm::vec2(0.0f);
+  const float limit = params.get(param::vsm_format) == "RG16F" ? kEvsmMaxExponentRG16F : kEvsmMaxExponentRG32F;
+  return {std::clamp(params.get(param::vsm_evsm_exponent), 0.0f, limit),
+          std::clamp(params.get(param::vsm_evsm_negative_exponent), 0.0f, limit)};
 }
 
 float evsm_exponent(const ParamSet& params) { return evsm_exponents(params).x; }
@@ -238,14 +238,14 @@ void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
     lit_program_ = program;
   }
   lit_negative_exponent_.set(c.y);
-  u.min_variance.set(static_cast<float>(vsm_param(params, "vsm.min_variance")));
-  u.bleed_delta.set(static_cast<float>(vsm_param(params, "vsm.bleed_delta")));
+  u.min_variance.set(params.get(param::vsm_min_variance));
+  u.bleed_delta.set(params.get(param::vsm_bleed_delta));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
 }
 
 void MomentsPass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (vsm_param(ctx.params, "vsm.show_remap") != 0.0) {
+  if (ctx.params.get(param::vsm_show_remap)) {
     ctx.timed("remap_view", [&] { lit.draw(ctx, LitVariant::RemapView); });
     if (ctx.annotations) ctx.annotations->legends.push_back(remap_view_legend());
   }

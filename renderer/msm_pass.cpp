@@ -29,7 +29,7 @@ void MsmPass::for_each_program(const std::function<void(ReloadableProgram&)>& f)
 }
 
 bool MsmPass::ensure_targets(const ParamSet& params) {
-  const int size = std::stoi(params.get_choice("shadow.map_size"));
+  const int size = std::stoi(params.get(param::shadow_map_size));
   if (size == size_) return false;
   // Linear filtering: the average of four texels' moments is again a set of moments.
   texture_ = make_texture_2d(GL_RGBA32F, size, size, GL_RGBA, GL_FLOAT, GL_LINEAR);
@@ -70,7 +70,7 @@ void MsmPass::draw_map(PassContext& ctx) {
 }
 
 void MsmPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  u.msm_moment_bias.set(static_cast<float>(vsm_param(params, "vsm.msm_moment_bias")));
+  u.msm_moment_bias.set(params.get(param::vsm_msm_moment_bias));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, texture_.id());
 }

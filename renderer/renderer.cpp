@@ -75,14 +75,14 @@ Scene frame_scene(const Scene& scene, bool add_ground, bool blend_casts) {
 }
 
 bool adds_ground(const Scene& scene, const ParamSet& params) {
-  return params.get_or("scene.ground", 1.0) != 0.0 && !has_ground(scene);
+  return params.get(param::scene_ground) && !has_ground(scene);
 }
 
 Bounds frame_scene_bounds(const Scene& scene, const ParamSet& params) {
   Bounds box = scene.bounds();
   if (box.empty() || !adds_ground(scene, params)) return box;
-  const glm::vec3 to_light = direction_from_angles(static_cast<float>(params.get_or("light.azimuth", 35.0)),
-                                                   static_cast<float>(params.get_or("light.elevation", 50.0)));
+  const glm::vec3 to_light =
+      direction_from_angles(params.get(param::light_azimuth), params.get(param::light_elevation));
   const float height = box.extent().y;
   // Along the light's direction down to the ground: a point at height h moves h / tan(elevation) sideways.
   const glm::vec2 side(-to_light.x, -to_light.z);
@@ -107,8 +107,8 @@ OrbitCamera frame_scene_camera(const Scene& scene, const ParamSet& params) {
 }
 
 bool Renderer::update_scene_options(const ParamSet& params) {
-  const bool ground = params.get_or("scene.ground", 1.0) != 0.0 && !source_has_ground_;
-  const bool blend_casts = params.get_or("scene.blend_casts", 1.0) != 0.0;
+  const bool ground = params.get(param::scene_ground) && !source_has_ground_;
+  const bool blend_casts = params.get(param::scene_blend_casts);
   if (ground == ground_added_ && blend_casts == blend_casts_) return false;
   ground_added_ = ground;
   blend_casts_ = blend_casts;
@@ -136,11 +136,11 @@ namespace {
 // The radius of a filter matched to the light (pcf.match_light or vsm.match_light, whichever the
 // parameters switch on), for the shadow pass; -1 when neither is on or there is nothing to match.
 int matched_filter_radius(const ParamSet& params, const FrameLight& light, double scale) {
-  const bool pcf = technique_param(params, "pcf.match_light") != 0.0;
-  const bool vsm = vsm_param(params, "vsm.match_light") != 0.0;
+  const bool pcf = params.get(param::pcf_match_light);
+  const bool vsm = params.get(param::vsm_match_light);
   if (!pcf && !vsm) return -1;
-  const double distance = pcf ? technique_param(params, "pcf.match_distance") : vsm_param(params, "vsm.match_distance");
-  return light.matched_filter_radius(static_cast<float>(distance * scale), std::stoi(params.get_choice("shadow.map_size")));
+  const double distance = pcf ? params.get(param::pcf_match_distance) : params.get(param::vsm_match_distance);
+  return light.matched_filter_radius(static_cast<float>(distance * scale), std::stoi(params.get(param::shadow_map_size)));
 }
 
 // Programs built from the same files report the same text: each text is said once.
@@ -312,7 +312,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     ctx.timed("billboards", [&] {
       glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
       glViewport(0, 0, request.width, request.height);
-      ctx.billboards->draw_view(ctx, params.get_or("billboard.show_shadow_quads", 0.0) != 0.0);
+      ctx.billboards->draw_view(ctx, params.get(param::billboard_show_shadow_quads));
     });
   }
 
@@ -333,7 +333,7 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
   // Shadow volumes reach to infinity: the camera's far plane goes there too (third row 0, 0, -1, -2n).
   camera_projection_ = infinite_far_plane ? glm::infinitePerspective(glm::radians(camera.fov_y_deg), aspect, camera.near_plane)
                                           : camera.projection(aspect);
-  const int cull = features_.shadow_cull_override ? features_.shadow_cull_override(params) : static_cast<int>(params.get("shadow.cull"));
+  const int cull = features_.shadow_cull_override ? features_.shadow_cull_override(params) : params.index(param::shadow_cull);
   std::optional<OrbitCamera> cascade_camera;
   if (request.cascade_camera) cascade_camera = to_local(*request.cascade_camera, placement_);
   return {local_scene_,

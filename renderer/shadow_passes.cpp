@@ -119,7 +119,7 @@ void draw_casters_from_light(PassContext& ctx, const glm::mat4& light_view_proj,
                              const std::function<void(const GpuScene::Range&)>* masked) {
   set_shadow_culling(ctx.cull);
   const auto counts =
-      ctx.gpu_scene.draw_casters(&light_view_proj, 1, ctx.params.get_bool("shadow.cull_casters"), masked);
+      ctx.gpu_scene.draw_casters(&light_view_proj, 1, ctx.params.get(param::shadow_cull_casters), masked);
   ctx.stats.draws += counts.drawn;
   ctx.stats.casters_culled += counts.culled;
   glDisable(GL_CULL_FACE);

@@ -26,7 +26,7 @@ std::map<std::string, std::string> ShadowVolumePass::default_includes(LightType)
 void ShadowVolumePass::for_each_program(const std::function<void(ReloadableProgram&)>& f) { f(program_); }
 
 void ShadowVolumePass::draw_view_passes(PassContext& ctx, LitPass& lit) {
-  const bool z_fail = technique_choice(ctx.params, "volume.method") == "z-fail";
+  const bool z_fail = ctx.params.get(param::volume_method) == "z-fail";
   // 1. The scene with ambient light only: colour, depth (and the G-buffer, visibility 0).
   ctx.timed("ambient", [&] { lit.draw(ctx, LitVariant::VolumeAmbient); });
   // 2. The volumes into the stencil buffer.

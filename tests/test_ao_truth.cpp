@@ -59,12 +59,12 @@ GBuffer floor_points(const std::vector<glm::vec3>& points) {
   return g;
 }
 
-struct Errors {
+struct AoErrors {
   double max = 0.0, mean = 0.0;
 };
 
-Errors compare(const AoTruth& t, const std::vector<double>& expected) {
-  Errors e;
+AoErrors compare(const AoTruth& t, const std::vector<double>& expected) {
+  AoErrors e;
   for (std::size_t i = 0; i < expected.size(); ++i) {
     const double err = std::abs(static_cast<double>(t.open[i]) - expected[i]);
     e.max = std::max(e.max, err);
@@ -98,7 +98,7 @@ TEST(AoTruth, BesideAWallMatchesTheChordWithinTheStatedError) {
   }
   const Oracle oracle(ao_occluders(s));
   const AoTruth t = evaluate_ao(oracle, floor_points(points), kRadius);
-  const Errors e = compare(t, expected);
+  const AoErrors e = compare(t, expected);
   std::printf("AO truth beside a wall, %d rays per point: largest error %.4f, mean %.4f (stated %.3f)\n", t.samples,
               e.max, e.mean, kAoTruthError);
   EXPECT_LE(e.max, kAoTruthError);
@@ -122,7 +122,7 @@ TEST(AoTruth, InACornerMatchesTheUnionOfTwoChordsWithinTheStatedError) {
   }
   const Oracle oracle(ao_occluders(s));
   const AoTruth t = evaluate_ao(oracle, floor_points(points), kRadius);
-  const Errors e = compare(t, expected);
+  const AoErrors e = compare(t, expected);
   std::printf("AO truth in a corner, %d rays per point: largest error %.4f, mean %.4f (stated %.3f)\n", t.samples,
               e.max, e.mean, kAoTruthError);
   EXPECT_LE(e.max, kAoTruthError);

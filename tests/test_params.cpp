@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/params.h"
+#include "core/placement.h"
 #include "renderer/renderer.h"
 #include "core/technique_params.h"
 #include "core/vsm_params.h"
@@ -104,6 +105,56 @@ TEST(Params, ValuesInvalidatingListsTheDeclaredInputsInOrder) {
   EXPECT_EQ(inputs.front().second, 120.0);
   EXPECT_EQ(inputs.back().second, 0.5);
   EXPECT_EQ(p.values_invalidating(kInvalidatesTargets).size(), 2u);
+}
+
+// A handle reads the set's value when the set declares its key (a feature set's own default included),
+// else the default declared with the handle; it reads as its type; it writes only a declared key.
+TEST(Params, HandlesReadTheSetOrTheDeclaredDefault) {
+  ParamSet p(renderer_param_specs());
+  EXPECT_EQ(p.get(param::shadow_bias), 0.005f);
+  p.apply_assignment("shadow.bias=0.01");
+  EXPECT_EQ(p.get(param::shadow_bias), 0.01f);
+  EXPECT_EQ(p.get(param::shadow_map_size), "1024");
+  EXPECT_EQ(p.index(param::shadow_map_size), 2);
+  EXPECT_TRUE(p.get(param::view_debug_quad));
+  // Keys the set does not declare: the handles' declared defaults.
+  EXPECT_EQ(p.get(param::vsm_blur_radius), 0);
+  EXPECT_EQ(p.get(param::vsm_format), "RG32F");
+  EXPECT_EQ(p.index(param::vsm_format), 0);
+  EXPECT_EQ(p.get(param::light_type), "directional");
+  EXPECT_EQ(p.get(param::pcss_filter_samples), 8);
+  // A feature set's own default wins over the handle's.
+  ParamSpec elevation = param::light_elevation.spec();
+  elevation.default_value = 10.0;
+  p.declare(elevation);
+  EXPECT_EQ(p.get(param::light_elevation), 10.0f);
+  EXPECT_EQ(param::light_elevation.spec().default_value, 50.0) << "the handle keeps its own";
+  // Writes through a handle, a choice by name.
+  EXPECT_NE(p.set(param::shadow_map_size, "2048") & kInvalidatesTargets, 0u);
+  EXPECT_EQ(p.get_choice("shadow.map_size"), "2048");
+  EXPECT_EQ(p.set(param::view_debug_quad, false), kInvalidatesNothing);
+  EXPECT_FALSE(p.get_bool("view.debug_quad"));
+  EXPECT_THROW(p.set(param::vsm_blur_radius, 3), std::out_of_range) << "the set does not declare it";
+  EXPECT_THROW(p.set(param::shadow_map_size, "1000"), std::invalid_argument);
+  // A double handle keeps what float would round (the placement's offsets far from the origin).
+  ParamSet placed(placement_param_specs());
+  placed.set(param::scene_offset_x, 1e6 + 0.125);
+  EXPECT_EQ(placed.get(param::scene_offset_x), 1e6 + 0.125);
+}
+
+TEST(Params, AHandleOfTheWrongTypeIsRejected) {
+  EXPECT_THROW(FloatParam({"test.count", "A count", ParamKind::Int, 0.0, 0.0, 1.0, "", {}}), std::logic_error);
+  EXPECT_THROW(BoolParam({"test.mode", "A mode", ParamKind::Choice, 0.0, 0.0, 1.0, "", {}}), std::logic_error);
+  EXPECT_NO_THROW(IntParam({"test.count", "A count", ParamKind::Int, 0.0, 0.0, 1.0, "", {}}));
+  EXPECT_NO_THROW(DoubleParam({"test.offset", "An offset", ParamKind::Float, 0.0, 0.0, 1.0, "", {}}));
+}
+
+// The value a set has for a spec it may not declare (what a one-off value's "was" reads).
+TEST(Params, ValueOrDefaultOfASpec) {
+  ParamSet p(renderer_param_specs());
+  p.apply_assignment("shadow.bias=0.02");
+  EXPECT_EQ(p.value_or_default(param::shadow_bias.spec()), 0.02);
+  EXPECT_EQ(p.value_or_default(param::vsm_bleed_delta.spec()), 0.125);
 }
 
 }  // namespace

@@ -189,11 +189,11 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Write a slope-scaled bias and pick the culling so a grazing light shows neither artifact.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  auto bias = *ParamSet(renderer_param_specs()).find("shadow.bias");
+  ParamSpec bias = param::shadow_bias.spec();
   bias.default_value = 0.0005;
-  auto slope = *ParamSet(renderer_param_specs()).find("shadow.slope_bias");
+  ParamSpec slope = param::shadow_slope_bias.spec();
   slope.default_value = 2.0;
-  auto elevation = *ParamSet(renderer_param_specs()).find("light.elevation");
+  ParamSpec elevation = param::light_elevation.spec();
   elevation.default_value = 10.0;
   auto cull = *ParamSet(renderer_param_specs()).find("shadow.cull");
   cull.choices.push_back("#define");

@@ -229,7 +229,7 @@ void check_ortho_fit(CheckContext& ctx, CheckResult& result) {
   params.set("light.elevation", 90.0);
   compare_with_fixed(ctx, result, "palm_tree_straight_down", params, nullptr, true);
   params.set("light.elevation", 10.0);
-  const glm::vec3 to_light = direction_from_angles(params.get_float("light.azimuth"), 10.0f);
+  const glm::vec3 to_light = direction_from_angles(params.get(param::light_azimuth), 10.0f);
   Bounds palms_and_shadow;
   for (const glm::vec3& corner : {glm::vec3(-2, 0, -2), glm::vec3(2, 0, 2), glm::vec3(-2, 3.9f, -2), glm::vec3(2, 3.9f, 2)}) {
     palms_and_shadow.extend(corner);
@@ -254,8 +254,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.solution_files = {kSolution};
   // Lab 1's lesson: a bias in texels, so the fitted and the fixed box are compared at the same bias in
   // world units (a constant in depth units would scale with each box's depth range).
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  ParamSpec bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
   bias.default_value = 0.00002;
   slope.default_value = 2.0;
   lab.params = {bias, slope};

@@ -217,7 +217,7 @@ void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
                                {"depth_renderbuffer_format", info.depth_internal_format},
                                {"color_attachment_type", info.color_attachment_type},
                                {"depth_attachment_type", info.depth_attachment_type}};
-  const bool rg16 = params.get_choice("vsm.format") == "RG16F";
+  const bool rg16 = params.get(param::vsm_format) == "RG16F";
   result.criteria.insert(result.criteria.end(), {
       {"moments.non_finite_texels", static_cast<double>(c.non_finite), Criterion::kAtMost, kMaxBadTexels, "no NaN or Inf"},
       {"moments.max_first_moment_error", c.max_first_error, Criterion::kAtMost, rg16 ? kMaxMomentErrorHalfFloat : kMaxFirstMomentError,
@@ -242,7 +242,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Store the moments (z, z^2) in a filterable RG32F map and light with Chebyshev's bound.";
   lab.exercise_files = {kExerciseMoments, kExerciseChebyshev};
   lab.solution_files = {"shaders/vsm/moments.glsl", "shaders/vsm/chebyshev.glsl"};
-  lab.params = vsm_param_specs({"vsm.format", "vsm.min_variance"});
+  lab.params = specs_of(param::vsm_format, param::vsm_min_variance);
   lab.presets = {
       {"no minimum variance",
        "The smallest clamp: with the slope term in the moments, hardly anything changes.",

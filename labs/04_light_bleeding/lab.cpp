@@ -140,7 +140,7 @@ void check_light_bleeding(CheckContext& ctx, CheckResult& result) {
   // with the moments blurred (lab 5's 9x9 Gaussian), where bleeding spreads over many more pixels.
   ctx.use_scene(make_stacked_occluders_scene());
   const Bounds view = shadows_on_receiver(
-      ctx.scene(), direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation")));
+      ctx.scene(), direction_from_angles(params.get(param::light_azimuth), params.get(param::light_elevation)));
   ParamSet blurred = params;
   blurred.set("vsm.blur_radius", kBlurRadius);
   blurred.set("vsm.blur_sigma", kBlurSigma);
@@ -193,7 +193,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.solution_files = {kSolution};
   lab.params = vsm_lab_bias_params();
   for (auto& spec :
-       vsm_param_specs({"vsm.min_variance", "vsm.bleed_delta", "vsm.show_remap", "vsm.blur_radius", "vsm.blur_sigma"}))
+       specs_of(param::vsm_min_variance, param::vsm_bleed_delta, param::vsm_show_remap, param::vsm_blur_radius,
+                param::vsm_blur_sigma))
     lab.params.push_back(spec);
   lab.presets = {
       // On the stacked occluders the check grades, the moments blurred (radius 8, sigma 4) so that the light

@@ -159,7 +159,7 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
                                "average the 2r + 1 texels with weights exp(-i^2 / (2 sigma^2)) divided by their sum, r and "
                                "sigma from the sliders (u_blur_radius, u_blur_sigma), coordinates clamped to the edge."});
   }
-  result.metrics["blur"] = {{"map_size", n}, {"format", params.get_choice("vsm.format")}, {"radii", radii}};
+  result.metrics["blur"] = {{"map_size", n}, {"format", params.get(param::vsm_format)}, {"radii", radii}};
   result.metrics["radius0"] = {
       {"blur_passes", blur_at_zero}, {"blur_target", target_at_zero}, {"extra_textures_when_blurring", extra_textures}};
   // Reported, not graded: the renderer, not the student's blur function, decides how many passes run
@@ -176,9 +176,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Blur the moments in two separable passes (X, then Y) for soft, alias-free shadow edges.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  lab.params =
-      vsm_param_specs({"vsm.format", "vsm.min_variance", "vsm.bleed_delta", "vsm.blur_radius", "vsm.blur_sigma",
-                       "vsm.match_light", "vsm.match_distance"});
+  lab.params = specs_of(param::vsm_format, param::vsm_min_variance, param::vsm_bleed_delta, param::vsm_blur_radius,
+                        param::vsm_blur_sigma, param::vsm_match_light, param::vsm_match_distance);
   for (auto& spec : lab.params) {
     if (spec.key == "vsm.blur_radius") spec.default_value = 4.0;
     if (spec.key == "vsm.blur_sigma") spec.default_value = 2.0;

@@ -234,8 +234,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Average the shadow test over N x N texels, in a loop or with the hardware's sampler2DShadow.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias"), size = *base.find("shadow.map_size");
+  ParamSpec bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
+  ParamSpec size = param::shadow_map_size.spec();
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;
   size.default_value = 1.0;  // 512^2: texels several pixels wide on screen, where filtering shows

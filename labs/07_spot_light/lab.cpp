@@ -128,11 +128,11 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "A flashlight: perspective projection from the light's position, near/far fitted, bias in world units.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec slope = *base.find("shadow.slope_bias");
+  ParamSpec slope = param::shadow_slope_bias.spec();
   slope.default_value = 2.0;
   lab.params = {slope};
-  for (auto spec : technique_param_specs({"light.position_x", "light.position_y", "light.position_z", "light.cone_deg"})) {
+  for (auto spec :
+       specs_of(param::light_position_x, param::light_position_y, param::light_position_z, param::light_cone_deg)) {
     if (spec.key == "light.position_x") spec.default_value = kPlaces[0].x;
     if (spec.key == "light.position_y") spec.default_value = kPlaces[0].y;
     if (spec.key == "light.position_z") spec.default_value = kPlaces[0].z;

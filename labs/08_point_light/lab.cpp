@@ -256,8 +256,8 @@ void check_point(CheckContext& ctx, CheckResult& result) {
   const char* sizes[] = {"256", "512", "2048"};
   for (const char* tag : {"held_out_1", "held_out_2"}) {
     ParamSet p = params;
-    const glm::vec3 at(params.get_float("light.position_x") + 1.2f * (unit(rng) - 0.5f), 2.0f + 2.0f * unit(rng),
-                       params.get_float("light.position_z") + 1.2f * (unit(rng) - 0.5f));
+    const glm::vec3 at(params.get(param::light_position_x) + 1.2f * (unit(rng) - 0.5f), 2.0f + 2.0f * unit(rng),
+                       params.get(param::light_position_z) + 1.2f * (unit(rng) - 0.5f));
     const std::string size = sizes[std::uniform_int_distribution<int>(0, 2)(rng)];
     p.set("light.position_x", at.x);
     p.set("light.position_y", at.y);
@@ -278,12 +278,11 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Six 90-degree faces storing the distance to the light: what to store, which face and texel to read, how to compare.";
   lab.exercise_files = {kExerciseStore, kExercise};
   lab.solution_files = {kSolutionStore, kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec slope = *base.find("shadow.slope_bias");
+  ParamSpec slope = param::shadow_slope_bias.spec();
   slope.default_value = 2.0;
   lab.params = {slope};
   for (const auto& spec :
-       technique_param_specs({"light.position_x", "light.position_y", "light.position_z", "point.single_pass"}))
+       specs_of(param::light_position_x, param::light_position_y, param::light_position_z, param::point_single_pass))
     lab.params.push_back(spec);
   lab.presets = {
       {"among the objects", "The check's place: shadows on every side.", {{"light.position_x", "-0.6"}, {"light.position_y", "3"}, {"light.position_z", "0.2"}}},

@@ -153,7 +153,7 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
       ParamSet p = base;
       p.set_from_string("light.type", "directional");
       p.set_from_string("volume.method", "z-fail");
-      const float azimuth = std::fmod(base.get_float("light.azimuth") + 120.0f * (unit(rng) - 0.5f) + 360.0f, 360.0f);
+      const float azimuth = std::fmod(base.get(param::light_azimuth) + 120.0f * (unit(rng) - 0.5f) + 360.0f, 360.0f);
       const float elevation = sun.min_elevation + (sun.max_elevation - sun.min_elevation) * unit(rng);
       p.set("light.azimuth", azimuth);
       p.set("light.elevation", elevation);
@@ -169,7 +169,7 @@ void check_volumes(CheckContext& ctx, CheckResult& result) {
   // the eye is in once too few.
   ParamSet p = base;
   p.set_from_string("light.type", "directional");
-  const glm::vec3 to_light = direction_from_angles(p.get_float("light.azimuth"), p.get_float("light.elevation"));
+  const glm::vec3 to_light = direction_from_angles(p.get(param::light_azimuth), p.get(param::light_elevation));
   const bool eye_in_shadow = ctx.oracle().occluded(kInsideEye, to_light, std::numeric_limits<float>::infinity());
   result.metrics["inside"] = {{"eye", {kInsideEye.x, kInsideEye.y, kInsideEye.z}}, {"eye_in_shadow", eye_in_shadow}};
   result.criteria.push_back({"inside.eye_in_shadow", eye_in_shadow ? 1.0 : 0.0, Criterion::kAtLeast, 1,
@@ -194,15 +194,14 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Find silhouette edges from adjacency in a geometry shader, extrude them to infinity, cap the volumes for z-fail.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  lab.params = technique_param_specs(
-      {"light.type", "light.position_x", "light.position_y", "light.position_z", "light.cone_deg", "volume.method"});
-  ParamSet base(renderer_param_specs());
-  ParamSpec wire = *base.find("view.volumes"), quad = *base.find("view.debug_quad");
+  lab.params = specs_of(param::light_type, param::light_position_x, param::light_position_y, param::light_position_z,
+                        param::light_cone_deg, param::volume_method);
+  ParamSpec wire = param::view_volumes.spec(), quad = param::view_debug_quad.spec();
   wire.default_value = 0.0;
   quad.default_value = 0.0;  // there is no shadow map to show
   lab.params.push_back(wire);
   lab.params.push_back(quad);
-  lab.params.push_back(*base.find("view.flat_normals"));  // the facets the volumes are extruded from
+  lab.params.push_back(param::view_flat_normals.spec());  // the facets the volumes are extruded from
   lab.presets = {
       {"point light", "A point light among the objects.", {{"light.type", "point"}}},
       {"z-pass", "Count the faces in front, the camera standing in the big box's shadow: every count is off by one, "

@@ -70,8 +70,8 @@ Features lab_hooks(const SlotFiles& files) {
 
 // The oracle for these parameters: the scene as drawn, and the trees as the light should see them.
 std::unique_ptr<Oracle> trees_oracle(CheckContext& ctx, const ParamSet& params) {
-  Scene scene = frame_scene(ctx.scene(), adds_ground(ctx.scene(), params), params.get_or("scene.blend_casts", 1.0) != 0.0);
-  const glm::vec3 to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
+  Scene scene = frame_scene(ctx.scene(), adds_ground(ctx.scene(), params), params.get(param::scene_blend_casts));
+  const glm::vec3 to_light = direction_from_angles(params.get(param::light_azimuth), params.get(param::light_elevation));
   scene.meshes.push_back(billboard_light_quads(trees(), billboard_size(params), to_light));
   return std::make_unique<Oracle>(scene);
 }

@@ -226,7 +226,7 @@ void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
   const OrbitCamera base = ground_camera(scene);
   std::mt19937 rng = ctx.held_out_rng();
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<glm::vec3> lights = {direction_from_angles(ctx.params().get_float("light.azimuth"), ctx.params().get_float("light.elevation"))};
+  std::vector<glm::vec3> lights = {direction_from_angles(ctx.params().get(param::light_azimuth), ctx.params().get(param::light_elevation))};
   for (int i = 0; i < 2; ++i) lights.push_back(direction_from_angles(360.0f * unit(rng), 15.0f + 70.0f * unit(rng)));
   constexpr int kPoses = 8;
   constexpr int kCount = 4;
@@ -323,7 +323,7 @@ void grade_shimmer(CheckContext& ctx, CheckResult& result, const ParamSet& param
   request.width = 960;
   request.height = 540;
   request.gbuffer = true;
-  const glm::vec3 to_light = direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation"));
+  const glm::vec3 to_light = direction_from_angles(params.get(param::light_azimuth), params.get(param::light_elevation));
   auto frame = [&](const OrbitCamera& cascade_camera) {
     request.cascade_camera = cascade_camera;
     ctx.renderer.render(params, request);
@@ -427,9 +427,9 @@ void check_cascades(CheckContext& ctx, CheckResult& result) {
   // are meant to win, on the pixels of the first half of the cascades (view depth below the lab's split
   // C_N/2, from the formula); the whole view is reported.
   const OrbitCamera ground = ground_camera(ctx.scene().bounds());
-  const int count = params.get_int("csm.count");
+  const int count = params.get(param::csm_count);
   const float near_depth = practical_splits(ground.near_plane, ground.far_plane, count,
-                                            params.get_float("csm.lambda"))[static_cast<std::size_t>((count + 1) / 2)];
+                                            params.get(param::csm_lambda))[static_cast<std::size_t>((count + 1) / 2)];
   compare_with_single_map(ctx, result, "default_scene", params, hooks, nullptr, &ground, near_depth, true);
   grade_shimmer(ctx, result, params, hooks);
   // The PalmTree (10k triangles, a 392-unit sea): a camera standing on the island near the palms, its
@@ -453,8 +453,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Split the view range into cascades, one ortho box each: a sphere snapped to whole texels.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  ParamSpec bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
   bias.default_value = 0.00002;  // lab 2's: in depth units of the scene's extent along the light
   slope.default_value = 2.0;
   lab.params = csm_param_specs();

@@ -201,7 +201,7 @@ void check_evsm(CheckContext& ctx, CheckResult& result) {
   const Bounds view = shadows_on_receiver(
       ctx.scene(), direction_from_angles(params.get_float("light.azimuth"), params.get_float("light.elevation")));
   std::printf("    stacked scene, c = %.3g:  delta  radius  bleeding VSM  EVSM    mae_interior VSM  EVSM     mae_edge VSM  EVSM\n",
-              vsm_param(params, "vsm.evsm_exponent"));
+              static_cast<double>(params.get(param::vsm_evsm_exponent)));
   for (const Target& t : kTargets) {
     ParamSet p = params;
     p.set("vsm.bleed_delta", t.delta);

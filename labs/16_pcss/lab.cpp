@@ -130,8 +130,8 @@ void measure_case(CheckContext& ctx, CheckResult& result, const ParamSet& p, con
   const auto m = ctx.measure(p, ctx.hooks(), "lab16_" + tag + "_" + impl_name(ctx.impl), nullptr, grading_band(),
                              kWidth, kHeight);
   grade_hard_shadow(result, tag, m.metrics, limits);
-  cases.push_back({{"case", tag}, {"light_size_deg", p.get_float("light.size")},
-                   {"map_size", p.get_choice("shadow.map_size")}, {"render_ms", m.render_ms},
+  cases.push_back({{"case", tag}, {"light_size_deg", p.get(param::light_size)},
+                   {"map_size", p.get(param::shadow_map_size)}, {"render_ms", m.render_ms},
                    {"oracle_ms", m.oracle_ms}});
 }
 
@@ -173,8 +173,7 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "A sun with a size: estimate the penumbra's width from the blockers' distance, and PCSS filters over it.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
-  ParamSet base(renderer_param_specs());
-  ParamSpec size = *base.find("light.size"), bias = *base.find("shadow.bias"), slope = *base.find("shadow.slope_bias");
+  ParamSpec size = param::light_size.spec(), bias = param::shadow_bias.spec(), slope = param::shadow_slope_bias.spec();
   size.default_value = kSunDegrees;
   bias.default_value = 0.0005;  // lab 1's solution
   slope.default_value = 2.0;

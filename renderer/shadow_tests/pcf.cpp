@@ -14,10 +14,10 @@ namespace {
 // The kernel's radius ((N - 1) / 2): pcf.kernel's, or the one matched to the light (pcf.match_light,
 // `matched` >= 0); and whether each tap compares in hardware.
 int pcf_radius(const ParamSet& params, int matched) {
-  if (matched >= 0 && technique_param(params, "pcf.match_light") != 0.0) return matched;
-  return std::stoi(technique_choice(params, "pcf.kernel")) / 2;
+  if (matched >= 0 && params.get(param::pcf_match_light)) return matched;
+  return std::stoi(params.get(param::pcf_kernel)) / 2;
 }
-bool pcf_hardware(const ParamSet& params) { return technique_param(params, "pcf.hardware") != 0.0; }
+bool pcf_hardware(const ParamSet& params) { return params.get(param::pcf_hardware); }
 
 }  // namespace
 

@@ -29,9 +29,9 @@ ShadowTest SHADOWLAB_SHADOW_TEST_MAKER() {
       // A sized light as given (light.size: a directional light's angular diameter in degrees, a
       // positional light's radius), and the samples per side (blocker search, filter).
       u.light_size.set(f.light.size);
-      u.blocker_samples.set(static_cast<int>(technique_param(f.params, "pcss.blocker_samples")));
-      u.filter_samples.set(static_cast<int>(technique_param(f.params, "pcss.filter_samples")));
-      u.view.set(static_cast<int>(technique_param(f.params, "pcss.view")));
+      u.blocker_samples.set(f.params.get(param::pcss_blocker_samples));
+      u.filter_samples.set(f.params.get(param::pcss_filter_samples));
+      u.view.set(f.params.index(param::pcss_view));
       u.view_range.set(pcss_view_range(f.params));  // the legend's high end too (debug_annotations.h)
       // A program with the debug view (it reads u_pcss_view) shows a colour ramp: its legend, once.
       if (f.annotations && u.view.present() && f.annotations->legends.empty())
