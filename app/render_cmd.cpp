@@ -66,8 +66,8 @@ struct PanelInputs {
 };
 
 // The window's panel, drawn by the same function over the same frame.
-std::vector<std::uint8_t> draw_panel(const RenderOptions& options, const PanelInputs& in, const Renderer& renderer,
-                                     const std::vector<std::uint8_t>& frame) {
+std::vector<std::uint8_t> draw_panel_over(const RenderOptions& options, const PanelInputs& in, const Renderer& renderer,
+                                          const std::vector<std::uint8_t>& frame) {
   const Lab* lab = in.lab;
   ParamSet& params = *in.params;
   const Scene& scene = *in.scene;
@@ -211,7 +211,7 @@ int run_render(const RenderOptions& options) {
       if (options.panel) {
         const PanelInputs in{lab, impl, &params, &scene, &stats, check ? &*check : nullptr, &bench_plots, &penumbra,
                              &camera};
-        color = draw_panel(options, in, renderer, color);
+        color = draw_panel_over(options, in, renderer, color);
       }
       write_png(out / "final.png", options.width, options.height, color);
       int map_size = 0;
