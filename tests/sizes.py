@@ -12,9 +12,9 @@ which lives outside these rooms). Each must carry a marker that says why, else t
 A marker without a reason does not count.
 
 Usage: tests/sizes.py [ROOT]      checks ROOT (default: this checkout)
-       tests/sizes.py --self-test builds a tree with a 81-line function and a 601-line file and requires
-                                  that it fails on both, and passes once each carries a marker (and that
-                                  80 and 600 lines pass without one)
+       tests/sizes.py --self-test builds a tree with an 81-line function and a 601-line file and requires
+                                  that it fails on both, also when the marker has no reason, and passes
+                                  once each carries a marker (and that 80 and 600 lines pass without one)
 """
 import json
 import os
@@ -43,10 +43,13 @@ def functions(root, files):
     """(path, name, first line, last line) of every function definition ctags finds."""
     if not files:
         return []
-    out = subprocess.run(
-        ["ctags", "--languages=C++", "--langmap=C++:+.h", "--kinds-C++=f", "--fields=+ne",
-         "--output-format=json", "-f", "-", *files],
-        cwd=root, check=True, capture_output=True, text=True).stdout
+    try:
+        out = subprocess.run(
+            ["ctags", "--languages=C++", "--langmap=C++:+.h", "--kinds-C++=f", "--fields=+ne",
+             "--output-format=json", "-f", "-", *files],
+            cwd=root, check=True, capture_output=True, text=True).stdout
+    except FileNotFoundError:
+        sys.exit("sizes: no ctags command: Universal Ctags finds where functions end (scripts/setup installs it)")
     found = []
     for line in out.splitlines():
         tag = json.loads(line)
@@ -93,7 +96,8 @@ def self_test():
         root = tempfile.mkdtemp(prefix="sizes-")
         os.makedirs(os.path.join(root, "core"))
         body = ["  x += %d;" % i for i in range(function_lines - 2)]
-        fn = (["// size: one table, read top to bottom"] if function_marker else ["// Adds."]) + \
+        fn = ([function_marker] if isinstance(function_marker, str) else
+              ["// size: one table, read top to bottom"] if function_marker else ["// Adds."]) + \
              ["int add(int x) {"] + body + ["}"]
         # A brace and a quote in a string and a comment must not end the function early.
         fn[2] = '  const char* s = "}"; // }'
@@ -113,6 +117,9 @@ def self_test():
     marked = violations(tree(MAX_FUNCTION + 1, MAX_FILE + 1, True, True))
     if marked:
         failures.append("marked ones were reported: %s" % marked)
+    empty = violations(tree(MAX_FUNCTION + 1, MAX_FILE, "// size:   ", False))
+    if not any("add is 81 lines" in v for v in empty):
+        failures.append("a marker without a reason was taken as one: %s" % empty)
     at_limit = violations(tree(MAX_FUNCTION, MAX_FILE, False, False))
     if at_limit:
         failures.append("80 lines and 600 lines were reported: %s" % at_limit)
@@ -120,7 +127,8 @@ def self_test():
         print("sizes self-test:", f, file=sys.stderr)
     if failures:
         return 1
-    print("sizes self-test: an 81-line function and a 601-line file fail, marked or at the limit they pass")
+    print("sizes self-test: an 81-line function and a 601-line file fail (also under a marker without a reason), "
+          "marked or at the limit they pass")
     return 0
 
 
