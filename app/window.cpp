@@ -1,8 +1,8 @@
 // The window: one loop in ImGui's order (poll, new frame, input, panel, render, ImGui, swap). What the
 // panel shows is app/panel_lab.cpp, the split view and magnifier app/split_view.cpp, the mouse camera
 // app/camera_input.cpp, and scripted input for tests app/input_script.cpp; this file wires them up.
-// size: not split yet: issue 37's light list (the flashlight's step in run_loop) and the lecture-hall
-// presets change this file in parallel; after they land, CheckWorker, the screenshots and FrameCost move out.
+// size: not split yet: issue 37's typed parameter handles and the lecture-hall presets change this file
+// (its loop, keys and start) in parallel; after they land, CheckWorker, the screenshots and FrameCost move out.
 #include "app/window.h"
 
 #include <algorithm>
