@@ -68,17 +68,8 @@ std::string main_footer() {
          "Each command has --help, with an example.";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"shadowlab: a teaching lab for real-time shadows in OpenGL.\n"
-               "Without a command it opens the window; the commands below run headless (no display, no GPU)."};
-  app.require_subcommand(0, 1);
-  app.set_version_flag("--version", version_text(), "Print the version and the libraries it was built with, and exit");
-  app.footer(main_footer());
-  app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
-
-  shadowlab::WindowOptions window_options;
+// The window's options (no command).
+void add_window_options(CLI::App& app, shadowlab::WindowOptions& window_options) {
   app.add_option("--lab", window_options.lab, "Lab to open in the window")->check(CLI::Range(0, 99));
   app.add_option("--scene", window_options.scene_file, "glTF file to open instead of the built-in scene");
   app.add_option("--preset", window_options.preset,
@@ -103,7 +94,9 @@ int main(int argc, char** argv) {
   app.add_option("--script", window_options.script,
                  "Scripted input for tests: key:K,frames:N,screenshot:F,resize:WxH,iconify,restore,wait:S,drop:F");
 
-  shadowlab::RenderOptions render;
+}
+
+CLI::App* add_render_command(CLI::App& app, shadowlab::RenderOptions& render) {
   CLI::App* render_cmd = app.add_subcommand("render", "Render one frame headless: final.png, shadow_map.png, render.json");
   render_cmd->add_option("--lab", render.lab, "Lab whose features and parameters to use")->check(CLI::Range(0, 99));
   render_cmd->add_option("--scene", render.scene_file, "glTF 2.0 file (.gltf or .glb); default: the built-in scene");
@@ -138,7 +131,10 @@ int main(int argc, char** argv) {
                      "         shadowlab render --lab 1 --preset acne --out out/acne   (a lecture's picture)\n"
                      "Headless through EGL on Linux (no display needed); elsewhere a hidden window (needs a display).");
 
-  shadowlab::CheckOptions check;
+  return render_cmd;
+}
+
+CLI::App* add_check_command(CLI::App& app, shadowlab::CheckOptions& check) {
   CLI::App* check_cmd = app.add_subcommand("check", "Grade labs headless against the ray-cast oracle. Exit 0: all passed; 1: some failed (or your file does not build); 2: usage error; 3: grader error");
   check_cmd->add_option("--lab", check.labs, "all, one lab number, or a comma-separated list (3,4,5)");
   check_cmd->add_option("--impl", check.impl, "Grade the exercise (the file you edit; the default) or the lab's solution")
@@ -160,7 +156,10 @@ int main(int argc, char** argv) {
                     "Example: shadowlab check --lab 1 --json out/check1.json\n"
                     "         shadowlab check --lab 1 --impl solution --preset tuned");
 
-  shadowlab::BenchOptions bench;
+  return check_cmd;
+}
+
+CLI::App* add_bench_command(CLI::App& app, shadowlab::BenchOptions& bench) {
   CLI::App* bench_cmd = app.add_subcommand("bench", "Benchmark run time against error: bench.csv, bench.json, pareto.png");
   bench_cmd->add_flag("--quick", bench.quick, "Fewer map sizes, blur radii and frames (under 3 minutes here)");
   bench_cmd->add_flag("--frame-cost", bench.frame_cost_only,
@@ -178,7 +177,10 @@ int main(int argc, char** argv) {
                     "Progress goes to stderr: one line rewritten on a terminal, a line per tenth of the sweep in a log.\n"
                     "Example: shadowlab bench --quick --out out/bench");
 
-  shadowlab::GradeOptions grade;
+  return bench_cmd;
+}
+
+CLI::App* add_grade_command(CLI::App& app, shadowlab::GradeOptions& grade) {
   CLI::App* grade_cmd = app.add_subcommand(
       "grade",
       "Grade a class (Linux or WSL only): each submission's labs, each in its own process with a time and a memory limit; writes "
@@ -199,20 +201,51 @@ int main(int argc, char** argv) {
   grade_cmd->add_flag("--merge", grade.merge_only, "Only write the reports from the results in --out (after a Slurm run)");
   grade_cmd->add_flag("--no-merge", grade.no_merge, "Only grade, do not write the reports (one task of a parallel or Slurm run)");
 
-  bool show_params = false;
+  return grade_cmd;
+}
+
+// `labs` and its flags.
+struct LabsFlags {
+  bool params = false, presets = false, json = false;
+};
+
+CLI::App* add_labs_command(CLI::App& app, LabsFlags& flags) {
   CLI::App* labs_cmd = app.add_subcommand("labs", "List the labs");
-  labs_cmd->add_flag("--params", show_params, "Also list every parameter with its range");
-  bool show_presets = false;
-  labs_cmd->add_flag("--presets", show_presets,
+  labs_cmd->add_flag("--params", flags.params, "Also list every parameter with its range");
+  labs_cmd->add_flag("--presets", flags.presets,
                      "Also list every preset (the names --preset takes) with the artifact it provokes and the preset that fixes it");
-  bool labs_json = false;
-  labs_cmd->add_flag("--json", labs_json,
+  labs_cmd->add_flag("--json", flags.json,
                      "The labs as JSON: number, slug, folder, exercise and solution files; with --presets each lab's presets "
                      "(name, description, values, provokes, fixed_by: null where none) and its story (the presets' names in "
                      "teaching order, as the window's Page Down steps through them)");
   labs_cmd->footer("Exit: 0.\nExample: shadowlab labs --params   (the keys --set takes, with their ranges)\n"
                    "         shadowlab labs --presets --json   (each preset's artifact and its fix, for scripts)");
 
+  return labs_cmd;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"shadowlab: a teaching lab for real-time shadows in OpenGL.\n"
+               "Without a command it opens the window; the commands below run headless (no display, no GPU)."};
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", version_text(), "Print the version and the libraries it was built with, and exit");
+  app.footer(main_footer());
+  app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
+
+  shadowlab::WindowOptions window_options;
+  add_window_options(app, window_options);
+  shadowlab::RenderOptions render;
+  CLI::App* render_cmd = add_render_command(app, render);
+  shadowlab::CheckOptions check;
+  CLI::App* check_cmd = add_check_command(app, check);
+  shadowlab::BenchOptions bench;
+  CLI::App* bench_cmd = add_bench_command(app, bench);
+  shadowlab::GradeOptions grade;
+  CLI::App* grade_cmd = add_grade_command(app, grade);
+  LabsFlags labs;
+  CLI::App* labs_cmd = add_labs_command(app, labs);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -226,6 +259,6 @@ int main(int argc, char** argv) {
   if (*check_cmd) return shadowlab::run_check(check);
   if (*bench_cmd) return bench.placement_only ? shadowlab::run_placement_bench(bench) : shadowlab::run_bench(bench);
   if (*grade_cmd) return shadowlab::run_grade(grade);
-  if (*labs_cmd) return shadowlab::run_list_labs(show_params, labs_json, show_presets);
+  if (*labs_cmd) return shadowlab::run_list_labs(labs.params, labs.json, labs.presets);
   return shadowlab::run_window(window_options);
 }

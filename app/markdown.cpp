@@ -274,6 +274,45 @@ float glued_width(const Runs& runs, std::size_t after, const InlineContext& c) {
   return width;
 }
 
+// Cuts a token wider than `room` (the rest of the line) where the room ends, in whole UTF-8 characters, and
+// steps `pos` back to the rest; a token that fits, or a line with no room, is left as it is.
+void cut_to_room(std::string_view& token, std::size_t& pos, ImVec2& size, float room) {
+  const std::string_view bare = token.substr(0, token.find_last_not_of(' ') + 1);  // without trailing spaces
+  if (ImGui::CalcTextSize(bare.data(), bare.data() + bare.size()).x > room && room > 0.0f) {
+    std::size_t cut = token.size();
+    while (cut > 1 && ImGui::CalcTextSize(token.data(), token.data() + cut).x > room) {
+      --cut;
+      while (cut > 1 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
+    }
+    if (cut < token.size()) {
+      pos -= token.size() - cut;
+      token = token.substr(0, cut);
+      size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
+    }
+  }
+}
+
+// What is drawn over a token just drawn at `at`: a strike-through, a link's underline, tooltip and click.
+void decorate_token(const Run& run, ImVec2 at, ImVec2 size, const InlineContext& c, bool is_link) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  if (run.style & kStrike) {
+    const float y = at.y + size.y * 0.55f;
+    draw->AddLine(ImVec2(at.x, y), ImVec2(at.x + size.x, y), ImGui::GetColorU32(ImGuiCol_Text));
+  }
+  if (is_link) {
+    const std::string& target = (*c.links)[static_cast<std::size_t>(run.link)];
+    draw->AddLine(ImVec2(at.x, at.y + size.y - 1.0f), ImVec2(at.x + size.x, at.y + size.y - 1.0f), markdown_colors::kLink);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+      ImGui::SetTooltip("%s\n(click to copy)", target.c_str());
+    }
+    if (ImGui::IsItemClicked()) {
+      ImGui::SetClipboardText(target.c_str());
+      if (c.clicked) *c.clicked = target;
+    }
+  }
+}
+
 void draw_runs(const Runs& runs, const InlineContext& c) {
   const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
   const float line_width = ImGui::GetContentRegionAvail().x;
@@ -319,20 +358,7 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
       }
       // A word wider than a whole line (a narrow table column) is cut where the line ends; the rest
       // starts the next line.
-      const float room = right - ImGui::GetCursorScreenPos().x;
-      const std::string_view bare = token.substr(0, token.find_last_not_of(' ') + 1);  // without trailing spaces
-      if (ImGui::CalcTextSize(bare.data(), bare.data() + bare.size()).x > room && room > 0.0f) {
-        std::size_t cut = token.size();
-        while (cut > 1 && ImGui::CalcTextSize(token.data(), token.data() + cut).x > room) {
-          --cut;
-          while (cut > 1 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) --cut;  // whole UTF-8 characters
-        }
-        if (cut < token.size()) {
-          pos -= token.size() - cut;
-          token = token.substr(0, cut);
-          size = ImGui::CalcTextSize(token.data(), token.data() + token.size());
-        }
-      }
+      cut_to_room(token, pos, size, right - ImGui::GetCursorScreenPos().x);
       line_start = false;
       const ImVec2 at = ImGui::GetCursorScreenPos();
       ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -344,22 +370,7 @@ void draw_runs(const Runs& runs, const InlineContext& c) {
                             3.0f);
       }
       ImGui::TextUnformatted(token.data(), token.data() + token.size());
-      if (run.style & kStrike) {
-        const float y = at.y + size.y * 0.55f;
-        draw->AddLine(ImVec2(at.x, y), ImVec2(at.x + size.x, y), ImGui::GetColorU32(ImGuiCol_Text));
-      }
-      if (is_link) {
-        const std::string& target = (*c.links)[static_cast<std::size_t>(run.link)];
-        draw->AddLine(ImVec2(at.x, at.y + size.y - 1.0f), ImVec2(at.x + size.x, at.y + size.y - 1.0f), markdown_colors::kLink);
-        if (ImGui::IsItemHovered()) {
-          ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
-          ImGui::SetTooltip("%s\n(click to copy)", target.c_str());
-        }
-        if (ImGui::IsItemClicked()) {
-          ImGui::SetClipboardText(target.c_str());
-          if (c.clicked) *c.clicked = target;
-        }
-      }
+      decorate_token(run, at, size, c, is_link);
     }
     if (is_link) ImGui::PopStyleColor();
     if (font) ImGui::PopFont();
@@ -474,22 +485,6 @@ void draw_table(const Block& b, const InlineContext& body, const UiFonts* fonts,
   ImGui::EndTable();
 }
 
-// HTML comments (`<!-- ... -->`) are invisible where Markdown is rendered; the lab texts use them to tie
-// their figures to the code (tests/docs/lab_texts.py). md4c runs without inline HTML, so they go first.
-// (A comment inside a code span goes too: the lab texts have none.)
-std::string without_html_comments(const std::string& markdown) {
-  std::string out;
-  out.reserve(markdown.size());
-  std::size_t at = 0;
-  while (true) {
-    const std::size_t open = markdown.find("<!--", at);
-    const std::size_t close = open == std::string::npos ? open : markdown.find("-->", open + 4);
-    if (close == std::string::npos) return out + markdown.substr(at);
-    out += markdown.substr(at, open - at);
-    at = close + 3;
-  }
-}
-
 }  // namespace
 
 MarkdownDocument::MarkdownDocument(const std::string& text) {
@@ -600,38 +595,6 @@ std::vector<std::string> MarkdownDocument::outline() const {
     }
   }
   return out;
-}
-
-std::pair<std::size_t, std::size_t> markdown_section_range(const std::string& markdown, const std::vector<std::string>& headings) {
-  // A heading is a line starting with '#' outside fenced code; the section runs to the next heading of
-  // the same or a higher level.
-  std::size_t pos = 0;
-  int level = 0;
-  std::size_t begin = std::string::npos;
-  bool fenced = false;
-  while (pos < markdown.size()) {
-    std::size_t eol = markdown.find('\n', pos);
-    if (eol == std::string::npos) eol = markdown.size();
-    const std::string_view line(markdown.data() + pos, eol - pos);
-    if (line.rfind("```", 0) == 0 || line.rfind("~~~", 0) == 0) fenced = !fenced;
-    if (!fenced && !line.empty() && line[0] == '#') {
-      const int l = static_cast<int>(line.find_first_not_of('#'));
-      if (begin != std::string::npos && l > 0 && l <= level) return {begin, pos};
-      if (begin == std::string::npos &&
-          std::any_of(headings.begin(), headings.end(), [&](const std::string& h) { return line.find(h) != std::string_view::npos; })) {
-        level = l;
-        begin = std::min(eol + 1, markdown.size());
-      }
-    }
-    pos = eol + 1;
-  }
-  if (begin == std::string::npos) return {std::string::npos, std::string::npos};
-  return {begin, markdown.size()};
-}
-
-std::string markdown_section(const std::string& markdown, const std::vector<std::string>& headings) {
-  const auto [begin, end] = markdown_section_range(markdown, headings);
-  return begin == std::string::npos ? std::string() : markdown.substr(begin, end - begin);
 }
 
 }  // namespace shadowlab

@@ -42,6 +42,10 @@ constexpr unsigned kCodeBackground = 0xFF3A332Bu;  // IM_COL32(43, 51, 58, 255):
 constexpr unsigned kLink = 0xFFF5B466u;            // IM_COL32(102, 180, 245, 255)
 }  // namespace markdown_colors
 
+// The text without its HTML comments (`<!-- ... -->`), which the lab texts use to tie their figures to the
+// code: MarkdownDocument draws the rest (md4c runs without inline HTML).
+std::string without_html_comments(const std::string& markdown);
+
 // The section headed "Your task" / "Your part" of a lab text (without its heading), as Markdown; empty
 // when the text has none.
 std::string markdown_section(const std::string& markdown, const std::vector<std::string>& headings);

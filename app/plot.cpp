@@ -61,6 +61,33 @@ ImU32 group_color(int group) {
 // Error spans decades (0.0001 to 0.5), so it is plotted on a log scale; zero errors sit on the floor.
 constexpr double kErrorFloor = 1e-5;
 
+// The front's labels at `anchors` (their points on screen), placed apart from each other inside p0-p1.
+void draw_front_labels(ImDrawList* draw, const std::vector<const PlotPoint*>& front, const std::vector<ImVec2>& anchors,
+                       ImVec2 p0, ImVec2 p1) {
+  std::vector<ImVec2> sizes;
+  for (const PlotPoint* p : front) sizes.push_back(ImGui::CalcTextSize(p->label.c_str()));
+  const std::vector<ImVec2> at = place_labels(anchors, sizes, p0, p1);
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    // A label moved away from its point (crowded fronts) gets a thin line back to it.
+    const ImRect r(at[i], ImVec2(at[i].x + sizes[i].x, at[i].y + sizes[i].y));
+    const ImVec2 nearest(std::clamp(anchors[i].x, r.Min.x, r.Max.x), std::clamp(anchors[i].y, r.Min.y, r.Max.y));
+    const float dx = nearest.x - anchors[i].x, dy = nearest.y - anchors[i].y;
+    if (dx * dx + dy * dy > 18.0f * 18.0f) draw->AddLine(anchors[i], nearest, IM_COL32(200, 200, 200, 160), 1.0f);
+    draw->AddText(at[i], IM_COL32(255, 255, 255, 255), front[i]->label.c_str());
+  }
+}
+
+// The legend: each group's colour and name, in the plot's top right corner.
+void draw_legend(ImDrawList* draw, const std::vector<std::string>& group_names, ImVec2 p0, ImVec2 p1) {
+  float y = p0.y + 6, widest = 0.0f;
+  for (const auto& name : group_names) widest = std::max(widest, ImGui::CalcTextSize(name.c_str()).x);
+  for (std::size_t g = 0; g < group_names.size(); ++g) {
+    draw->AddCircleFilled(ImVec2(p1.x - widest - 18, y + 7), 4.0f, group_color(static_cast<int>(g)));
+    draw->AddText(ImVec2(p1.x - widest - 8, y), IM_COL32(220, 220, 220, 255), group_names[g].c_str());
+    y += 16;
+  }
+}
+
 }  // namespace
 
 void draw_error_time_plot(const std::vector<PlotPoint>& points, const std::vector<std::string>& group_names,
@@ -123,28 +150,10 @@ void draw_error_time_plot(const std::vector<PlotPoint>& points, const std::vecto
     if (p.pareto) draw->AddCircle(c, 7.0f, IM_COL32(255, 255, 255, 255), 0, 1.5f);
   }
   // The front's labels, placed apart from each other.
-  std::vector<ImVec2> anchors, sizes;
-  for (const PlotPoint* p : front) {
-    anchors.push_back(to_screen(p->time_ms, p->error));
-    sizes.push_back(ImGui::CalcTextSize(p->label.c_str()));
-  }
-  const std::vector<ImVec2> at = place_labels(anchors, sizes, p0, p1);
-  for (std::size_t i = 0; i < front.size(); ++i) {
-    // A label moved away from its point (crowded fronts) gets a thin line back to it.
-    const ImRect r(at[i], ImVec2(at[i].x + sizes[i].x, at[i].y + sizes[i].y));
-    const ImVec2 nearest(std::clamp(anchors[i].x, r.Min.x, r.Max.x), std::clamp(anchors[i].y, r.Min.y, r.Max.y));
-    const float dx = nearest.x - anchors[i].x, dy = nearest.y - anchors[i].y;
-    if (dx * dx + dy * dy > 18.0f * 18.0f) draw->AddLine(anchors[i], nearest, IM_COL32(200, 200, 200, 160), 1.0f);
-    draw->AddText(at[i], IM_COL32(255, 255, 255, 255), front[i]->label.c_str());
-  }
-  // Legend.
-  float y = p0.y + 6, widest = 0.0f;
-  for (const auto& name : group_names) widest = std::max(widest, ImGui::CalcTextSize(name.c_str()).x);
-  for (std::size_t g = 0; g < group_names.size(); ++g) {
-    draw->AddCircleFilled(ImVec2(p1.x - widest - 18, y + 7), 4.0f, group_color(static_cast<int>(g)));
-    draw->AddText(ImVec2(p1.x - widest - 8, y), IM_COL32(220, 220, 220, 255), group_names[g].c_str());
-    y += 16;
-  }
+  std::vector<ImVec2> anchors;
+  for (const PlotPoint* p : front) anchors.push_back(to_screen(p->time_ms, p->error));
+  draw_front_labels(draw, front, anchors, p0, p1);
+  draw_legend(draw, group_names, p0, p1);
   draw->AddText(ImVec2(origin.x + 4, p0.y - 4 + (p1.y - p0.y) * 0.5f - 30), IM_COL32(220, 220, 220, 255), "error");
   ImGui::Dummy(ImVec2(width, height));
 }

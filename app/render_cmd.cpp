@@ -42,6 +42,127 @@ nlohmann::json matrix_json(const glm::mat4& m) {
   return std::vector<float>(p, p + 16);
 }
 
+// The lab --lab names, or why there is none.
+const Lab& render_lab(int number) {
+  const Lab* lab = find_lab(number);
+  if (!lab) {
+    std::string valid;
+    for (const auto& l : all_labs()) valid += (valid.empty() ? "" : ", ") + std::to_string(l.number);
+    throw std::runtime_error("--lab " + std::to_string(number) + ": no such lab; valid: " + valid);
+  }
+  return *lab;
+}
+
+// What the panel shows beside the frame (--panel).
+struct PanelInputs {
+  const Lab* lab = nullptr;
+  Impl impl = Impl::Solution;
+  ParamSet* params = nullptr;
+  const Scene* scene = nullptr;
+  const FrameStats* stats = nullptr;
+  const CheckResult* check = nullptr;
+  const std::optional<BenchPlots>* bench_plots = nullptr;
+  PenumbraPanelState* penumbra = nullptr;
+  const OrbitCamera* camera = nullptr;
+};
+
+// The window's panel, drawn by the same function over the same frame.
+std::vector<std::uint8_t> draw_panel_over(const RenderOptions& options, const PanelInputs& in, const Renderer& renderer,
+                                          const std::vector<std::uint8_t>& frame) {
+  const Lab* lab = in.lab;
+  ParamSet& params = *in.params;
+  const Scene& scene = *in.scene;
+  const FrameStats& stats = *in.stats;
+  const std::optional<BenchPlots>& bench_plots = *in.bench_plots;
+  PenumbraPanelState& penumbra = *in.penumbra;
+  std::vector<std::uint8_t> color = frame;
+  const LabText text = load_lab_text(*lab);
+  ImGuiOffscreen offscreen(options.width, options.height);
+  const UiScale scale = plan_ui_scale(options.ui_scale, 1.0f, 1.0f);
+  const UiFonts fonts = offscreen.use_fonts(data_dir() / "assets" / "fonts", scale);
+  PanelModel model;
+  model.fonts = &fonts;
+  model.ui_scale = scale.style;
+  model.gl_summary = gl_summary();
+  model.gl_fallbacks = gl_fallbacks();
+  model.lab = lab;
+  model.impl = in.impl;
+  model.params = &params;
+  model.stats = &stats;
+  model.triangles = scene.triangle_count();
+  model.scene_name = scene.name;
+  model.lab_text = &text;
+  model.check = in.check;
+  model.interactive = false;
+  BenchPanelState bench;
+  bench.open = bench_plots.has_value();
+  bench.path = options.bench_file;
+  if (bench_plots) {
+    model.bench = &bench;
+    model.bench_plots = &*bench_plots;
+  }
+  if (penumbra.open) {
+    model.penumbra = &penumbra;
+    model.penumbra_key = penumbra_view_key(params, *in.camera);
+  }
+  color = offscreen.render(
+      [&] {
+        draw_view_annotations(renderer.annotations(), options.width, options.height, 0.0f,
+                              static_cast<float>(options.width));
+        draw_lab_panel(model);
+        draw_pass_overlay(stats, nullptr);
+      },
+      &color);
+  return color;
+}
+
+// --buffers: the G-buffer's positions and normals and the visibility, as .npy files.
+void write_buffers(Renderer& renderer, const fs::path& out) {
+  const GBuffer g = renderer.read_gbuffer();
+  std::vector<float> flat(g.position.size() * 3);
+  for (std::size_t i = 0; i < g.position.size(); ++i)
+    for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.position[i][c];
+  write_npy(out / "position.npy", g.width, g.height, 3, flat);
+  for (std::size_t i = 0; i < g.normal.size(); ++i)
+    for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.normal[i][c];
+  write_npy(out / "normal.npy", g.width, g.height, 3, flat);
+  write_npy(out / "visibility.npy", g.width, g.height, 1, renderer.read_visibility());
+}
+
+// render.json: what was drawn, with which parameters, matrices and GL.
+nlohmann::json render_json(const RenderOptions& options, const Lab& lab, const Scene& scene, const ParamSet& params,
+                           const Renderer& renderer, const FrameStats& stats, const std::string& context_platform) {
+  const GlInfo gl = query_gl_info();
+  nlohmann::json j = {
+      {"lab", lab.number},
+      {"slug", lab.slug},
+      {"impl", options.impl},
+      {"scene", scene.name},
+      {"triangles", scene.triangle_count()},
+      {"width", options.width},
+      {"height", options.height},
+      {"parameters", params.to_json()},
+      {"camera", {{"view", matrix_json(renderer.camera_view())}, {"projection", matrix_json(renderer.camera_projection())}}},
+      {"light",
+       {{"to_light", {renderer.to_light().x, renderer.to_light().y, renderer.to_light().z}},
+        {"view", matrix_json(renderer.light_view().view)},
+        {"projection", matrix_json(renderer.light_view().projection)}}},
+      {"stats", stats.to_json()},
+      {"gl",
+       {{"renderer", gl.renderer},
+        {"version", gl.version},
+        {"major", gl.major},
+        {"minor", gl.minor},
+        {"context", context_platform},
+        {"fallbacks", gl_fallbacks()}}},
+      {"matrix_layout", "column-major"},
+      // The camera and light matrices take positions relative to this world point (scene.local_origin;
+      // the world's origin when it is off); position.npy is in the scene's own frame.
+      {"local_origin", {renderer.placement().origin().x, renderer.placement().origin().y, renderer.placement().origin().z}},
+  };
+  return j;
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& options) {
@@ -49,12 +170,7 @@ int run_render(const RenderOptions& options) {
   // after that is the tool's own failure (exit 3).
   bool usage_checked = false;
   try {
-    const Lab* lab = find_lab(options.lab);
-    if (!lab) {
-      std::string valid;
-      for (const auto& l : all_labs()) valid += (valid.empty() ? "" : ", ") + std::to_string(l.number);
-      throw std::runtime_error("--lab " + std::to_string(options.lab) + ": no such lab; valid: " + valid);
-    }
+    const Lab* lab = &render_lab(options.lab);
     ParamSet params = lab_params(*lab);
     const ShadowTest* shadow_test = nullptr;
     if (!options.shadow_test.empty()) {
@@ -109,88 +225,16 @@ int run_render(const RenderOptions& options) {
       const fs::path out(options.out_dir);
       std::vector<std::uint8_t> color = renderer.read_color();
       if (options.panel) {
-        // The window's panel, drawn by the same function over the same frame.
-        const LabText text = load_lab_text(*lab);
-        ImGuiOffscreen offscreen(options.width, options.height);
-        const UiScale scale = plan_ui_scale(options.ui_scale, 1.0f, 1.0f);
-        const UiFonts fonts = offscreen.use_fonts(data_dir() / "assets" / "fonts", scale);
-        PanelModel model;
-        model.fonts = &fonts;
-        model.ui_scale = scale.style;
-        model.gl_summary = gl_summary();
-        model.gl_fallbacks = gl_fallbacks();
-        model.lab = lab;
-        model.impl = impl;
-        model.params = &params;
-        model.stats = &stats;
-        model.triangles = scene.triangle_count();
-        model.scene_name = scene.name;
-        model.lab_text = &text;
-        model.check = check ? &*check : nullptr;
-        model.interactive = false;
-        BenchPanelState bench;
-        bench.open = bench_plots.has_value();
-        bench.path = options.bench_file;
-        if (bench_plots) {
-          model.bench = &bench;
-          model.bench_plots = &*bench_plots;
-        }
-        if (penumbra.open) {
-          model.penumbra = &penumbra;
-          model.penumbra_key = penumbra_view_key(params, camera);
-        }
-        color = offscreen.render(
-            [&] {
-              draw_view_annotations(renderer.annotations(), options.width, options.height, 0.0f,
-                                    static_cast<float>(options.width));
-              draw_lab_panel(model);
-              draw_pass_overlay(stats, nullptr);
-            },
-            &color);
+        const PanelInputs in{lab, impl, &params, &scene, &stats, check ? &*check : nullptr, &bench_plots, &penumbra,
+                             &camera};
+        color = draw_panel_over(options, in, renderer, color);
       }
       write_png(out / "final.png", options.width, options.height, color);
       int map_size = 0;
       const auto map_image = renderer.shadow_map_image(&map_size);
       write_png(out / "shadow_map.png", map_size, map_size, map_image);
-      if (options.buffers) {
-        const GBuffer g = renderer.read_gbuffer();
-        std::vector<float> flat(g.position.size() * 3);
-        for (std::size_t i = 0; i < g.position.size(); ++i)
-          for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.position[i][c];
-        write_npy(out / "position.npy", g.width, g.height, 3, flat);
-        for (std::size_t i = 0; i < g.normal.size(); ++i)
-          for (int c = 0; c < 3; ++c) flat[3 * i + static_cast<std::size_t>(c)] = g.normal[i][c];
-        write_npy(out / "normal.npy", g.width, g.height, 3, flat);
-        write_npy(out / "visibility.npy", g.width, g.height, 1, renderer.read_visibility());
-      }
-      const GlInfo gl = query_gl_info();
-      nlohmann::json j = {
-          {"lab", lab->number},
-          {"slug", lab->slug},
-          {"impl", options.impl},
-          {"scene", scene.name},
-          {"triangles", scene.triangle_count()},
-          {"width", options.width},
-          {"height", options.height},
-          {"parameters", params.to_json()},
-          {"camera", {{"view", matrix_json(renderer.camera_view())}, {"projection", matrix_json(renderer.camera_projection())}}},
-          {"light",
-           {{"to_light", {renderer.to_light().x, renderer.to_light().y, renderer.to_light().z}},
-            {"view", matrix_json(renderer.light_view().view)},
-            {"projection", matrix_json(renderer.light_view().projection)}}},
-          {"stats", stats.to_json()},
-          {"gl",
-           {{"renderer", gl.renderer},
-            {"version", gl.version},
-            {"major", gl.major},
-            {"minor", gl.minor},
-            {"context", context->platform()},
-            {"fallbacks", gl_fallbacks()}}},
-          {"matrix_layout", "column-major"},
-          // The camera and light matrices take positions relative to this world point (scene.local_origin;
-          // the world's origin when it is off); position.npy is in the scene's own frame.
-          {"local_origin", {renderer.placement().origin().x, renderer.placement().origin().y, renderer.placement().origin().z}},
-      };
+      if (options.buffers) write_buffers(renderer, out);
+      const nlohmann::json j = render_json(options, *lab, scene, params, renderer, stats, context->platform());
       write_text_atomic(out / "render.json", j.dump(2) + "\n");
       std::printf("wrote %s/final.png, shadow_map.png, render.json%s (%zu triangles, %.1f ms CPU)\n",
                   options.out_dir.c_str(), options.buffers ? ", position.npy, normal.npy, visibility.npy" : "",

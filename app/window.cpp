@@ -1,6 +1,8 @@
 // The window: one loop in ImGui's order (poll, new frame, input, panel, render, ImGui, swap). What the
 // panel shows is app/panel_lab.cpp, the split view and magnifier app/split_view.cpp, the mouse camera
 // app/camera_input.cpp, and scripted input for tests app/input_script.cpp; this file wires them up.
+// size: not split yet: issue 37's typed parameter handles and the lecture-hall presets change this file
+// (its loop, keys and start) in parallel; after they land, CheckWorker, the screenshots and FrameCost move out.
 #include "app/window.h"
 
 #include <algorithm>
@@ -655,6 +657,7 @@ void drop_callback(GLFWwindow* window, int count, const char** paths) {
   for (int i = 0; app && i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
 
+// size: 92 lines, not split yet for the same reason as the file (see its head).
 void run_loop(App& app, const WindowOptions& options, InputScript& script) {
   int frame = 0;
   FrameCost cost;
@@ -750,6 +753,7 @@ void run_loop(App& app, const WindowOptions& options, InputScript& script) {
 
 }  // namespace
 
+// size: 126 lines, not split yet for the same reason as the file (see its head).
 int run_window(const WindowOptions& options) {
   const Lab* lab = find_lab(options.lab);
   if (!lab) {

@@ -57,13 +57,8 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-void check_moment_blur(CheckContext& ctx, CheckResult& result) {
-  ParamSet params = ctx.params();
-  params.set("view.debug_quad", 0.0);
-  const Features hooks = ctx.hooks();
-  Renderer& r = ctx.renderer;
-
-  // 1. The lit result at the lab's settings, and the oracle's edge error by radius (reported).
+// 1. The lit result at the lab's settings, and the oracle's edge error by radius (reported).
+nlohmann::json oracle_by_radius(CheckContext& ctx, const ParamSet& params, const Features& hooks) {
   nlohmann::json by_radius = nlohmann::json::array();
   const auto out_dir = ctx.out_dir;
   for (int radius : {0, 1, 2, 4, 8, 16}) {
@@ -81,7 +76,48 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
                          {"bleeding_rate", m.metrics.bleeding_rate}});
   }
   ctx.out_dir = out_dir;
-  result.metrics["oracle_by_radius"] = by_radius;
+  return by_radius;
+}
+
+// The radii with sigma = r / 2, then held-out (radius, sigma) pairs the lab's text does not fix, so
+// that a kernel which ignores one of the two sliders cannot pass.
+std::vector<std::pair<int, double>> blur_cases(CheckContext& ctx, CheckResult& result) {
+  std::vector<std::pair<int, double>> cases;
+  for (int radius : kRadii) cases.push_back({radius, check_sigma(radius)});
+  std::mt19937 rng = ctx.held_out_rng();
+  for (int i = 0; i < kHeldOutCases; ++i) {
+    const int radius = std::uniform_int_distribution<int>(1, kMaxHeldOutRadius)(rng);
+    const double sigma = std::min(kMaxSigma, radius * std::uniform_real_distribution<double>(kHeldOutSigmaPerRadius[0],
+                                                                                              kHeldOutSigmaPerRadius[1])(rng));
+    cases.push_back({radius, sigma});
+    result.conditions.push_back({{"tag", "held_out_" + std::to_string(i + 1)}, {"blur_radius", radius}, {"blur_sigma", sigma}});
+  }
+  return cases;
+}
+
+// The largest |gpu - cpu| over the texels (1e30 once a texel is not finite), counting those.
+double max_texel_error(const std::vector<float>& gpu, const std::vector<double>& cpu, std::size_t* non_finite_out) {
+  double max_error = 0.0;
+  std::size_t non_finite = 0;
+  for (std::size_t i = 0; i < gpu.size(); ++i) {
+    if (!std::isfinite(gpu[i])) {
+      ++non_finite;
+      max_error = 1e30;
+      continue;
+    }
+    max_error = std::max(max_error, std::abs(static_cast<double>(gpu[i]) - cpu[i]));
+  }
+  *non_finite_out = non_finite;
+  return max_error;
+}
+
+void check_moment_blur(CheckContext& ctx, CheckResult& result) {
+  ParamSet params = ctx.params();
+  params.set("view.debug_quad", 0.0);
+  const Features hooks = ctx.hooks();
+  Renderer& r = ctx.renderer;
+
+  result.metrics["oracle_by_radius"] = oracle_by_radius(ctx, params, hooks);
 
   // 2. Radius 0: no blur pass runs, no blur target is allocated (the renderer's counters and GL's count).
   FrameRequest request;
@@ -104,18 +140,7 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
   double worst = 0.0;
   long blur_passes_run = 0;
   int extra_textures = 0;
-  // The radii with sigma = r / 2, then held-out (radius, sigma) pairs the lab's text does not fix, so
-  // that a kernel which ignores one of the two sliders cannot pass.
-  std::vector<std::pair<int, double>> cases;
-  for (int radius : kRadii) cases.push_back({radius, check_sigma(radius)});
-  std::mt19937 rng = ctx.held_out_rng();
-  for (int i = 0; i < kHeldOutCases; ++i) {
-    const int radius = std::uniform_int_distribution<int>(1, kMaxHeldOutRadius)(rng);
-    const double sigma = std::min(kMaxSigma, radius * std::uniform_real_distribution<double>(kHeldOutSigmaPerRadius[0],
-                                                                                              kHeldOutSigmaPerRadius[1])(rng));
-    cases.push_back({radius, sigma});
-    result.conditions.push_back({{"tag", "held_out_" + std::to_string(i + 1)}, {"blur_radius", radius}, {"blur_sigma", sigma}});
-  }
+  const std::vector<std::pair<int, double>> cases = blur_cases(ctx, result);
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const auto [radius, sigma] = cases[k];
     const std::string tag = k < std::size(kRadii) ? "radius" + std::to_string(radius)
@@ -136,16 +161,8 @@ void check_moment_blur(CheckContext& ctx, CheckResult& result) {
     int size = 0;
     const std::vector<float> gpu = r.read_moments(&size);
     const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, sigma);
-    double max_error = 0.0;
     std::size_t non_finite = 0;
-    for (std::size_t i = 0; i < gpu.size(); ++i) {
-      if (!std::isfinite(gpu[i])) {
-        ++non_finite;
-        max_error = 1e30;
-        continue;
-      }
-      max_error = std::max(max_error, std::abs(static_cast<double>(gpu[i]) - cpu[i]));
-    }
+    const double max_error = max_texel_error(gpu, cpu, &non_finite);
     worst = std::max(worst, max_error);
     radii.push_back({{"case", tag},
                      {"radius", radius},

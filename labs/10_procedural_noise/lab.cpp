@@ -190,41 +190,46 @@ GlTexture upload_gradients() {
   return t;
 }
 
-void check_noise(CheckContext& ctx, CheckResult& result) {
-  const Features hooks = ctx.hooks();
-  ctx.use(hooks);  // the wood floor's programs build with the student's file
+constexpr int kLatticePoints = 1024;
 
-  // The cases: (p, which) with which 0 = gradient_noise, 1 = noise_octaves.
+// The cases the probe evaluates: in[i] = (p, which) with which 0 = gradient_noise, 1 = noise_octaves.
+struct NoiseCases {
   std::vector<glm::vec4> in;
+  std::vector<glm::dvec2> grid, random;  // the grid over one period; the random points off it
+  // Where each part starts in `in`: the grid's noise at p, 2p, 4p and its octave sum; the random points'
+  // noise and octave sum; the lattice points; the border points; the grid again, reversed.
+  std::size_t g0 = 0, r0 = 0, l0 = 0, b0 = 0, d0 = 0;
+};
+
+NoiseCases noise_cases(std::uint32_t seed) {
+  NoiseCases c;
+  std::vector<glm::vec4>& in = c.in;
   const auto add = [&in](glm::dvec2 p, int which) {
     in.push_back({static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(which), 0.0f});
   };
   // 1. The grid over one period: noise at p, 2p, 4p (the octaves fitted from the student's own noise)
   //    and the octave sum at p.
-  std::vector<glm::dvec2> grid;
   for (int y = 0; y < kGrid; ++y)
-    for (int x = 0; x < kGrid; ++x) grid.push_back(glm::dvec2(x, y) / static_cast<double>(kGridPerUnit));
-  const std::size_t g0 = in.size();
+    for (int x = 0; x < kGrid; ++x) c.grid.push_back(glm::dvec2(x, y) / static_cast<double>(kGridPerUnit));
+  c.g0 = in.size();
   for (int k = 0; k < 3; ++k)
-    for (const auto& p : grid) add(p * static_cast<double>(1 << k), 0);
-  for (const auto& p : grid) add(p, 1);
+    for (const auto& p : c.grid) add(p * static_cast<double>(1 << k), 0);
+  for (const auto& p : c.grid) add(p, 1);
   // 2. Random points off the grid, both functions.
-  std::mt19937 rng(ctx.seed * 7919u + 10u);
+  std::mt19937 rng(seed * 7919u + 10u);
   std::uniform_real_distribution<double> reach(-kRandomReach, kRandomReach);
-  std::vector<glm::dvec2> random;
-  for (int i = 0; i < kRandomPoints; ++i) random.push_back({reach(rng), reach(rng)});
-  const std::size_t r0 = in.size();
-  for (const auto& p : random) add(p, 0);
-  for (const auto& p : random) add(p, 1);
+  for (int i = 0; i < kRandomPoints; ++i) c.random.push_back({reach(rng), reach(rng)});
+  c.r0 = in.size();
+  for (const auto& p : c.random) add(p, 0);
+  for (const auto& p : c.random) add(p, 1);
   // 3. Lattice points.
   std::uniform_int_distribution<int> lattice(-40, 40);
-  const std::size_t l0 = in.size();
-  constexpr int kLatticePoints = 1024;
+  c.l0 = in.size();
   for (int i = 0; i < kLatticePoints; ++i) add(glm::dvec2(lattice(rng), lattice(rng)), 0);
   // 4. Texel borders, crossing x = k and y = k: four points each.
   std::uniform_real_distribution<double> along(-20.0, 20.0);
   std::uniform_int_distribution<int> border(-20, 20);
-  const std::size_t b0 = in.size();
+  c.b0 = in.size();
   for (int axis = 0; axis < 2; ++axis)
     for (int i = 0; i < kBorderPoints; ++i) {
       const double k = border(rng), t = along(rng);
@@ -234,9 +239,13 @@ void check_noise(CheckContext& ctx, CheckResult& result) {
       }
     }
   // 5. Determinism: the grid's noise again, in reverse order (another place in the target).
-  const std::size_t d0 = in.size();
-  for (std::size_t i = grid.size(); i-- > 0;) add(grid[i], 0);
+  c.d0 = in.size();
+  for (std::size_t i = c.grid.size(); i-- > 0;) add(c.grid[i], 0);
+  return c;
+}
 
+// The student's functions on the cases, with the gradient texture on unit 5.
+std::vector<float> probe_noise(const Features& hooks, const std::vector<glm::vec4>& in) {
   GlTexture tex = upload_gradients();
   ProbeRequest request;
   request.fragment = "shaders/probe/noise.frag";
@@ -247,66 +256,89 @@ void check_noise(CheckContext& ctx, CheckResult& result) {
     set_uniform(program, "u_noise_gradients", 5);
     glActiveTexture(GL_TEXTURE0);
   });
-  const std::vector<float> v = run_probe(hooks, request).at(0);
+  std::vector<float> v = run_probe(hooks, request).at(0);
   glActiveTexture(GL_TEXTURE5);
   glBindTexture(GL_TEXTURE_2D, 0);
   glActiveTexture(GL_TEXTURE0);
-  const auto value = [&v](std::size_t i) { return static_cast<double>(v[i]); };
-  const std::size_t n = grid.size();
-  nlohmann::json& metrics = result.metrics;
+  return v;
+}
 
-  // Determinism.
+// What the check measures of the probe's values.
+struct NoiseFigures {
   double nondeterminism = 0.0;
+  double err_noise[2] = {0, 0}, err_oct_ref[2] = {0, 0};  // against the reference, cubic and quintic fade
+  bool quintic = false;
+  double max_abs = 0.0, max_abs_oct = 0.0, mean = 0.0, lattice_max = 0.0, seam = 0.0, crease = 0.0;
+  double tiling = 0.0, spectrum = 0.0, spectrum_oct = 0.0;
+  std::vector<double> bands_student, bands_ref, bands_student_oct, bands_ref_oct;
+  glm::dvec3 weights{0.0};
+  double weight_error = 0.0, err_oct = 0.0;
+};
+
+// Determinism, the error against the reference (each fade), range, mean, lattice, seams and creases.
+void measure_points(const NoiseCases& c, const std::vector<float>& v, NoiseFigures& f) {
+  const auto value = [&v](std::size_t i) { return static_cast<double>(v[i]); };
+  const std::size_t n = c.grid.size();
+  const std::size_t g0 = c.g0, r0 = c.r0, l0 = c.l0, b0 = c.b0, d0 = c.d0;
+  const std::vector<glm::dvec2>& grid = c.grid;
+  const std::vector<glm::dvec2>& random = c.random;
+  // Determinism.
   for (std::size_t i = 0; i < n; ++i)
-    nondeterminism = std::max(nondeterminism, std::abs(value(g0 + i) - value(d0 + n - 1 - i)));
+    f.nondeterminism = std::max(f.nondeterminism, std::abs(value(g0 + i) - value(d0 + n - 1 - i)));
   // Against the reference, each fade; the better fits.
-  double err_noise[2] = {0, 0}, err_oct_ref[2] = {0, 0};
   for (int q = 0; q < 2; ++q) {
     for (std::size_t i = 0; i < n; ++i) {
-      err_noise[q] = std::max(err_noise[q], std::abs(value(g0 + i) - reference_noise(grid[i], q == 1)));
-      err_oct_ref[q] = std::max(err_oct_ref[q], std::abs(value(g0 + 3 * n + i) - reference_octaves(grid[i], q == 1)));
+      f.err_noise[q] = std::max(f.err_noise[q], std::abs(value(g0 + i) - reference_noise(grid[i], q == 1)));
+      f.err_oct_ref[q] = std::max(f.err_oct_ref[q], std::abs(value(g0 + 3 * n + i) - reference_octaves(grid[i], q == 1)));
     }
     for (std::size_t i = 0; i < random.size(); ++i) {
-      err_noise[q] = std::max(err_noise[q], std::abs(value(r0 + i) - reference_noise(random[i], q == 1)));
-      err_oct_ref[q] =
-          std::max(err_oct_ref[q], std::abs(value(r0 + random.size() + i) - reference_octaves(random[i], q == 1)));
+      f.err_noise[q] = std::max(f.err_noise[q], std::abs(value(r0 + i) - reference_noise(random[i], q == 1)));
+      f.err_oct_ref[q] =
+          std::max(f.err_oct_ref[q], std::abs(value(r0 + random.size() + i) - reference_octaves(random[i], q == 1)));
     }
   }
-  const bool quintic = err_noise[1] < err_noise[0];
+  f.quintic = f.err_noise[1] < f.err_noise[0];
   // Range and mean of the noise (grid and random points), and of the octave sum.
-  double max_abs = 0.0, max_abs_oct = 0.0, mean = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    max_abs = std::max(max_abs, std::abs(value(g0 + i)));
-    max_abs_oct = std::max(max_abs_oct, std::abs(value(g0 + 3 * n + i)));
-    mean += value(g0 + i);
+    f.max_abs = std::max(f.max_abs, std::abs(value(g0 + i)));
+    f.max_abs_oct = std::max(f.max_abs_oct, std::abs(value(g0 + 3 * n + i)));
+    f.mean += value(g0 + i);
   }
   for (std::size_t i = 0; i < random.size(); ++i) {
-    max_abs = std::max(max_abs, std::abs(value(r0 + i)));
-    max_abs_oct = std::max(max_abs_oct, std::abs(value(r0 + random.size() + i)));
+    f.max_abs = std::max(f.max_abs, std::abs(value(r0 + i)));
+    f.max_abs_oct = std::max(f.max_abs_oct, std::abs(value(r0 + random.size() + i)));
   }
-  mean /= static_cast<double>(n);
-  double lattice_max = 0.0;
-  for (int i = 0; i < kLatticePoints; ++i) lattice_max = std::max(lattice_max, std::abs(value(l0 + static_cast<std::size_t>(i))));
+  f.mean /= static_cast<double>(n);
+  for (int i = 0; i < kLatticePoints; ++i) f.lattice_max = std::max(f.lattice_max, std::abs(value(l0 + static_cast<std::size_t>(i))));
   // Seams (value jumps) and creases (slope jumps) across texel borders.
-  double seam = 0.0, crease = 0.0;
   for (std::size_t i = 0; i < 2 * static_cast<std::size_t>(kBorderPoints); ++i) {
     const double a = value(b0 + 4 * i), b = value(b0 + 4 * i + 1), c = value(b0 + 4 * i + 2), d = value(b0 + 4 * i + 3);
-    seam = std::max(seam, std::abs(c - b));
-    crease = std::max(crease, std::abs((d - c) - (b - a)) / kBorderStep);
+    f.seam = std::max(f.seam, std::abs(c - b));
+    f.crease = std::max(f.crease, std::abs((d - c) - (b - a)) / kBorderStep);
   }
+}
+
+// Tiling and spectrum on the grid; the octave weights fitted on the student's own noise.
+void measure_grid(const NoiseCases& c, const std::vector<float>& v, NoiseFigures& f) {
+  const auto value = [&v](std::size_t i) { return static_cast<double>(v[i]); };
+  const std::size_t n = c.grid.size();
+  const std::size_t g0 = c.g0;
+  const std::vector<glm::dvec2>& grid = c.grid;
   // Tiling and spectrum on the grid.
   std::vector<double> student_noise(n), student_oct(n), ref_noise(n), ref_oct(n);
   for (std::size_t i = 0; i < n; ++i) {
     student_noise[i] = value(g0 + i);
     student_oct[i] = value(g0 + 3 * n + i);
-    ref_noise[i] = reference_noise(grid[i], quintic);
-    ref_oct[i] = reference_octaves(grid[i], quintic);
+    ref_noise[i] = reference_noise(grid[i], f.quintic);
+    ref_oct[i] = reference_octaves(grid[i], f.quintic);
   }
-  const double tiling = tiling_correlation(student_noise);
-  const auto bands_student = band_energy(student_noise), bands_ref = band_energy(ref_noise);
-  const auto bands_student_oct = band_energy(student_oct), bands_ref_oct = band_energy(ref_oct);
-  const double spectrum = band_mismatch(bands_student, bands_ref);
-  const double spectrum_oct = band_mismatch(bands_student_oct, bands_ref_oct);
+  f.tiling = tiling_correlation(student_noise);
+  f.bands_student = band_energy(student_noise);
+  f.bands_ref = band_energy(ref_noise);
+  f.bands_student_oct = band_energy(student_oct);
+  f.bands_ref_oct = band_energy(ref_oct);
+  f.spectrum = band_mismatch(f.bands_student, f.bands_ref);
+  f.spectrum_oct = band_mismatch(f.bands_student_oct, f.bands_ref_oct);
   // The octave weights: least squares of the sum on the student's own noise at p, 2p, 4p.
   double ata[3][3] = {}, atb[3] = {};
   for (std::size_t i = 0; i < n; ++i) {
@@ -319,73 +351,88 @@ void check_noise(CheckContext& ctx, CheckResult& result) {
   glm::dmat3 m;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) m[c][r] = ata[r][c];
-  glm::dvec3 weights(0.0);
-  if (std::abs(glm::determinant(m)) > 1e-12) weights = glm::inverse(m) * glm::dvec3(atb[0], atb[1], atb[2]);
-  double weight_error = 0.0;
-  for (int k = 0; k < 3; ++k) weight_error = std::max(weight_error, std::abs(weights[k] - kOctaveWeights[k]));
-  if (!std::isfinite(weight_error)) weight_error = 1e30;
+  if (std::abs(glm::determinant(m)) > 1e-12) f.weights = glm::inverse(m) * glm::dvec3(atb[0], atb[1], atb[2]);
+  for (int k = 0; k < 3; ++k) f.weight_error = std::max(f.weight_error, std::abs(f.weights[k] - kOctaveWeights[k]));
+  if (!std::isfinite(f.weight_error)) f.weight_error = 1e30;
   // The octave sum against the student's own noise at p, 2p, 4p (each part graded on its own).
-  double err_oct = 0.0;
   for (std::size_t i = 0; i < n; ++i)
-    err_oct = std::max(err_oct, std::abs(value(g0 + 3 * n + i) -
-                                         (value(g0 + i) + 0.5 * value(g0 + n + i) + 0.25 * value(g0 + 2 * n + i))));
+    f.err_oct = std::max(f.err_oct, std::abs(value(g0 + 3 * n + i) -
+                                             (value(g0 + i) + 0.5 * value(g0 + n + i) + 0.25 * value(g0 + 2 * n + i))));
+}
 
+// The conditions and metrics the check records, and its two lines of figures.
+void report_noise(std::uint32_t seed, std::size_t cases, const NoiseFigures& f, CheckResult& result) {
+  nlohmann::json& metrics = result.metrics;
   // The held-out part: the off-grid, lattice and border points are drawn from the seed.
-  result.conditions.push_back({{"tag", "points"}, {"seed", ctx.seed}, {"off_grid", kRandomPoints},
+  result.conditions.push_back({{"tag", "points"}, {"seed", seed}, {"off_grid", kRandomPoints},
                                {"reach", kRandomReach}, {"lattice", kLatticePoints}, {"borders", 2 * kBorderPoints}});
   metrics["gradients"] = {{"size", kPeriod}, {"seed", kGradientSeed}, {"format", "RGBA8, g * 0.5 + 0.5"}};
-  metrics["cases"] = in.size();
-  metrics["fade"] = quintic ? "quintic" : "cubic";
-  metrics["reference_error"] = {{"cubic", err_noise[0]}, {"quintic", err_noise[1]}};
-  metrics["octaves_reference_error"] = {{"cubic", err_oct_ref[0]}, {"quintic", err_oct_ref[1]}};
-  metrics["octave_weights"] = {weights[0], weights[1], weights[2]};
+  metrics["cases"] = cases;
+  metrics["fade"] = f.quintic ? "quintic" : "cubic";
+  metrics["reference_error"] = {{"cubic", f.err_noise[0]}, {"quintic", f.err_noise[1]}};
+  metrics["octaves_reference_error"] = {{"cubic", f.err_oct_ref[0]}, {"quintic", f.err_oct_ref[1]}};
+  metrics["octave_weights"] = {f.weights[0], f.weights[1], f.weights[2]};
   metrics["band_edges"] = kBandEdges;
-  metrics["band_energy"] = {{"noise", bands_student}, {"noise_reference", bands_ref}, {"octaves", bands_student_oct},
-                            {"octaves_reference", bands_ref_oct}};
+  metrics["band_energy"] = {{"noise", f.bands_student}, {"noise_reference", f.bands_ref}, {"octaves", f.bands_student_oct},
+                            {"octaves_reference", f.bands_ref_oct}};
   std::printf("    noise: fade %s, error %.2e, |max| %.3f, mean %.4f, lattice %.1e, seam %.4f, crease %.3f, tiling %.3f, "
               "spectrum %.3f\n",
-              quintic ? "quintic" : "cubic", std::min(err_noise[0], err_noise[1]), max_abs, mean, lattice_max, seam, crease,
-              tiling, spectrum);
-  std::printf("    octaves: weights %.4f %.4f %.4f, error %.2e, |max| %.3f, spectrum %.3f\n", weights[0], weights[1],
-              weights[2], err_oct, max_abs_oct, spectrum_oct);
+              f.quintic ? "quintic" : "cubic", std::min(f.err_noise[0], f.err_noise[1]), f.max_abs, f.mean, f.lattice_max, f.seam, f.crease,
+              f.tiling, f.spectrum);
+  std::printf("    octaves: weights %.4f %.4f %.4f, error %.2e, |max| %.3f, spectrum %.3f\n", f.weights[0], f.weights[1],
+              f.weights[2], f.err_oct, f.max_abs_oct, f.spectrum_oct);
+}
 
+void noise_criteria(const NoiseFigures& f, CheckResult& result) {
   const std::string why = "probe: the student's function on chosen points against a CPU reference of the same definition";
   auto& c = result.criteria;
-  c.push_back({"noise.deterministic", nondeterminism, Criterion::kAtMost, kMaxNondeterminism,
+  c.push_back({"noise.deterministic", f.nondeterminism, Criterion::kAtMost, kMaxNondeterminism,
                "the same points drawn twice at other places of the target give the same values",
                "the noise must depend on p only (no gl_FragCoord, time or counters)."});
-  c.push_back({"noise.matches_reference", std::min(err_noise[0], err_noise[1]), Criterion::kAtMost, kMaxReferenceError, why,
+  c.push_back({"noise.matches_reference", std::min(f.err_noise[0], f.err_noise[1]), Criterion::kAtMost, kMaxReferenceError, why,
                "compute the gradient noise as the text defines it: the four corners' gradients from the texture, "
                "dotted with the vectors from the corners to p, blended with a fade."});
-  c.push_back({"noise.range", max_abs, Criterion::kAtMost, kMaxAbsValue, "gradient noise stays in [-1, 1]",
+  c.push_back({"noise.range", f.max_abs, Criterion::kAtMost, kMaxAbsValue, "gradient noise stays in [-1, 1]",
                "decode the gradients to [-1, 1] (times 2, minus 1) and return the blend itself, not a remapped value."});
-  c.push_back({"noise.mean", std::abs(mean), Criterion::kAtMost, kMaxMean,
+  c.push_back({"noise.mean", std::abs(f.mean), Criterion::kAtMost, kMaxMean,
                "over one whole period gradient noise averages to exactly 0 (each corner's ramp cancels over its cells)",
                "noise must average to zero: return the signed blend, not 0.5 + 0.5 n."});
-  c.push_back({"noise.zero_at_lattice", lattice_max, Criterion::kAtMost, kMaxLatticeValue,
+  c.push_back({"noise.zero_at_lattice", f.lattice_max, Criterion::kAtMost, kMaxLatticeValue,
                "gradient noise is 0 at every lattice point (the vector from the corner is 0 there)",
                "this is value noise: blend dot(gradient, p - corner), not a random value per corner."});
-  c.push_back({"noise.seam", seam, Criterion::kAtMost, kMaxSeam,
+  c.push_back({"noise.seam", f.seam, Criterion::kAtMost, kMaxSeam,
                "the jump between values 2/256 apart across a texel border (the solution's largest: 0.0078)",
                "each corner's vector is p minus that corner (f, f - (1,0), f - (0,1), f - (1,1))."});
-  c.push_back({"noise.crease", crease, Criterion::kAtMost, kMaxCrease,
+  c.push_back({"noise.crease", f.crease, Criterion::kAtMost, kMaxCrease,
                "the change of slope across a texel border; the fade has zero slope at 0 and 1",
                "blend with a fade (3t^2 - 2t^3 or 6t^5 - 15t^4 + 10t^3), not with t itself: linear blending "
                "leaves creases along the texel borders."});
-  c.push_back({"noise.tiles_early", tiling, Criterion::kAtMost, kMaxTilingCorrelation,
+  c.push_back({"noise.tiles_early", f.tiling, Criterion::kAtMost, kMaxTilingCorrelation,
                "correlation of the noise with itself shifted by 1-15 units; it repeats only every 16",
                "look up corner i's gradient at texel i of the whole texture, (i + 0.5) / N with N its size."});
-  c.push_back({"noise.spectrum", spectrum, Criterion::kAtMost, kMaxBandLog2Ratio,
+  c.push_back({"noise.spectrum", f.spectrum, Criterion::kAtMost, kMaxBandLog2Ratio,
                "energy per octave band (0-0.5-1-2-4-8 cycles per unit) within 0.71-1.41 x the reference's"});
-  c.push_back({"octaves.weights", weight_error, Criterion::kAtMost, kMaxWeightError,
+  c.push_back({"octaves.weights", f.weight_error, Criterion::kAtMost, kMaxWeightError,
                "the sum's weights fitted on the noise at p, 2p and 4p, against 1, 0.5, 0.25",
                "sum three octaves, noise(p) + 0.5 noise(2p) + 0.25 noise(4p): each doubles the frequency and "
                "halves the amplitude."});
-  c.push_back({"octaves.matches_reference", err_oct, Criterion::kAtMost, kMaxReferenceError,
+  c.push_back({"octaves.matches_reference", f.err_oct, Criterion::kAtMost, kMaxReferenceError,
                "the sum against noise(p) + 0.5 noise(2p) + 0.25 noise(4p) of your own noise"});
-  c.push_back({"octaves.range", max_abs_oct, Criterion::kAtMost, kMaxOctaveAbsValue, "at most 1 + 0.5 + 0.25"});
-  c.push_back({"octaves.spectrum", spectrum_oct, Criterion::kAtMost, kMaxBandLog2Ratio,
+  c.push_back({"octaves.range", f.max_abs_oct, Criterion::kAtMost, kMaxOctaveAbsValue, "at most 1 + 0.5 + 0.25"});
+  c.push_back({"octaves.spectrum", f.spectrum_oct, Criterion::kAtMost, kMaxBandLog2Ratio,
                "energy per octave band within 0.71-1.41 x the reference octave sum's"});
+}
+
+void check_noise(CheckContext& ctx, CheckResult& result) {
+  const Features hooks = ctx.hooks();
+  ctx.use(hooks);  // the wood floor's programs build with the student's file
+  const NoiseCases cases = noise_cases(ctx.seed);
+  const std::vector<float> v = probe_noise(hooks, cases.in);
+  NoiseFigures f;
+  measure_points(cases, v, f);
+  measure_grid(cases, v, f);
+  report_noise(ctx.seed, cases.in.size(), f, result);
+  noise_criteria(f, result);
 }
 
 }  // namespace

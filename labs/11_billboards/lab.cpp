@@ -86,14 +86,75 @@ double angle_deg(glm::dvec3 a, glm::dvec3 b, bool either_sign) {
   return glm::degrees(std::acos(std::clamp(c, -1.0, 1.0)));
 }
 
+// A quad the probe turns: a tree's base and the direction to the light.
+struct QuadCase {
+  glm::vec3 base, to_light;
+};
+
+// Pass 0: eye 0, the first size; pass 1: eye 1, the same size; pass 2: eye 0, the second size.
+constexpr int kPassEye[3] = {0, 1, 0}, kPassSize[3] = {0, 0, 1};
+
+struct QuadErrors {
+  double orientation = 0.0, size_error = 0.0, camera_change = 0.0;
+};
+
+// The quads' orientation, size and change with the eye, over the three passes.
+QuadErrors quad_errors(const std::vector<QuadCase>& quads, const std::vector<std::vector<float>>& out) {
+  QuadErrors q;
+  double& orientation = q.orientation;
+  double& size_error = q.size_error;
+  double& camera_change = q.camera_change;
+  for (int p = 0; p < 3; ++p) {
+    const double w = kProbeSizes[kPassSize[p]][0], h = kProbeSizes[kPassSize[p]][1];
+    for (std::size_t i = 0; i < quads.size(); ++i) {
+      const float* v = &out[static_cast<std::size_t>(p)][6 * i];
+      const glm::dvec3 right(v[0], v[1], v[2]), up(v[3], v[4], v[5]);
+      const glm::dvec3 l(quads[i].to_light);
+      const glm::dvec3 right_ref = glm::normalize(glm::dvec3(l.z, 0.0, -l.x)) * w, up_ref(0.0, h, 0.0);
+      orientation = std::max({orientation, angle_deg(glm::cross(right, up), glm::cross(right_ref, up_ref), true),
+                              angle_deg(up, up_ref, false)});
+      const double lr = glm::length(right), lu = glm::length(up);
+      double e = std::max(std::abs(lr - w) / w, std::abs(lu - h) / h);
+      if (lr > 0.0 && lu > 0.0) e = std::max(e, std::abs(glm::dot(right, up)) / (lr * lu));
+      size_error = std::max(size_error, std::isfinite(e) ? e : 1e30);
+      if (p == 1)
+        for (int k = 0; k < 6; ++k) {
+          const double d = std::abs(static_cast<double>(v[k]) - out[0][6 * i + static_cast<std::size_t>(k)]);
+          camera_change = std::max(camera_change, std::isfinite(d) ? d : 1e30);
+        }
+    }
+  }
+  if (!std::isfinite(orientation)) orientation = 90.0;
+  return q;
+}
+
+void probe_criteria(CheckResult& result, const QuadErrors& q, double mismatch) {
+  const double orientation = q.orientation, size_error = q.size_error, camera_change = q.camera_change;
+  auto& c = result.criteria;
+  c.push_back({"quad.orientation", orientation, Criterion::kAtMost, kMaxOrientationDeg,
+               "the largest angle between your quad's normal and the upright quad turned toward the light (either "
+               "side), or between your up and world up, over trees, lights and eyes drawn from the seed",
+               "turn the quad about the vertical toward the light: right is the horizontal perpendicular of "
+               "to_light, up is world up. The camera has nothing to do with the shadow."});
+  c.push_back({"quad.size", size_error, Criterion::kAtMost, kMaxSizeError,
+               "|right| against size.x, |up| against size.y (relative), and how far right and up are from square",
+               "make right size.x long and up size.y long, at a right angle: the view's tree has that size."});
+  c.push_back({"quad.follows_camera", camera_change, Criterion::kAtMost, kMaxProbeCameraChange,
+               "the largest change of right or up (world units) when only the eye moves",
+               "the shadow pass's quad must not depend on the eye: a shadow that turns with the camera swims as "
+               "the camera moves. Turn it toward the light."});
+  c.push_back({"alpha_test.mismatch", mismatch, Criterion::kAtMost, kMaxAlphaMismatch,
+               "share of points of a 64 x 64 grid, at cutoffs 0.2-0.8, that the shadow pass keeps or cuts "
+               "otherwise than the view (alpha >= cutoff is kept); ties within 1e-4 not graded",
+               "discard what the view discards: keep a point when billboard_alpha(uv) >= cutoff, with the cutoff "
+               "you are given."});
+}
+
 void check_probes(CheckContext& ctx, CheckResult& result, const Features& hooks) {
   std::mt19937 rng(ctx.seed * 7919u + 11u);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::vector<glm::vec4> in0, in1;
   // The quads: a tree, a light from any azimuth and 15-75 degrees up, each of the six components.
-  struct QuadCase {
-    glm::vec3 base, to_light;
-  };
   std::vector<QuadCase> quads;
   for (int i = 0; i < kQuadCases; ++i) {
     const glm::vec3 base(10.0f * unit(rng) - 5.0f, 0.5f * unit(rng), 10.0f * unit(rng) - 5.0f);
@@ -120,37 +181,15 @@ void check_probes(CheckContext& ctx, CheckResult& result, const Features& hooks)
   request.fragment = "shaders/probe/billboard.frag";
   request.in0 = in0;
   request.in1 = in1;
-  // Pass 0: eye 0, the first size; pass 1: eye 1, the same size; pass 2: eye 0, the second size.
-  const int pass_eye[3] = {0, 1, 0}, pass_size[3] = {0, 0, 1};
   for (int p = 0; p < 3; ++p)
     request.passes.push_back([&, p](GLuint program) {
-      set_uniform(program, "u_probe_eye", eyes[pass_eye[p]]);
-      set_uniform(program, "u_probe_size", glm::vec3(kProbeSizes[pass_size[p]][0], kProbeSizes[pass_size[p]][1], 0.0f));
+      set_uniform(program, "u_probe_eye", eyes[kPassEye[p]]);
+      set_uniform(program, "u_probe_size", glm::vec3(kProbeSizes[kPassSize[p]][0], kProbeSizes[kPassSize[p]][1], 0.0f));
     });
   const std::vector<std::vector<float>> out = run_probe(hooks, request);
 
-  double orientation = 0.0, size_error = 0.0, camera_change = 0.0;
-  for (int p = 0; p < 3; ++p) {
-    const double w = kProbeSizes[pass_size[p]][0], h = kProbeSizes[pass_size[p]][1];
-    for (std::size_t i = 0; i < quads.size(); ++i) {
-      const float* v = &out[static_cast<std::size_t>(p)][6 * i];
-      const glm::dvec3 right(v[0], v[1], v[2]), up(v[3], v[4], v[5]);
-      const glm::dvec3 l(quads[i].to_light);
-      const glm::dvec3 right_ref = glm::normalize(glm::dvec3(l.z, 0.0, -l.x)) * w, up_ref(0.0, h, 0.0);
-      orientation = std::max({orientation, angle_deg(glm::cross(right, up), glm::cross(right_ref, up_ref), true),
-                              angle_deg(up, up_ref, false)});
-      const double lr = glm::length(right), lu = glm::length(up);
-      double e = std::max(std::abs(lr - w) / w, std::abs(lu - h) / h);
-      if (lr > 0.0 && lu > 0.0) e = std::max(e, std::abs(glm::dot(right, up)) / (lr * lu));
-      size_error = std::max(size_error, std::isfinite(e) ? e : 1e30);
-      if (p == 1)
-        for (int k = 0; k < 6; ++k) {
-          const double d = std::abs(static_cast<double>(v[k]) - out[0][6 * i + static_cast<std::size_t>(k)]);
-          camera_change = std::max(camera_change, std::isfinite(d) ? d : 1e30);
-        }
-    }
-  }
-  if (!std::isfinite(orientation)) orientation = 90.0;
+  const QuadErrors q = quad_errors(quads, out);
+  const double orientation = q.orientation, size_error = q.size_error, camera_change = q.camera_change;
   long mismatched = 0, graded = 0;
   for (std::size_t i = a0; i < in0.size(); ++i) {
     const float alpha = billboard_alpha({in0[i].x, in0[i].y}), cutoff = in0[i].z;
@@ -166,24 +205,7 @@ void check_probes(CheckContext& ctx, CheckResult& result, const Features& hooks)
                              {"camera_change", camera_change}, {"alpha_mismatch", mismatch}, {"alpha_points", graded}};
   std::printf("    probe: orientation %.3g deg, size %.3g, camera change %.3g, alpha test wrong at %.4f of %ld points\n",
               orientation, size_error, camera_change, mismatch, graded);
-  auto& c = result.criteria;
-  c.push_back({"quad.orientation", orientation, Criterion::kAtMost, kMaxOrientationDeg,
-               "the largest angle between your quad's normal and the upright quad turned toward the light (either "
-               "side), or between your up and world up, over trees, lights and eyes drawn from the seed",
-               "turn the quad about the vertical toward the light: right is the horizontal perpendicular of "
-               "to_light, up is world up. The camera has nothing to do with the shadow."});
-  c.push_back({"quad.size", size_error, Criterion::kAtMost, kMaxSizeError,
-               "|right| against size.x, |up| against size.y (relative), and how far right and up are from square",
-               "make right size.x long and up size.y long, at a right angle: the view's tree has that size."});
-  c.push_back({"quad.follows_camera", camera_change, Criterion::kAtMost, kMaxProbeCameraChange,
-               "the largest change of right or up (world units) when only the eye moves",
-               "the shadow pass's quad must not depend on the eye: a shadow that turns with the camera swims as "
-               "the camera moves. Turn it toward the light."});
-  c.push_back({"alpha_test.mismatch", mismatch, Criterion::kAtMost, kMaxAlphaMismatch,
-               "share of points of a 64 x 64 grid, at cutoffs 0.2-0.8, that the shadow pass keeps or cuts "
-               "otherwise than the view (alpha >= cutoff is kept); ties within 1e-4 not graded",
-               "discard what the view discards: keep a point when billboard_alpha(uv) >= cutoff, with the cutoff "
-               "you are given."});
+  probe_criteria(result, q, mismatch);
 }
 
 // One view of the trees' shadows, graded against the oracle with the light-facing trees.

@@ -219,6 +219,79 @@ double phase_distance(const glm::dvec2& a, const glm::dvec2& b) {
   return worst;
 }
 
+// What grade_fit counts over every slice it fits.
+struct FitTally {
+  int slices = 0, outside = 0, depth_outside = 0, size_changes = 0, crawls = 0, world_size_wrong = 0, non_finite = 0;
+  double worst_size = 0.0, worst_crawl = 0.0;
+};
+
+// One cascade's box `v` for `slice` at this pose, against the scene and against the same cascade's box at
+// the first pose (`first`, kept at pose 0).
+void grade_slice(const LightView& v, const FrustumCorners& slice, const Bounds& scene, int pose, LightView& first,
+                 FitTally& t) {
+  const glm::dmat4 m(v.view_projection());
+  ++t.slices;
+  bool finite = true;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) finite = finite && std::isfinite(m[a][b]);
+  if (!finite) {
+    ++t.non_finite;
+    return;
+  }
+  bool out = false, deep = false;
+  for (const glm::vec3& corner : slice) {
+    const glm::dvec4 p = m * glm::dvec4(glm::dvec3(corner), 1.0);
+    out = out || std::abs(p.x) > 1.0 + kNdcTolerance || std::abs(p.y) > 1.0 + kNdcTolerance;
+  }
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec4 p = m * glm::dvec4(glm::dvec3(scene.corner(i)), 1.0);
+    deep = deep || std::abs(p.z) > 1.0 + kNdcTolerance;
+  }
+  t.outside += out;
+  t.depth_outside += deep;
+  const double size = 2.0 / std::abs(static_cast<double>(v.projection[0][0]));
+  if (std::abs(v.world_size.x - size) > 1e-3 * size) ++t.world_size_wrong;
+  if (pose == 0) {
+    first = v;
+    return;
+  }
+  const LightView& f = first;
+  const double size0 = 2.0 / std::abs(static_cast<double>(f.projection[0][0]));
+  const double size_texels = std::abs(size - size0) / size0 * kFitMapSize;
+  t.worst_size = std::max(t.worst_size, size_texels);
+  if (size_texels > kTexelTolerance) {
+    ++t.size_changes;
+    return;  // a box of another size has another grid: its phase says nothing
+  }
+  const double crawl = phase_distance(texel_phase(v, scene.center(), kFitMapSize), texel_phase(f, scene.center(), kFitMapSize));
+  t.worst_crawl = std::max(t.worst_crawl, crawl);
+  if (crawl > kTexelTolerance) ++t.crawls;
+}
+
+void report_fit(CheckResult& result, const FitTally& t) {
+  result.metrics["fit"] = {{"slices", t.slices}, {"non_finite", t.non_finite}, {"slice_outside", t.outside},
+                           {"casters_outside_depth", t.depth_outside}, {"size_changes", t.size_changes},
+                           {"worst_size_change_texels", t.worst_size}, {"texel_crawl", t.crawls},
+                           {"worst_crawl_texels", t.worst_crawl}, {"world_size_wrong", t.world_size_wrong}};
+  const auto add = [&](const char* name, int value, const char* why, const char* advice) {
+    result.criteria.push_back({std::string("fit.") + name, static_cast<double>(value), Criterion::kAtMost,
+                                static_cast<double>(kMaxBadSlices), why, advice});
+  };
+  add("non_finite_boxes", t.non_finite, "no NaN or Inf in any cascade's matrix", "");
+  add("slice_outside", t.outside, "every corner of the slice inside the box (within 1e-4)",
+      "the box must hold the whole slice: the sphere's radius, plus one texel on each side for the snap "
+      "(texel = 2 r / (map_size - 2), half-size texel * map_size / 2).");
+  add("casters_outside_depth", t.depth_outside, "every corner of the scene's box within the depth range",
+      "fit the depth to the scene's box along the light (lab 2), not to the slice: casters outside the slice "
+      "still cast into it.");
+  add("size_changes", t.size_changes, "the box keeps its size (within 0.01 texel) when the camera turns",
+      "fit the slice's bounding sphere, not a tight box: the sphere's radius does not depend on where the camera looks.");
+  add("texel_crawl", t.crawls, "the box moves by whole texels (within 0.01) when the camera moves",
+      "snap the centre's light-space coordinates (dot with X and Y) to multiples of the texel, 2 r / (map_size - 2).");
+  add("world_size_mismatch", t.world_size_wrong, "world_size = the box's footprint (the bias reads it)",
+      "set world_size = (2 r, 2 r).");
+}
+
 // (2) The box: over turns and moves of the camera, for a few light directions.
 void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
   const Bounds scene = ctx.scene().bounds();
@@ -230,8 +303,7 @@ void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
   for (int i = 0; i < 2; ++i) lights.push_back(direction_from_angles(360.0f * unit(rng), 15.0f + 70.0f * unit(rng)));
   constexpr int kPoses = 8;
   constexpr int kCount = 4;
-  int slices = 0, outside = 0, depth_outside = 0, size_changes = 0, crawls = 0, world_size_wrong = 0, non_finite = 0;
-  double worst_size = 0.0, worst_crawl = 0.0;
+  FitTally tally;
   for (const glm::vec3& to_light : lights) {
     for (int motion = 0; motion < 2; ++motion) {  // 0: turns (yaw and pitch), 1: moves (the target)
       std::vector<LightView> first(kCount);
@@ -248,68 +320,12 @@ void grade_fit(CheckContext& ctx, CheckResult& result, const CascadeFns& fns) {
         for (int c = 0; c < kCount; ++c) {
           const FrustumCorners slice = frustum_slice(view, proj, splits[static_cast<std::size_t>(c)], splits[static_cast<std::size_t>(c) + 1]);
           const LightView v = fns.fit(slice, to_light, kFitMapSize, scene);
-          const glm::dmat4 m(v.view_projection());
-          ++slices;
-          bool finite = true;
-          for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) finite = finite && std::isfinite(m[a][b]);
-          if (!finite) {
-            ++non_finite;
-            continue;
-          }
-          bool out = false, deep = false;
-          for (const glm::vec3& corner : slice) {
-            const glm::dvec4 p = m * glm::dvec4(glm::dvec3(corner), 1.0);
-            out = out || std::abs(p.x) > 1.0 + kNdcTolerance || std::abs(p.y) > 1.0 + kNdcTolerance;
-          }
-          for (int i = 0; i < 8; ++i) {
-            const glm::dvec4 p = m * glm::dvec4(glm::dvec3(scene.corner(i)), 1.0);
-            deep = deep || std::abs(p.z) > 1.0 + kNdcTolerance;
-          }
-          outside += out;
-          depth_outside += deep;
-          const double size = 2.0 / std::abs(static_cast<double>(v.projection[0][0]));
-          if (std::abs(v.world_size.x - size) > 1e-3 * size) ++world_size_wrong;
-          if (pose == 0) {
-            first[static_cast<std::size_t>(c)] = v;
-            continue;
-          }
-          const LightView& f = first[static_cast<std::size_t>(c)];
-          const double size0 = 2.0 / std::abs(static_cast<double>(f.projection[0][0]));
-          const double size_texels = std::abs(size - size0) / size0 * kFitMapSize;
-          worst_size = std::max(worst_size, size_texels);
-          if (size_texels > kTexelTolerance) {
-            ++size_changes;
-            continue;  // a box of another size has another grid: its phase says nothing
-          }
-          const double crawl = phase_distance(texel_phase(v, scene.center(), kFitMapSize), texel_phase(f, scene.center(), kFitMapSize));
-          worst_crawl = std::max(worst_crawl, crawl);
-          if (crawl > kTexelTolerance) ++crawls;
+          grade_slice(v, slice, scene, pose, first[static_cast<std::size_t>(c)], tally);
         }
       }
     }
   }
-  result.metrics["fit"] = {{"slices", slices}, {"non_finite", non_finite}, {"slice_outside", outside},
-                           {"casters_outside_depth", depth_outside}, {"size_changes", size_changes},
-                           {"worst_size_change_texels", worst_size}, {"texel_crawl", crawls},
-                           {"worst_crawl_texels", worst_crawl}, {"world_size_wrong", world_size_wrong}};
-  const auto add = [&](const char* name, int value, const char* why, const char* advice) {
-    result.criteria.push_back({std::string("fit.") + name, static_cast<double>(value), Criterion::kAtMost,
-                                static_cast<double>(kMaxBadSlices), why, advice});
-  };
-  add("non_finite_boxes", non_finite, "no NaN or Inf in any cascade's matrix", "");
-  add("slice_outside", outside, "every corner of the slice inside the box (within 1e-4)",
-      "the box must hold the whole slice: the sphere's radius, plus one texel on each side for the snap "
-      "(texel = 2 r / (map_size - 2), half-size texel * map_size / 2).");
-  add("casters_outside_depth", depth_outside, "every corner of the scene's box within the depth range",
-      "fit the depth to the scene's box along the light (lab 2), not to the slice: casters outside the slice "
-      "still cast into it.");
-  add("size_changes", size_changes, "the box keeps its size (within 0.01 texel) when the camera turns",
-      "fit the slice's bounding sphere, not a tight box: the sphere's radius does not depend on where the camera looks.");
-  add("texel_crawl", crawls, "the box moves by whole texels (within 0.01) when the camera moves",
-      "snap the centre's light-space coordinates (dot with X and Y) to multiples of the texel, 2 r / (map_size - 2).");
-  add("world_size_mismatch", world_size_wrong, "world_size = the box's footprint (the bias reads it)",
-      "set world_size = (2 r, 2 r).");
+  report_fit(result, tally);
 }
 
 // (3) Shimmer: a still view; the camera the cascades follow moves and turns a little, pose by pose.

@@ -54,6 +54,58 @@ const char* frame_advice(const std::string& frame) {
   return "each light's term times its own shadow term, and the two added: light from both where both reach.";
 }
 
+// What grade_condition counts on one frame's pixels, and its diff picture (red: brighter than the truth,
+// blue: darker, grey: right).
+struct PixelTally {
+  long graded = 0, wrong = 0, sun_shadowed = 0, flash_shadowed = 0;
+  double worst = 0.0;
+  std::vector<std::uint8_t> diff = std::vector<std::uint8_t>(static_cast<std::size_t>(kWidth) * kHeight * 4, 0);
+};
+
+// The frame's direct light against the truth of both lights (`si`, `fi` their intensities), pixel by pixel.
+PixelTally grade_pixels(const std::vector<float>& direct, const GBuffer& g, const FrameLight& f, const OracleLight& sun,
+                        const Truth& ts, const Truth& tf, double si, double fi) {
+  const float cos_rim_in = std::cos(glm::radians(f.spot_cone_deg - kSpotConeMarginDeg));
+  const float cos_rim_out = std::cos(glm::radians(f.spot_cone_deg + kSpotConeMarginDeg));
+  PixelTally t;
+  long &graded = t.graded, &wrong = t.wrong, &sun_shadowed = t.sun_shadowed, &flash_shadowed = t.flash_shadowed;
+  double& worst = t.worst;
+  std::vector<std::uint8_t>& diff = t.diff;
+  for (int i = 0; i < g.width * g.height; ++i) {
+    if (!g.covered[i]) continue;
+    const glm::vec3 n = g.normal[i];
+    const float ns = glm::dot(n, sun.to_light);
+    const glm::vec3 to_flash = glm::normalize(f.scene_position - g.position[i]);
+    const float cos_axis = glm::dot(-to_flash, f.spot_direction);
+    if (cos_axis < cos_rim_in && cos_axis > cos_rim_out) continue;  // the cone's rim: rounding decides
+    const float nf = cos_axis >= cos_rim_in ? glm::dot(n, to_flash) : 0.0f;
+    // Grazing light and the edge bands of either light's truth are not graded (as in every lab).
+    if ((ns > 0.0f && ns < kGrazingNdotL) || (nf > 0.0f && nf < kGrazingNdotL)) continue;
+    if ((ns > 0.0f && !ts.interior[i]) || (nf > 0.0f && !tf.interior[i])) continue;
+    const double vs = ns > 0.0f && ts.lit[i] ? 1.0 : 0.0, vf = nf > 0.0f && tf.lit[i] ? 1.0 : 0.0;
+    const double expected = si * std::max(ns, 0.0f) * vs + fi * std::max(nf, 0.0f) * vf;
+    const double err = std::abs(static_cast<double>(direct[i]) - expected);
+    ++graded;
+    sun_shadowed += ns > 0.0f && !ts.lit[i];
+    flash_shadowed += nf > 0.0f && !tf.lit[i];
+    worst = std::max(worst, err);
+    if (err > kPixelTolerance) {
+      ++wrong;
+      const int x = i % g.width, y = g.height - 1 - i / g.width;
+      std::uint8_t* px = &diff[4 * (static_cast<std::size_t>(y) * kWidth + x)];
+      px[0] = direct[i] > expected ? 255 : 0;
+      px[2] = direct[i] > expected ? 0 : 255;
+    }
+    if (err <= kPixelTolerance) {
+      const int x = i % g.width, y = g.height - 1 - i / g.width;
+      std::uint8_t* px = &diff[4 * (static_cast<std::size_t>(y) * kWidth + x)];
+      px[0] = px[1] = px[2] = static_cast<std::uint8_t>(std::min(255.0, 160.0 * expected + 40.0));
+    }
+    diff[4 * (static_cast<std::size_t>(g.height - 1 - i / g.width) * kWidth + i % g.width) + 3] = 255;
+  }
+  return t;
+}
+
 void grade_condition(CheckContext& ctx, CheckResult& result, const Features& hooks, const Condition& c) {
   ParamSet base = ctx.params();
   base.set("view.debug_quad", 0.0);
@@ -84,43 +136,10 @@ void grade_condition(CheckContext& ctx, CheckResult& result, const Features& hoo
     const Truth ts = ctx.oracle().evaluate(g, sun, grading_band());
     const Truth tf = ctx.oracle().evaluate(g, flash, grading_band());
     const double si = p.get("sun.intensity"), fi = p.get("flashlight.intensity");
-    const float cos_rim_in = std::cos(glm::radians(f.spot_cone_deg - kSpotConeMarginDeg));
-    const float cos_rim_out = std::cos(glm::radians(f.spot_cone_deg + kSpotConeMarginDeg));
-    long graded = 0, wrong = 0, sun_shadowed = 0, flash_shadowed = 0;
-    double worst = 0.0;
-    std::vector<std::uint8_t> diff(static_cast<std::size_t>(kWidth) * kHeight * 4, 0);
-    for (int i = 0; i < g.width * g.height; ++i) {
-      if (!g.covered[i]) continue;
-      const glm::vec3 n = g.normal[i];
-      const float ns = glm::dot(n, sun.to_light);
-      const glm::vec3 to_flash = glm::normalize(f.scene_position - g.position[i]);
-      const float cos_axis = glm::dot(-to_flash, f.spot_direction);
-      if (cos_axis < cos_rim_in && cos_axis > cos_rim_out) continue;  // the cone's rim: rounding decides
-      const float nf = cos_axis >= cos_rim_in ? glm::dot(n, to_flash) : 0.0f;
-      // Grazing light and the edge bands of either light's truth are not graded (as in every lab).
-      if ((ns > 0.0f && ns < kGrazingNdotL) || (nf > 0.0f && nf < kGrazingNdotL)) continue;
-      if ((ns > 0.0f && !ts.interior[i]) || (nf > 0.0f && !tf.interior[i])) continue;
-      const double vs = ns > 0.0f && ts.lit[i] ? 1.0 : 0.0, vf = nf > 0.0f && tf.lit[i] ? 1.0 : 0.0;
-      const double expected = si * std::max(ns, 0.0f) * vs + fi * std::max(nf, 0.0f) * vf;
-      const double err = std::abs(static_cast<double>(direct[i]) - expected);
-      ++graded;
-      sun_shadowed += ns > 0.0f && !ts.lit[i];
-      flash_shadowed += nf > 0.0f && !tf.lit[i];
-      worst = std::max(worst, err);
-      if (err > kPixelTolerance) {
-        ++wrong;
-        const int x = i % g.width, y = g.height - 1 - i / g.width;
-        std::uint8_t* px = &diff[4 * (static_cast<std::size_t>(y) * kWidth + x)];
-        px[0] = direct[i] > expected ? 255 : 0;
-        px[2] = direct[i] > expected ? 0 : 255;
-      }
-      if (err <= kPixelTolerance) {
-        const int x = i % g.width, y = g.height - 1 - i / g.width;
-        std::uint8_t* px = &diff[4 * (static_cast<std::size_t>(y) * kWidth + x)];
-        px[0] = px[1] = px[2] = static_cast<std::uint8_t>(std::min(255.0, 160.0 * expected + 40.0));
-      }
-      diff[4 * (static_cast<std::size_t>(g.height - 1 - i / g.width) * kWidth + i % g.width) + 3] = 255;
-    }
+    const PixelTally t = grade_pixels(direct, g, f, sun, ts, tf, si, fi);
+    const long graded = t.graded, wrong = t.wrong, sun_shadowed = t.sun_shadowed, flash_shadowed = t.flash_shadowed;
+    const double worst = t.worst;
+    const std::vector<std::uint8_t>& diff = t.diff;
     const std::string tag = c.tag + "." + frame.name;
     const double share = graded > 0 ? static_cast<double>(wrong) / static_cast<double>(graded) : 1.0;
     result.metrics[c.tag][frame.name] = {{"graded_pixels", graded},    {"wrong_pixels", wrong},
