@@ -163,6 +163,21 @@ nlohmann::json render_json(const RenderOptions& options, const Lab& lab, const S
   return j;
 }
 
+// --shadow-test NAME: the registered test (null without the option), its parameters declared in `params`
+// (what the lab declares keeps the lab's default). An unknown name is a usage error.
+const ShadowTest* shadow_test_option(const std::string& name, ParamSet& params) {
+  if (name.empty()) return nullptr;
+  const ShadowTest* test = nullptr;
+  try {
+    test = &find_shadow_test(name);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(std::string("--shadow-test: ") + e.what());
+  }
+  for (const ParamSpec& spec : test->params)
+    if (!params.find(spec.key)) params.declare(spec);
+  return test;
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& options) {
@@ -172,16 +187,7 @@ int run_render(const RenderOptions& options) {
   try {
     const Lab* lab = &render_lab(options.lab);
     ParamSet params = lab_params(*lab);
-    const ShadowTest* shadow_test = nullptr;
-    if (!options.shadow_test.empty()) {
-      try {
-        shadow_test = &find_shadow_test(options.shadow_test);
-      } catch (const std::exception& e) {
-        throw std::invalid_argument(std::string("--shadow-test: ") + e.what());
-      }
-      for (const ParamSpec& spec : shadow_test->params)  // what the lab declares keeps the lab's default
-        if (!params.find(spec.key)) params.declare(spec);
-    }
+    const ShadowTest* shadow_test = shadow_test_option(options.shadow_test, params);
     const Preset* preset = apply_preset_option(params, *lab, options.preset);
     for (const auto& a : options.assignments) apply_set_option(params, a);
     const Scene scene = scene_option(options.scene_file, preset);

@@ -36,18 +36,15 @@ cat >"$copy/renderer/shadow_tests/throwaway.cpp" <<'CPP'
 namespace shadowlab {
 
 namespace {
-const std::vector<ParamSpec>& throwaway_specs() {
-  static const std::vector<ParamSpec> specs = {
-      {"throwaway.level", "Throwaway shadow level", ParamKind::Float, 0.5, 0.0, 1.0, "Visibility of a shadowed point."}};
-  return specs;
-}
+const FloatParam throwaway_level{{"throwaway.level", "Throwaway shadow level", ParamKind::Float, 0.5, 0.0, 1.0,
+                                  "Visibility of a shadowed point."}};
 }  // namespace
 
 ShadowTest SHADOWLAB_SHADOW_TEST_MAKER() {
-  return {"throwaway", "shaders/shadow/throwaway.glsl", throwaway_specs(),
+  return {"throwaway", "shaders/shadow/throwaway.glsl", specs_of(throwaway_level),
           [](GLuint program) -> ShadowTestBind {
             return [level = Uniform(program, "u_throwaway_level")](const ShadowTestFrame& f) {
-              level.set(static_cast<float>(param_or_default(f.params, throwaway_specs(), "throwaway.level", "throwaway")));
+              level.set(f.params.get(throwaway_level));
             };
           },
           {}};

@@ -98,7 +98,8 @@ TEST(AgainstSolution, WhatTheSolutionFailsIsGradedAgainstItsOwnValue) {
   solution.criteria = {{"high.shadow_error", 0.02, Criterion::kAtMost, 0.005, "", ""},
                        {"high.lit_error", 0.0001, Criterion::kAtMost, 0.001, "", ""},
                        {"high.graded_pixels", 120, Criterion::kAtLeast, 500, "", ""},
-                       {"high.agreement", 0.9, Criterion::kAtLeast, 0.995, "", ""}};
+                       {"high.agreement", 0.9, Criterion::kAtLeast, 0.995, "", ""},
+                       {"low.graded_pixels", 800, Criterion::kAtLeast, 500, "", ""}};
   CheckResult close = solution;  // a right answer written differently: a little off the solution
   close.criteria[0].value = 0.0215;
   close.criteria[3].value = 0.85;
@@ -123,6 +124,20 @@ TEST(AgainstSolution, WhatTheSolutionFailsIsGradedAgainstItsOwnValue) {
   lower.criteria[3].value = 0.8;
   grade_against_solution(lower, solution);
   EXPECT_FALSE(lower.passed());
+}
+
+// A scene on which the solution measures nothing in any condition (one degenerate triangle) grades nothing:
+// the lab's limits stay, and its graded_pixels criteria fail as not measurable.
+TEST(AgainstSolution, NoEvidenceAnywhereKeepsTheLabsLimits) {
+  CheckResult solution;
+  solution.criteria = {{"high.graded_pixels", 0, Criterion::kAtLeast, 500, "", ""},
+                       {"low.graded_pixels", 0, Criterion::kAtLeast, 500, "", ""}};
+  CheckResult r = solution;
+  grade_against_solution(r, solution);
+  EXPECT_FALSE(r.passed());
+  EXPECT_EQ(r.criteria[0].basis, Criterion::kLabLimit);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("nothing on this scene can be graded"), std::string::npos) << r.notes[0];
 }
 
 TEST(AgainstSolution, ASolutionThatCannotBeGradedLeavesTheLabsLimits) {

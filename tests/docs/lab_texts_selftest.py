@@ -28,7 +28,7 @@ MUTATIONS = [
     # A preset's value changed in the code; an untied figure in a student's text.
     ("labs/04_light_bleeding/lab.cpp", '{{"vsm.bleed_delta", "0.125"}, ', '{{"vsm.bleed_delta", "0.15"}, ',
      "preset(course).vsm.bleed_delta = 0.15"),
-    ("labs/14_msm/README.md", "(one half each)", "(0.5 each)", "no marker to the code or a recorded run: 0.5"),
+    ("labs/14_msm/README.md", "of half the weight at depth 0", "of 0.5 of the weight at depth 0", "no marker to the code or a recorded run: 0.5"),
     # Whole numbers: an untied one in a student's text and in an instructor note; an integer constant and
     # an element of a nested initializer changed in a lab.cpp.
     ("labs/05_moment_blur/README.md", "## How to see it", "A 512 map shows it best.\n\n## How to see it",
