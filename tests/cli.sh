@@ -1,40 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end tests of the shadowlab command line, one case per CTest entry: tests/cli.sh BIN CASE
-set -uo pipefail
-bin="$1"; case_name="$2"
-tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-src="$(cd "$(dirname "$0")/.." && pwd)"  # the source tree: shaders/ and labs/
-# No test ever reads or writes the user's own settings file.
-export SHADOWLAB_SETTINGS="$tmp/settings.json"
-fail() { echo "FAIL: $*"; exit 1; }
-
-expect_error() {  # expect_error "message part" command...: non-zero exit, one clear line on stderr
-  local want="$1"; shift
-  "$@" >"$tmp/out" 2>"$tmp/err" && fail "exit 0 from: $*"
-  grep -qF -- "$want" "$tmp/err" || fail "stderr lacks '$want': $(cat "$tmp/err")"
-  grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: $(cat "$tmp/err")"
-  return 0
-}
-one_line() { [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "expected one line on stderr: $(cat "$tmp/err")"; }
-# python3 with tests/png_tools.py importable, for the cases that read PNGs (`from png_tools import load`).
-# Pillow is Debian's python3-pil (scripts/setup): when the python3 first on PATH lacks it (a pyenv, a
-# venv), the system's is used.
-png_python() {
-  local py
-  for py in python3 /usr/bin/python3; do
-    if "$py" -c "import PIL" 2>/dev/null; then
-      PYTHONPATH="$src/tests${PYTHONPATH:+:$PYTHONPATH}" "$py" "$@"
-      return
-    fi
-  done
-  fail "no python3 with Pillow (bash scripts/setup installs python3-pil)"
-}
-window() {  # window ARGS...: the window under Xvfb on a 1440x900 screen; stderr kept in $tmp/err
-  command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
-  xvfb-run -a -s "-screen 0 1440x900x24" "$bin" "$@" >"$tmp/out" 2>"$tmp/err" || fail "window run failed: $(tail -3 "$tmp/err")"
-  grep -q "Segmentation\|Aborted\|terminate called" "$tmp/err" && fail "crashed: $(cat "$tmp/err")"
-  return 0
-}
+# End-to-end tests of the shadowlab command line (headless: render, check, bench, labs, grade), one case per
+# CTest entry: tests/cli.sh BIN CASE. The window's cases are in tests/window.sh.
+source "$(dirname "$0")/cli_lib.sh"
 
 case "$case_name" in
   render_default)
@@ -256,37 +223,6 @@ PY
     "$bin" check --lab 0 --impl solution "${far[@]}" --set scene.local_origin=false >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 1 ] || fail "lab 0 without the local origin at 1e6: exit $rc, expected 1: $(cat "$tmp/out" "$tmp/err" | head -40)"
     ;;
-  window_xvfb)
-    command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
-    xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --frames 5 --screenshot "$tmp/window.png" || fail "window run failed"
-    [ -s "$tmp/window.png" ] || fail "no screenshot"
-    png_python - "$tmp/window.png" <<'PY' || fail "panel not visible in the screenshot"
-import sys
-from png_tools import load
-# Look for the panel: ImGui's dark title bar and text near the top-left corner differ from the scene's
-# background colour.
-w, h, rows = load(sys.argv[1])
-bg = (41, 46, 56)  # the renderer's clear colour, sRGB-encoded
-panel = sum(1 for y in range(20, 300) for x in range(20, 400)
-            if abs(rows[y][4 * x] - bg[0]) + abs(rows[y][4 * x + 1] - bg[1]) + abs(rows[y][4 * x + 2] - bg[2]) > 30)
-print("panel pixels differing from background:", panel)
-assert panel > 5000
-PY
-    ;;
-  check_solution_*)  # the lab's solution passes its check: exit 0
-    lab="${case_name#check_solution_}"
-    "$bin" check --lab "$lab" --impl solution --json "$tmp/check.json" || fail "solution of lab $lab does not pass"
-    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['passed'] and r['thresholds'], r" "$tmp/check.json" \
-      || fail "JSON does not record a pass with thresholds"
-    ;;
-  check_exercise_*)  # the unmodified exercise fails its check: exit 1 (not 2, which is an error)
-    lab="${case_name#check_exercise_}"
-    "$bin" check --lab "$lab" --impl exercise --json "$tmp/check.json"
-    rc=$?
-    [ "$rc" -eq 1 ] || fail "exercise of lab $lab: exit $rc, expected 1 (a failed check)"
-    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert not r['passed'] and 'error' not in r, r" "$tmp/check.json" \
-      || fail "JSON does not record a plain failure"
-    ;;
   check_default_is_exercise)  # no --impl grades the student's file: the stock exercise fails
     "$bin" check --lab 1 --json "$tmp/check.json" >"$tmp/out"; rc=$?
     [ "$rc" -eq 1 ] || fail "check without --impl: exit $rc, expected 1 (the stock exercise fails)"
@@ -434,41 +370,6 @@ for r in json.load(open(sys.argv[1]))['labs']:
     [ "$(cat "$SHADOWLAB_SETTINGS")" = "not json" ] || fail "render touched the settings file"
     ls "$tmp" | grep -q "settings.json.bad-" && fail "render moved the settings file aside"
     ;;
-  window_settings)  # the window keeps values per lab, and a bad file is kept aside with a warning
-    command -v xvfb-run >/dev/null || fail "xvfb-run missing (scripts/setup installs xvfb)"
-    echo '{"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.0' >"$SHADOWLAB_SETTINGS"  # cut short
-    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" || fail "window run failed: $(cat "$tmp/err")"
-    grep -q "warning: .*settings.json: is not valid JSON; kept as .*settings.json.bad-" "$tmp/err" || fail "no warning: $(cat "$tmp/err")"
-    [ "$(cat "$tmp"/settings.json.bad-*)" = '{"version": 1, "labs": {"1": {"params": {"shadow.bias": 0.0' ] || fail "backup differs"
-    python3 -c "import json,sys; j=json.load(open(sys.argv[1])); assert j['version'] == 1 and 'shadow.bias' in j['labs']['1']['params'], j" \
-      "$SHADOWLAB_SETTINGS" || fail "defaults not saved on exit"
-    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
-import json, sys
-j = json.load(open(sys.argv[1]))
-j["labs"]["1"]["params"]["shadow.bias"] = 0.02
-j["labs"]["1"]["presets"] = {"mine": {"shadow.bias": 0.03}}
-json.dump(j, open(sys.argv[1], "w"))
-PY
-    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" || fail "second window run failed: $(cat "$tmp/err")"
-    [ ! -s "$tmp/err" ] || fail "unexpected warning: $(cat "$tmp/err")"
-    python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['labs']['1']; assert p['params']['shadow.bias'] == 0.02 and 'mine' in p['presets'], p" \
-      "$SHADOWLAB_SETTINGS" || fail "the lab's value or preset was lost"
-    # The camera is kept with the scene (as a window keeps one moved there: --camera is for one run, see
-    # window_one_off); a run that fails to start (a bad --camera) writes nothing.
-    python3 -c "import json,sys; j=json.load(open(sys.argv[1])); j['camera'].update(target=[0, 1, 2], distance=1, fov_y_deg=40); json.dump(j, open(sys.argv[1], 'w'))" \
-      "$SHADOWLAB_SETTINGS" || fail "no camera kept by the runs before"
-    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 40 and abs(c['distance'] - 1) < 1e-5 and c['target'] == [0, 1, 2] and c['scene'], c" \
-      "$SHADOWLAB_SETTINGS" || fail "the camera was not kept: $(cat "$SHADOWLAB_SETTINGS")"
-    cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
-    "$bin" --lab 1 --frames 2 --camera "eye=0,1,3 target=0,1,3" >/dev/null 2>"$tmp/err"; [ $? -eq 2 ] || fail "a bad --camera must exit 2"
-    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" || fail "a run that failed to start changed the settings"
-    # Started again without --camera, the window looks from the kept camera (and keeps it on exit; the
-    # framed camera it would start from otherwise has a 45-degree field of view).
-    xvfb-run -a "$bin" --lab 1 --frames 2 >/dev/null 2>"$tmp/err" ||
-      fail "third window run failed: $(cat "$tmp/err")"
-    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 40 and c['target'] == [0, 1, 2], c" \
-      "$SHADOWLAB_SETTINGS" || fail "the kept camera was replaced: $(cat "$SHADOWLAB_SETTINGS")"
-    ;;
   check_bad_set)
     expect_error "valid keys:" "$bin" check --lab 1 --set shadow.nope=1
     "$bin" check --lab 1 --set shadow.nope=1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "a usage error must exit 2, not 1 (a failed check)"
@@ -515,145 +416,6 @@ for scene in {p["scene"] for p in j["points"]}:
         assert any(p["light_sizes"][k]["pareto"] for p in j["points"] if p["scene"] == scene), (scene, k)
 PY
     echo "bench --quick: ${elapsed} s"
-    ;;
-  window_keys_split)  # keys switch labs, S toggles the split view: the screenshots differ where they should
-    window --script "frames:3,screenshot:$tmp/lab0.png,key:1,frames:3,screenshot:$tmp/lab1.png,key:s,frames:3,screenshot:$tmp/split.png,key:s,frames:3,screenshot:$tmp/unsplit.png,key:n,frames:3,screenshot:$tmp/lab2.png"
-    for f in lab0 lab1 split unsplit lab2; do [ -s "$tmp/$f.png" ] || fail "no $f.png"; done
-    png_python - "$tmp" <<'PY' || fail "screenshots do not differ as expected"
-import sys
-from png_tools import load, differing
-img = {n: load(f"{sys.argv[1]}/{n}.png") for n in ("lab0", "lab1", "split", "unsplit", "lab2")}
-w, h, _ = img["lab1"]
-r = {n: v[2] for n, v in img.items()}
-panel = (20, 60, 430, 400)                   # the panel's title, task and check sections
-left = (460, 60, w // 2 - 40, h - 60)        # the view left of the divider, right of the panel
-right = (w // 2 + 40, 60, w - 20, h - 60)    # the view right of the divider, above the magnifier corner
-stats = {
-    "panel lab0/lab1": differing(r["lab0"], r["lab1"], *panel),
-    "panel lab1/lab2 (N)": differing(r["lab1"], r["lab2"], *panel),
-    "left split/lab1": differing(r["split"], r["lab1"], *left),
-    "right split/lab1": differing(r["split"], r["lab1"], *right),
-    "view unsplit/lab1": differing(r["unsplit"], r["lab1"], 460, 60, w - 20, h - 60),
-}
-print(stats)
-assert stats["panel lab0/lab1"] > 0.02, "key 1 did not change the panel"
-assert stats["panel lab1/lab2 (N)"] > 0.02, "key N did not change the panel"
-assert stats["right split/lab1"] > 0.01, "the split's right side (solution) looks like the exercise"
-assert stats["left split/lab1"] < stats["right split/lab1"] / 3, "the split changed the left side"
-assert stats["view unsplit/lab1"] < 0.01, "S again did not return to the single view"
-# The divider: a bright vertical line in the middle of the split screenshot, none without the split.
-col = lambda rows, x: sum(1 for y in range(100, h - 100, 4) if min(rows[y][4 * x:4 * x + 3]) > 200)
-line_split = max(col(r["split"], x) for x in range(w // 2 - 2, w // 2 + 3))
-line_single = max(col(r["lab1"], x) for x in range(w // 2 - 2, w // 2 + 3))
-print("divider rows:", line_split, line_single)
-assert line_split > 0.9 * len(range(100, h - 100, 4)) and line_single < line_split / 2, "no divider"
-PY
-    ;;
-  window_frame_cost)  # the window takes render's options; its interactive frame waits for nothing (issue 17)
-    code 2 "$bin" --size 12x9 --frames 1
-    code 2 "$bin" --size 640 --frames 1
-    code 2 "$bin" --camera "eye=1,2 target=0,0,0" --frames 1
-    code 2 "$bin" --camera "eye=1,1,1 target=1,1,1" --frames 1
-    code 2 "$bin" --camera "fov=abc" --frames 1
-    code 2 "$bin" --set shadow.bais=1 --frames 1
-    code 2 "$bin" render --out "$tmp/o" --camera "zoom=2"
-    "$bin" render --lab 6 --out "$tmp/cam" --width 320 --height 180 --camera "eye=-2,4,-1 target=0,0,0 fov=45" \
-      || fail "render --camera failed"
-    # Lab 6 at LearnOpenGL's view, the line shown for 4 frames, then hidden (H) for 12.
-    window --lab 6 --size 640x360 --camera "eye=-2,4,-1 target=0,0,0 fov=45" --set view.debug_quad=0 \
-      --frame-report "$tmp/cost.json" --script "frames:4,key:h,frames:12,screenshot:$tmp/cost.png"
-    png_python - "$tmp" <<'PY' || fail "the interactive frame waits for the GPU, or --size/--camera were not applied"
-import json, sys
-from png_tools import size
-t = sys.argv[1]
-r = json.load(open(f"{t}/cost.json"))
-print(r)
-w, h = size(f"{t}/cost.png")
-assert (w, h) == (640, 360), (w, h)
-hidden, shown = r["pass_line_hidden"], r["pass_line_shown"]
-assert hidden["frames"] >= 10 and shown["frames"] >= 3, r
-assert hidden["gl_finishes"] == 0 and hidden["blocking_query_reads"] == 0, "waits with the pass-time line hidden"
-if r["timers_work"]:
-    assert shown["gl_finishes"] == 0 and shown["blocking_query_reads"] == 0, "waits although the timers work"
-else:  # a software rasteriser: exact times only while the line is shown, and they are counted
-    assert shown["gl_finishes"] >= 2 * shown["frames"], r
-PY
-    ;;
-  window_hide_panel)  # H hides the panel (no ImGui window is built), a corner line says how to get it back, H shows it
-    window --script "frames:3,screenshot:$tmp/shown.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,frames:3,screenshot:$tmp/again.png"
-    png_python - "$tmp" <<'PY' || fail "H did not hide and restore the panel"
-import sys
-from png_tools import load, differing
-w, h, _ = load(f"{sys.argv[1]}/shown.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("shown", "hidden", "again")}
-stats = {"panel hidden/shown": differing(r["hidden"], r["shown"], 20, 60, 430, 400),
-         "panel again/shown": differing(r["again"], r["shown"], 20, 60, 430, 400),
-         "hint hidden/again": differing(r["hidden"], r["again"], 12, h - 34, 250, h - 14, step=1)}
-print(stats)
-assert stats["panel hidden/shown"] > 0.2, "H did not hide the panel"
-assert stats["panel again/shown"] < 0.01, "H again did not bring the panel back"
-assert stats["hint hidden/again"] > 0.03, "no 'press H' line in the corner while the panel is hidden"
-PY
-    ;;
-  window_check_async)  # Check runs on a worker thread: the window keeps drawing, with a progress bar, then the result
-    window --lab 5 --script "frames:3,screenshot:$tmp/before.png,check,frames:2,screenshot:$tmp/running.png,frames:2,screenshot:$tmp/running2.png,wait:12,frames:3,screenshot:$tmp/done.png"
-    png_python - "$tmp" <<'PY' || fail "the Check did not run alongside the frames"
-import os, sys
-from png_tools import load
-d = sys.argv[1]
-r = {n: load(f"{d}/{n}.png")[2] for n in ("before", "running", "running2", "done")}
-# ImGui's progress bar fill (PlotHistogram, dark style: 230, 179, 0) in the panel; FAIL lines are red.
-bar = lambda rows: sum(1 for y in range(20, 700, 2) for x in range(20, 430, 2)
-                       if rows[y][4 * x] > 200 and 150 < rows[y][4 * x + 1] < 200 and rows[y][4 * x + 2] < 40)
-red = lambda rows: sum(1 for y in range(20, 840, 2) for x in range(20, 430, 2)
-                       if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
-t = {n: os.path.getmtime(f"{d}/{n}.png") for n in r}
-stats = {"bar before": bar(r["before"]), "bar running": bar(r["running"]), "bar running2": bar(r["running2"]),
-         "bar done": bar(r["done"]), "red before": red(r["before"]), "red done": red(r["done"]),
-         "seconds running->running2": round(t["running2"] - t["running"], 2)}
-print(stats)
-assert stats["bar before"] == 0 and stats["bar done"] == 0, "a progress bar outside the check"
-assert stats["bar running"] > 20 and stats["bar running2"] > 20, "no progress bar while the check runs"
-# Two frames while lab 5's check (about 4 s) runs take far less than the check: the loop is not blocked.
-assert stats["seconds running->running2"] < 2.0, "frames stalled during the check"
-assert stats["red done"] > stats["red before"] + 20, "the result (the stock exercise's FAILs) is not shown"
-PY
-    ;;
-  window_resize_minimise)  # resizing, minimising, fullscreen and back: no crash, pictures of the right size
-    window --lab 5 --script "frames:2,resize:800x500,frames:3,screenshot:$tmp/small.png,iconify,wait:0.5,restore,wait:0.3,frames:2,key:m,key:f11,frames:3,screenshot:$tmp/full.png,key:f11,frames:3,screenshot:$tmp/back.png"
-    png_python - "$tmp" <<'PY' || fail "wrong picture sizes"
-import sys
-from png_tools import load
-sizes = {n: load(f"{sys.argv[1]}/{n}.png")[:2] for n in ("small", "full", "back")}
-print(sizes)
-assert sizes["small"] == (800, 500), sizes
-assert sizes["full"] == (1440, 900), sizes
-assert sizes["back"] == (800, 500), sizes
-PY
-    ;;
-  window_drop)  # a bad file dropped on the window shows an error in the panel; a good one replaces the scene
-    echo "not a model" >"$tmp/bad.gltf"
-    window --script "frames:2,screenshot:$tmp/before.png,drop:$tmp/bad.gltf,frames:2,screenshot:$tmp/bad.png,drop:$src/assets/models/Duck/Duck.glb,frames:3,screenshot:$tmp/duck.png"
-    png_python - "$tmp" <<'PY' || fail "drop not shown as expected"
-import sys
-from png_tools import load, differing
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "bad", "duck")}
-w, h = 1440, 860
-red = lambda rows: sum(1 for y in range(20, 400) for x in range(20, 430)
-                       if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
-stats = {"red before": red(r["before"]), "red bad": red(r["bad"]), "red duck": red(r["duck"]),
-         "view bad/before": differing(r["bad"], r["before"], 460, 60, w - 20, h - 60),
-         "view duck/before": differing(r["duck"], r["before"], 460, 60, w - 20, h - 60)}
-print(stats)
-assert stats["red bad"] > stats["red before"] + 200, "no error text in the panel"
-assert stats["red duck"] < stats["red bad"], "the error stayed after a good file"
-assert stats["view bad/before"] < 0.01, "a bad file changed the scene"
-assert stats["view duck/before"] > 0.05, "the dropped model is not shown"
-PY
-    ;;
-  window_bad_script)
-    expect_error "--script: bad step 'key:nokey'" "$bin" --script "frames:1,key:nokey"
-    for step in "click:62" "click:62;" "click:x;302" "click:-1;302"; do expect_error "--script: bad step '$step'" "$bin" --script "frames:1,$step"; done
     ;;
   render_panel)  # the panel drawn offscreen over the frame, with the Check's result in words, visible at 1280x720 without scrolling
     "$bin" render --lab 1 --impl exercise --out "$tmp/plain" --width 1280 --height 720 >/dev/null || fail "render failed"
@@ -731,22 +493,6 @@ assert y - y0 > 100 and b - b0 > 100, "the legend's bar does not run from the sh
 assert stats["ramp ends without the view"][1] < 20, "a legend's bar with the debug view off"
 PY
     ;;
-  window_annotations)  # issue 35: the window draws the same labels over its debug quads (lab 12's cascades)
-    window --lab 12 --size 1280x720 --script "frames:3,screenshot:$tmp/shown.png"
-    window --lab 12 --size 1280x720 --set view.debug_quad=false --script "frames:3,screenshot:$tmp/hidden.png"
-    png_python - "$tmp" <<'PY' || fail "the window draws no labels over its debug quads"
-import sys
-from png_tools import load
-w, h, shown = load(f"{sys.argv[1]}/shown.png")
-# Near-white label text in the strip right above the quads (90 px squares at the bottom right).
-white = lambda rows: sum(1 for y in range(h - 140, h - 100) for x in range(w - 378, w - 4)
-                         if min(rows[y][4 * x:4 * x + 3]) > 215)
-hidden = load(f"{sys.argv[1]}/hidden.png")[2]
-stats = {"label text pixels": white(shown), "without the quads": white(hidden)}
-print(stats)
-assert stats["label text pixels"] > 60 and stats["without the quads"] < 10, "no label text over the quads"
-PY
-    ;;
   render_bench_plot)  # the Speed against error window drawn over the frame from a bench.json; bad files refused
     python3 - "$tmp/b.json" <<'PY'
 import json, sys
@@ -777,26 +523,6 @@ PY
     [ ! -e "$tmp/never" ] || fail "a refused bench.json still created the output folder"
     expect_error "none.json: cannot open the file" "$bin" render --panel --bench "$tmp/none.json" --out "$tmp/never"
     expect_error "--panel" "$bin" render --bench "$tmp/b.json" --out "$tmp/never"
-    ;;
-  window_bench)  # --bench opens the plot window; a bad file stops before the window, settings untouched
-    cp "$src/docs/bench.json" "$tmp/b.json"
-    window --frames 3 --screenshot "$tmp/plain.png"
-    window --bench "$tmp/b.json" --frames 3 --screenshot "$tmp/plot.png"
-    png_python - "$tmp" <<'PY' || fail "no plot window in the screenshot"
-import sys
-from png_tools import load, differing
-w, h, plain = load(f"{sys.argv[1]}/plain.png")
-_, _, plot = load(f"{sys.argv[1]}/plot.png")
-d = differing(plain, plot, w - 640, 60, w - 40, 500)
-print("plot window region differs:", d)
-assert d > 0.5
-PY
-    rm -f "$SHADOWLAB_SETTINGS"
-    echo 'not json' >"$tmp/bad.json"
-    xvfb-run -a -s "-screen 0 1440x900x24" "$bin" --bench "$tmp/bad.json" --frames 3 >"$tmp/out" 2>"$tmp/err" \
-      && fail "exit 0 with a bad --bench file"
-    grep -qF "bad.json: not valid JSON" "$tmp/err" || fail "the error does not name the file: $(cat "$tmp/err")"
-    [ ! -e "$SHADOWLAB_SETTINGS" ] || fail "a failed start wrote the settings file"
     ;;
   hostile_models)  # issue 18: every hostile model refused by render in one printable line, within 10 s and 1 GB
     [ -x "${SHADOWLAB_HOSTILE_CASES:-}" ] || fail "SHADOWLAB_HOSTILE_CASES is not the hostile_cases tool"
@@ -858,25 +584,6 @@ PY
     timeout 60 xvfb-run -a "$bin" --bench "$tmp/bench.json" --frames 2 >"$tmp/out" 2>"$tmp/err"; rc=$?
     [ "$rc" -eq 2 ] || fail "window --bench FIFO: exit $rc (2, usage, expected): $(cat "$tmp/err")"
     grep -qF "is a FIFO, not a regular file" "$tmp/err" || fail "$(cat "$tmp/err")"
-    ;;
-  window_drop_hostile)  # issue 18: a dropped model with a huge or hostile error text: no abort, bounded panel text
-    [ -x "${SHADOWLAB_HOSTILE_CASES:-}" ] || fail "SHADOWLAB_HOSTILE_CASES is not the hostile_cases tool"
-    "$SHADOWLAB_HOSTILE_CASES" "$tmp/cases" >/dev/null || fail "could not write the cases"
-    window --script "frames:2,drop:$tmp/cases/long_uri.gltf,frames:2,drop:$tmp/cases/data_uri_60mb.gltf,frames:2,drop:$tmp/cases/data_uri_30mb.gltf,frames:2,drop:$tmp/cases/escape_uri.gltf,frames:2,drop:$tmp/cases/deep_extras.gltf,frames:2,screenshot:$tmp/shot.png"
-    [ "$(grep -c "cannot open the dropped file" "$tmp/err")" -eq 5 ] || fail "not every error on the terminal: $(cat "$tmp/err")"
-    [ "$(wc -c <"$tmp/err")" -lt 5000 ] || fail "$(wc -c <"$tmp/err") bytes of errors for 5 files"
-    grep -qF '(20004 bytes)' "$tmp/err" || fail "the long URI is not cut: $(head -c 600 "$tmp/err")"
-    grep -qF '\x1B[2J' "$tmp/err" || fail "the escape sequence is not shown escaped"
-    LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$tmp/err" && fail "control characters on the terminal"
-    png_python - "$tmp" <<'PY' || fail "no error shown in the panel"
-import sys
-from png_tools import load
-w, h, rows = load(f"{sys.argv[1]}/shot.png")
-red = sum(1 for y in range(20, 500) for x in range(20, 430)
-          if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
-print("red pixels in the panel:", red)
-assert red > 200
-PY
     ;;
   labs_presets)  # issue 35: every lab's presets as JSON, each with the artifact it provokes and the preset that fixes it
     "$bin" labs --presets --json >"$tmp/presets.json" || fail "labs --presets --json: exit $?"
@@ -979,138 +686,6 @@ PY
     [ "$rc" -eq 1 ] || fail "check --preset acne of lab 1's solution: exit $rc, expected 1: $(tail -3 "$tmp/out" "$tmp/err")"
     python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['parameters']['shadow.bias'] == 0 and not r['passed'], r['parameters']" \
       "$tmp/check.json" || fail "the check did not grade with the preset"
-    ;;
-  window_one_off)  # issue 35: --set, --preset, --impl, --camera are for one run: the settings file is as it was after it
-    window --lab 1 --frames 3 --screenshot "$tmp/plain1.png"  # the first run writes the lab's values and the camera
-    [ -s "$SHADOWLAB_SETTINGS" ] || fail "no settings written by a plain run"
-    cp "$SHADOWLAB_SETTINGS" "$tmp/kept.json"
-    window --lab 1 --frames 3 --screenshot "$tmp/given.png" --preset peter-panning --set view.debug_quad_size=0.8 \
-      --impl solution --camera "eye=0,1,3 target=0,1,2 fov=40"
-    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" ||
-      fail "a run with --set/--preset/--impl/--camera changed the settings: $(diff "$tmp/kept.json" "$SHADOWLAB_SETTINGS" | head -20)"
-    window --lab 1 --frames 3 --screenshot "$tmp/plain2.png"
-    cmp -s "$SHADOWLAB_SETTINGS" "$tmp/kept.json" || fail "the run after the one-off run changed the settings"
-    png_python - "$tmp" <<'PY' || fail "the one-off values were not shown, or they persisted"
-import sys
-from png_tools import load, differing
-w, h, _ = load(f"{sys.argv[1]}/plain1.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain1", "given", "plain2")}
-view = (460, 60, w - 20, h - 60)
-stats = {"given/plain1": differing(r["given"], r["plain1"], *view), "plain2/plain1": differing(r["plain2"], r["plain1"], *view)}
-print(stats)
-assert stats["given/plain1"] > 0.2, "the command line's values were not shown"
-assert stats["plain2/plain1"] < 0.01, "the command line's values came back at the next start"
-PY
-    # A camera moved in the window (R: the scene framed, 45 degrees) is kept, --camera or not.
-    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
-import json, sys
-j = json.load(open(sys.argv[1])); j["camera"]["fov_y_deg"] = 30; json.dump(j, open(sys.argv[1], "w"))
-PY
-    window --lab 1 --camera "eye=0,1,3 target=0,1,2 fov=40" --script "frames:2,key:r,frames:2"
-    python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['camera']; assert c['fov_y_deg'] == 45, c" "$SHADOWLAB_SETTINGS" ||
-      fail "the camera reset by R was not kept: $(cat "$SHADOWLAB_SETTINGS")"
-    ;;
-  window_details)  # issue 35: F12 saves in the pictures folder and says where over the view; the text size is kept
-    mkdir -p "$tmp/home"
-    # F12 with no SHADOWLAB_SCREENSHOTS: the pictures folder (here ~/Pictures: no xdg-user-dirs file in this home).
-    HOME="$tmp/home" XDG_CONFIG_HOME= XDG_PICTURES_DIR= window --lab 1 \
-      --script "frames:3,screenshot:$tmp/before.png,key:f12,frames:2,screenshot:$tmp/toast.png"
-    shots=("$tmp"/home/Pictures/shadowlab/shadowlab-lab01-*.png)
-    [ "${#shots[@]}" -eq 1 ] && [ -s "${shots[0]}" ] || fail "F12 saved no picture in ~/Pictures/shadowlab: $(ls -R "$tmp/home")"
-    grep -qF "screenshot saved to ${shots[0]}" "$tmp/out" || fail "F12 did not say where: $(cat "$tmp/out")"
-    SHADOWLAB_SCREENSHOTS="$tmp/shots" window --lab 1 --script "frames:2,key:f12,frames:2,key:f12,frames:2"
-    [ "$(ls "$tmp/shots" | grep -c '^shadowlab-lab01-.*\.png$')" -eq 2 ] || fail "two F12s, not two pictures in \$SHADOWLAB_SCREENSHOTS: $(ls "$tmp/shots")"
-    # The text size kept in the settings is the panel's at the next start, and stays kept.
-    python3 - "$SHADOWLAB_SETTINGS" <<'PY'
-import json, sys
-j = json.load(open(sys.argv[1])); j.setdefault("ui", {})["text_size"] = 2; json.dump(j, open(sys.argv[1], "w"))
-PY
-    window --lab 1 --frames 3 --screenshot "$tmp/large.png"
-    python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['ui']['text_size'] == 2" "$SHADOWLAB_SETTINGS" || fail "text size lost"
-    png_python - "$tmp" <<'PY' || fail "no feedback over the view after F12, or the kept text size was not used"
-import sys
-from png_tools import load, differing
-w, h, _ = load(f"{sys.argv[1]}/before.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("before", "toast", "large")}
-stats = {"toast: bottom centre": differing(r["toast"], r["before"], w // 2 - 200, h - 40, w // 2 + 200, h - 12, step=1),
-         "text size 2: panel": differing(r["large"], r["before"], 20, 60, 430, 400)}
-print(stats)
-assert stats["toast: bottom centre"] > 0.05, "F12 showed nothing at the bottom of the view"
-assert stats["text size 2: panel"] > 0.2, "the kept text size was not used"
-PY
-    ;;
-  window_demo)  # issue 35: demo mode at 1280x720: F-keys choose presets, Page Down / Up step the story, a large caption says which
-    # Lab 1's presets: acne, peter-panning, tuned (F3; the lab's defaults, so only the caption changes the picture), cull front, no culling.
-    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,key:f3,frames:3,screenshot:$tmp/tuned.png,key:pageup,frames:3,screenshot:$tmp/back.png,key:pagedown,frames:3,screenshot:$tmp/again.png,key:h,frames:3,screenshot:$tmp/hidden.png,key:h,key:f1,frames:3,screenshot:$tmp/acne.png,key:f2,frames:3,key:f3,frames:3,screenshot:$tmp/f2f3.png"
-    # The same preset with the solution: it needs no working exercise, so its caption says nothing of one.
-    window --lab 1 --size 1280x720 --impl solution --script "frames:2,key:f1,frames:3,screenshot:$tmp/acne_solution.png"
-    # Lab 9's stock exercise emits no volumes: its z-pass preset (F2) shows nothing there; "Solution beside it" does.
-    window --lab 9 --size 1280x720 --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass.png,solution-beside,frames:3,screenshot:$tmp/beside.png"
-    window --lab 9 --size 1280x720 --impl solution --script "frames:2,key:f2,frames:3,screenshot:$tmp/zpass_solution.png"
-    png_python - "$tmp" <<'PY' || fail "the presets' keys, the story or the caption did not work"
-import sys
-from png_tools import load, differing
-w, h, _ = load(f"{sys.argv[1]}/plain.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "tuned", "back", "again", "f2f3", "hidden", "acne", "acne_solution", "zpass", "zpass_solution", "beside")}
-# The caption's line for a preset that needs a working exercise is in the panel's hint colour (242, 204, 115).
-yellow = lambda rows: sum(1 for y in range(0, 200) for x in range(460, 950)
-                          if rows[y][4 * x] > 200 and 170 < rows[y][4 * x + 1] < 230 and 80 < rows[y][4 * x + 2] < 150)
-top = (460, 0, 950, 200)              # the caption: top of the view, right of the panel, left of the pass-time line
-below = (460, 300, w - 10, h - 60)    # the view under it
-stats = {"caption tuned/plain": differing(r["tuned"], r["plain"], *top),
-         "view tuned/plain": differing(r["tuned"], r["plain"], *below),
-         "caption back/tuned (Page Up)": differing(r["back"], r["tuned"], *top),
-         "view back/tuned (Page Up)": differing(r["back"], r["tuned"], *below),
-         # Page Down from peter-panning: "tuned" over peter-panning's camera (a preset without a view keeps
-         # the one shown), the same picture as pressing F2 then F3; its view differs from peter-panning's.
-         "all again/F2 then F3 (Page Down)": differing(r["again"], r["f2f3"], 0, 0, w, h),
-         "view again/back (Page Down)": differing(r["again"], r["back"], *below),
-         "caption hidden panel/plain": differing(r["hidden"], r["plain"], w // 4, 0, 3 * w // 4, 120)}
-# How tall the caption is: the rows where F3 changed the picture (a lecture hall's back row needs large text).
-rows = [y for y in range(0, h // 2) if any(sum(abs(r["tuned"][y][4 * x + c] - r["plain"][y][4 * x + c]) for c in range(3)) > 24
-                                            for x in range(460, 950, 2))]
-stats["caption rows"] = (rows[0], rows[-1]) if rows else None
-stats["needs-exercise line: acne exercise, solution, tuned"] = (yellow(r["acne"]), yellow(r["acne_solution"]), yellow(r["tuned"]))
-print(stats)
-assert stats["caption tuned/plain"] > 0.05, "F3 showed no caption"
-assert stats["view tuned/plain"] < 0.01, "F3 (the lab's defaults) changed the view, or the caption is not at the top"
-assert rows and rows[-1] - rows[0] >= 60, "the caption is too small to read from afar"
-assert stats["caption back/tuned (Page Up)"] > 0.05 and stats["view back/tuned (Page Up)"] > 0.01, "Page Up did not step back to peter-panning"
-assert stats["all again/F2 then F3 (Page Down)"] < 0.005 and stats["view again/back (Page Down)"] > 0.01, \
-    "Page Down did not step forward to tuned again"
-assert stats["caption hidden panel/plain"] > 0.05, "the caption went with the panel (H)"
-# "Solution beside it": the right half is the solution's (as in zpass_solution), the left stays the exercise's.
-mid = w // 2  # the divider (compare.divider 0.5 of the width); right of it, where the scene's shadows fall
-stats["beside: right vs solution, right vs exercise, left vs exercise"] = (
-    differing(r["beside"], r["zpass_solution"], mid + 20, 330, 1000, 600),
-    differing(r["beside"], r["zpass"], mid + 20, 330, 1000, 600),
-    differing(r["beside"], r["zpass"], 470, 300, mid - 20, h - 60))
-print(stats["beside: right vs solution, right vs exercise, left vs exercise"])
-rs, re_, le = stats["beside: right vs solution, right vs exercise, left vs exercise"]
-assert re_ > 0.02 and rs < re_ / 3 and le < re_ / 3, "Solution beside it did not put the solution's picture on the right"
-ex, sol, tuned = stats["needs-exercise line: acne exercise, solution, tuned"]
-assert ex > 300 and sol < ex / 20 and tuned < ex / 20, "the caption does not say which presets need a working exercise"
-PY
-    ;;
-  window_click)  # issue 35: a click on a panel button, through ImGui's mouse callbacks, does what the button says
-    # Lab 1 at 1280x720: the button "F4 cull front" has its centre at (62, 302) in the panel (measured in a
-    # screenshot of this layout). Clicking it must give the picture F4 gives (the preset's values, camera and
-    # caption). A click that misses it leaves the view as it was (at (62, 340), below the button: 0.08 % of the view changed, against 90 % for the hit).
-    window --lab 1 --size 1280x720 --script "frames:3,screenshot:$tmp/plain.png,click:62;302,frames:3,screenshot:$tmp/clicked.png"
-    window --lab 1 --size 1280x720 --script "frames:3,key:f4,frames:3,screenshot:$tmp/f4.png"
-    png_python - "$tmp" <<'PY' || fail "clicking the preset's button did not choose the preset"
-import sys
-from png_tools import load, differing
-w, h, _ = load(f"{sys.argv[1]}/plain.png")
-r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("plain", "clicked", "f4")}
-# Right of the panel, above and below the row where the button's tooltip (its description) spills into the view.
-above, below = (460, 0, w, 300), (460, 340, w, h)
-stats = {"clicked/plain": (differing(r["clicked"], r["plain"], *above) + differing(r["clicked"], r["plain"], *below)) / 2,
-         "clicked/F4": (differing(r["clicked"], r["f4"], *above) + differing(r["clicked"], r["f4"], *below)) / 2}
-print(stats)
-assert stats["clicked/plain"] > 0.3, "the click changed (almost) nothing in the view: did it miss the button?"
-assert stats["clicked/F4"] < 0.005, "the click gave another picture than the preset's key F4"
-PY
     ;;
   *) fail "unknown case $case_name" ;;
 esac
