@@ -688,6 +688,20 @@ PY
     python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['parameters']['shadow.bias'] == 0 and not r['passed'], r['parameters']" \
       "$tmp/check.json" || fail "the check did not grade with the preset"
     ;;
+  check_solution_*)  # the lab's solution passes its check: exit 0
+    lab="${case_name#check_solution_}"
+    "$bin" check --lab "$lab" --impl solution --json "$tmp/check.json" || fail "solution of lab $lab does not pass"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['passed'] and r['thresholds'], r" "$tmp/check.json" \
+      || fail "JSON does not record a pass with thresholds"
+    ;;
+  check_exercise_*)  # the unmodified exercise fails its check: exit 1 (not 2, which is an error)
+    lab="${case_name#check_exercise_}"
+    "$bin" check --lab "$lab" --impl exercise --json "$tmp/check.json"
+    rc=$?
+    [ "$rc" -eq 1 ] || fail "exercise of lab $lab: exit $rc, expected 1 (a failed check)"
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert not r['passed'] and 'error' not in r, r" "$tmp/check.json" \
+      || fail "JSON does not record a plain failure"
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"
