@@ -18,9 +18,7 @@ Scene ao_occluders(const Scene& scene) {
 AoTruth evaluate_ao(const Oracle& oracle, const GBuffer& g, float radius, int strata) {
   if (!(radius > 0.0f) || !std::isfinite(radius)) throw std::invalid_argument("evaluate_ao: radius must be finite and positive");
   if (strata < 1) throw std::invalid_argument("evaluate_ao: strata must be at least 1");
-  const std::size_t count = static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height);
-  if (g.width < 0 || g.height < 0 || g.position.size() != count || g.normal.size() != count || g.covered.size() != count)
-    throw std::invalid_argument("evaluate_ao: G-buffer arrays do not match its size");
+  const std::size_t count = checked_pixel_count(g, "evaluate_ao");
   const auto start = std::chrono::steady_clock::now();
   AoTruth t;
   t.width = g.width;

@@ -253,19 +253,19 @@ bool Oracle::occluded(const glm::vec3& origin, const glm::vec3& direction, float
 
 float Oracle::ray_epsilon(const glm::vec3& p) const { return impl_->epsilon(p); }
 
-namespace {
-
-std::size_t checked_pixel_count(const GBuffer& gbuffer) {
-  if (gbuffer.width < 0 || gbuffer.height < 0) throw std::invalid_argument("oracle: negative G-buffer size");
+std::size_t checked_pixel_count(const GBuffer& gbuffer, const char* who) {
+  if (gbuffer.width < 0 || gbuffer.height < 0) throw std::invalid_argument(std::string(who) + ": negative G-buffer size");
   const std::size_t width = static_cast<std::size_t>(gbuffer.width);
   const std::size_t height = static_cast<std::size_t>(gbuffer.height);
   const std::size_t count = width * height;
   if (gbuffer.position.size() != count || gbuffer.normal.size() != count || gbuffer.covered.size() != count) {
-    throw std::invalid_argument("oracle: G-buffer arrays do not match its " + std::to_string(width) + "x" +
+    throw std::invalid_argument(std::string(who) + ": G-buffer arrays do not match its " + std::to_string(width) + "x" +
                                 std::to_string(height) + " size");
   }
   return count;
 }
+
+namespace {
 
 // Toward a directional light, unit length (zero for a positional light, whose position is checked).
 glm::vec3 checked_light_direction(const OracleLight& light) {
@@ -465,7 +465,7 @@ void classify_screen_band(Truth& truth, std::size_t k, const std::vector<std::ui
 
 Truth Oracle::evaluate(const GBuffer& gbuffer, const OracleLight& light, const BandSpec& band) const {
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t count = checked_pixel_count(gbuffer);
+  const std::size_t count = checked_pixel_count(gbuffer, "oracle");
   const glm::vec3 to_light_dir = checked_light_direction(light);
   Truth truth;
   truth.width = gbuffer.width;

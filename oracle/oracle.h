@@ -29,6 +29,10 @@ struct GBuffer {
   std::vector<std::uint8_t> covered;  // 1 where geometry was drawn, 0 for background
 };
 
+// The G-buffer's pixel count, width x height; throws std::invalid_argument, its message starting with `who`,
+// for a negative size or arrays that do not hold one entry per pixel (the hard, soft and AO truths' check).
+std::size_t checked_pixel_count(const GBuffer& gbuffer, const char* who);
+
 struct OracleLight {
   bool positional = false;
   glm::vec3 to_light{0, 1, 0};  // directional: unit vector from the scene toward the light

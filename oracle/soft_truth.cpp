@@ -108,10 +108,7 @@ void check_soft_inputs(const GBuffer& gbuffer, const OracleLight& light, float s
   if (!light.positional && !(size < std::numbers::pi_v<float>))
     throw std::invalid_argument("soft truth: a directional light's angular diameter must be below pi");
   if (strata < 1) throw std::invalid_argument("soft truth: strata must be >= 1");
-  if (gbuffer.width < 0 || gbuffer.height < 0) throw std::invalid_argument("soft truth: negative G-buffer size");
-  const std::size_t count = static_cast<std::size_t>(gbuffer.width) * static_cast<std::size_t>(gbuffer.height);
-  if (gbuffer.position.size() != count || gbuffer.normal.size() != count || gbuffer.covered.size() != count)
-    throw std::invalid_argument("soft truth: G-buffer arrays do not match its size");
+  checked_pixel_count(gbuffer, "soft truth");
   if (light.positional) {
     if (!finite(light.position)) throw std::invalid_argument("soft truth: light position is not finite");
   } else {
