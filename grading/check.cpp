@@ -5,13 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/platform.h"
 #include "grading/cpp_exercise.h"
 #include "core/image_io.h"
 
@@ -276,9 +275,12 @@ std::vector<std::string> CheckContext::grade_edited_cpp_files() {
     const auto copy = lab.compiled_copies.find(file.generic_string());
     if (copy == lab.compiled_copies.end()) continue;
     const std::filesystem::path on_disk = data_dir() / file;
-    std::ifstream in(on_disk, std::ios::binary);
-    if (!in) throw BuildError(copy->first + ": cannot be read (" + on_disk.string() + ")");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text;
+    try {  // a FIFO or a device is refused before it is opened, a file too large before it is read
+      text = platform::read_regular_file(on_disk, kMaxExerciseSourceBytes);
+    } catch (const std::exception& e) {
+      throw ExerciseError("compile_error", copy->first + ": " + e.what());
+    }
     if (without_carriage_returns(text) == without_carriage_returns(std::string(copy->second))) continue;
     if (const std::string why = platform::grading_unavailable(); !why.empty())
       throw ExerciseError("compile_error", copy->first + " has changed since this shadowlab was built: rebuild it "

@@ -18,7 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kSourceDir = SHADOWLAB_EXERCISE_SOURCE_DIR;  // where the lab's headers are
-constexpr std::uint64_t kMaxSourceBytes = 1 << 20;
 constexpr std::uint64_t kLogBytes = 4 << 20;  // what the running exercise may print, at most
 
 std::string read_file(const fs::path& path) {
@@ -123,7 +122,7 @@ std::string read_submitted(const CppExerciseSpec& spec) {
                                                " is a link; submit the file itself");
   }
   try {  // a FIFO or a device is refused before it is opened, a file too large before it is read
-    return platform::read_regular_file(spec.source, kMaxSourceBytes);
+    return platform::read_regular_file(spec.source, kMaxExerciseSourceBytes);
   } catch (const platform::FileError& e) {
     if (e.problem() == platform::FileProblem::NotFound)
       throw ExerciseError("compile_error", spec.display_name + ": not in the submission");

@@ -19,6 +19,7 @@
 // (CheckContext::grade_edited_cpp_files, grading/check.h).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -39,6 +40,9 @@ class ExerciseError : public std::runtime_error {
  private:
   std::string status_;
 };
+
+// The largest C++ exercise file read (a submission's, or an edited one on disk): an exercise is a few KB.
+inline constexpr std::uint64_t kMaxExerciseSourceBytes = 1 << 20;
 
 struct CppExerciseSpec {
   std::filesystem::path source;      // the student's file

@@ -258,6 +258,12 @@ PY
     grep -q "labs/12_cascaded_shadow_maps/exercise.cpp:[0-9]*:[0-9]*: error" "$tmp/out" || fail "the error does not name the student's line: $(cat "$tmp/out")"
     python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['labs'][0]; assert r['status']=='compile_error', r" "$tmp/broken.json" \
       || fail "the JSON does not record a compile error"
+    # A FIFO in the exercise's place (hostile, or a mistake): refused before it is opened, named, no hang.
+    rm "$tmp/data/labs/12_cascaded_shadow_maps/exercise.cpp" && mkfifo "$tmp/data/labs/12_cascaded_shadow_maps/exercise.cpp"
+    timeout 60 "$bin" check --lab 12 >"$tmp/out"; rc=$?
+    [ "$rc" -eq 1 ] || fail "a FIFO for the exercise: exit $rc, expected 1: $(cat "$tmp/out")"
+    grep -q "labs/12_cascaded_shadow_maps/exercise.cpp: is a FIFO, not a regular file" "$tmp/out" \
+      || fail "the FIFO is not named: $(cat "$tmp/out")"
     ;;
   check_foreign_scene)  # issue 36: on a scene not the lab's own, what the solution fails there is graded against its own value
     duck="$src/assets/models/Duck/Duck.gltf"
