@@ -221,6 +221,7 @@ class Loader {
 template <typename V>
 std::vector<V> Loader::read_floats(int index, const std::string& what) const {
   const auto& a = model_.accessors[static_cast<std::size_t>(index)];
+  check_readable(index);  // element() needs a bufferView; the range check skipped accessors with none
   const int n = a.type == TINYGLTF_TYPE_VEC2 ? 2 : a.type == TINYGLTF_TYPE_VEC3 ? 3 : a.type == TINYGLTF_TYPE_VEC4 ? 4 : 0;
   const int c = a.componentType;
   if (n == 0 || n > V::length() ||

@@ -545,6 +545,32 @@ TEST_F(GltfHandMade, UnsoundNormalsAreRecomputed) {
   for (const glm::vec3& n : scene.meshes[0].normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
 }
 
+// An accessor with no bufferView (legal glTF: all zeros) read as COLOR_0 or as a texture's TEXCOORD_0 is
+// refused by name. The range check skips such accessors, so reading one indexed bufferViews[-1]: found by
+// the fuzzer (UBSan: pointer overflow in Loader::element, from read_floats).
+TEST_F(GltfHandMade, ColourAndTexcoordWithoutBufferViewAreRefused) {
+  Doc colour = triangle_doc();
+  colour.j["accessors"].push_back({{"componentType", kFloat}, {"count", 3}, {"type", "VEC4"}});
+  colour.j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 1;
+  const std::string c = load_error(colour.write(dir_ / "colour.gltf"));
+  EXPECT_NE(c.find("colour.gltf: accessor 1 (COLOR_0 of mesh 0 primitive 0) has no bufferView (all zeros)"),
+            std::string::npos)
+      << c;
+
+  Doc uv = triangle_doc();
+  uv.j["accessors"].push_back({{"componentType", kFloat}, {"count", 3}, {"type", "VEC2"}});
+  uv.j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 1;
+  uv.j["meshes"][0]["primitives"][0]["material"] = 0;
+  uv.j["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+  uv.j["textures"] = json::array({{{"source", 0}}});
+  uv.j["images"] = json::array({{{"uri", "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElE"
+                                         "QVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC"}}});
+  const std::string t = load_error(uv.write(dir_ / "texcoord.gltf"));
+  EXPECT_NE(t.find("texcoord.gltf: accessor 1 (TEXCOORD_0 of mesh 0 primitive 0) has no bufferView (all zeros)"),
+            std::string::npos)
+      << t;
+}
+
 TEST_F(GltfHandMade, MaterialColourAndNames) {
   Doc d;
   const int position = d.vec3s(kTriangle);
