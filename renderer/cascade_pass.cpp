@@ -5,7 +5,6 @@
 #include <string_view>
 
 #include "core/image_io.h"
-#include "renderer/lit_pass.h"
 
 namespace shadowlab {
 
@@ -134,11 +133,9 @@ void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
   glActiveTexture(GL_TEXTURE0);
 }
 
-void CascadePass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (ctx.params.get(param::csm_show_cascades)) {
-    ctx.timed("cascade_view", [&] { lit.draw(ctx, LitVariant::CascadeView); });
-    if (ctx.annotations) ctx.annotations->legends.push_back(cascade_view_legend(count_));
-  }
+std::optional<LitView> CascadePass::lit_view(const ParamSet& params) const {
+  if (!params.get(param::csm_show_cascades)) return std::nullopt;
+  return LitView{{LitVariant::CascadeView, "cascade_view"}, cascade_view_legend(count_)};
 }
 
 void CascadePass::draw_debug_quads(const DebugQuadArea& area) {

@@ -31,7 +31,7 @@ class CascadePass final : public ShadowPass {
   void frame_inputs(PassContext& ctx, std::vector<float>& out) override;
   void draw_map(PassContext& ctx) override;
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
-  void draw_views(PassContext& ctx, LitPass& lit) override;
+  std::optional<LitView> lit_view(const ParamSet& params) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   // Texels per side of one cascade's map.
   int size() const override { return size_; }

@@ -40,7 +40,11 @@ std::vector<VolumeMeshReport> DebugViews::volume_report() const {
 
 void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   const ParamSet& params = ctx.params;
-  shadow.draw_views(ctx, lit);
+  // The technique's own false-colour view, drawn by the lit pass where the technique asks for it.
+  if (std::optional<LitView> view = shadow.lit_view(params)) {
+    ctx.timed(view->draw.name, [&] { lit.draw(ctx, view->draw.variant); });
+    if (ctx.annotations) ctx.annotations->legends.push_back(std::move(view->legend));
+  }
   // The facets first, so the normals' lines are drawn over them.
   if (params.get(param::view_flat_normals)) ctx.timed("flat_normals_view", [&] { flat_normals(ctx, lit); });
   if (params.get(param::view_normals)) ctx.timed("normals_view", [&] { normals(ctx, lit); });

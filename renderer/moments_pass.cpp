@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "renderer/lit_pass.h"
 #include "core/vsm_params.h"
 
 namespace shadowlab {
@@ -244,11 +243,9 @@ void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) 
   glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
 }
 
-void MomentsPass::draw_views(PassContext& ctx, LitPass& lit) {
-  if (ctx.params.get(param::vsm_show_remap)) {
-    ctx.timed("remap_view", [&] { lit.draw(ctx, LitVariant::RemapView); });
-    if (ctx.annotations) ctx.annotations->legends.push_back(remap_view_legend());
-  }
+std::optional<LitView> MomentsPass::lit_view(const ParamSet& params) const {
+  if (!params.get(param::vsm_show_remap)) return std::nullopt;
+  return LitView{{LitVariant::RemapView, "remap_view"}, remap_view_legend()};
 }
 
 void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {

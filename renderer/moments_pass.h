@@ -106,7 +106,7 @@ class MomentsPass final : public ShadowPass {
   // The moments on unit 0, vsm.min_variance and vsm.bleed_delta.
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
   // vsm.show_remap: tints the pixels whose visibility the light-bleeding remap lowered.
-  void draw_views(PassContext& ctx, LitPass& lit) override;
+  std::optional<LitView> lit_view(const ParamSet& params) const override;
   // view.debug_channel "all": E[z], E[z^2] and the variance left to right; else that one channel.
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }

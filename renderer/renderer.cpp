@@ -304,7 +304,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   // 2b. Each further shadowed light's own map, with its own inputs: moving one leaves the others' alone.
   for (ShadowedLight& light : lights_) light.update(ctx, placement_, scene_generation_);
   ctx.lights = &lights_;
-  shadow.draw_view_passes(ctx, *lit_);
+  if (shape.lit_first) ctx.timed(shape.lit_first->name, [&] { lit_->draw(ctx, shape.lit_first->variant); });
+  shadow.draw_view_passes(ctx, ViewTarget{lit_->framebuffer(), lit_->width(), lit_->height()});
 
   // 3. Lit pass from the camera, reading the shadow map (or the moments, or the stencil).
   ctx.timed("lit", [&] { lit_->draw(ctx, shape.lit); });

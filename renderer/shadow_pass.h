@@ -6,17 +6,22 @@
 //   2. draw_map          the shadow map from the light, only when one of its inputs changed (the
 //                        renderer decides: the parameters declared kInvalidatesShadowMap, the light,
 //                        the scene, the targets, the pass's program generations)
-//      draw_view_passes  what the camera's view needs before the lit pass (shadow volumes' stencil)
+//      draw_view_passes  what the camera's view needs before the lit pass (shadow volumes' stencil),
+//                        after the lit draw the pass's shape asks for first (Shape::lit_first)
 //   3. bind_lit_inputs   what the lit pass reads: textures and the technique's uniforms
-//   4. draw_views, draw_debug_quads   the technique's own debug views and its map in the corner
+//   4. lit_view, draw_debug_quads   the false-colour view the technique asks the lit pass for, and its
+//                        map in the corner
 //
-// A new technique is a class implementing this and one line in shadow_passes.cpp.
+// A pass never draws the lit pass itself: it says which lit variants it wants and when (its shape, its
+// lit_view), and the renderer draws them. A new technique is a class implementing this and one line in
+// shadow_passes.cpp.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -150,7 +155,24 @@ struct DebugQuadArea {
   void place(int x, int y, int quad_width, int quad_height, const std::string& label) const;
 };
 
-class LitPass;
+// The camera view's target: where a pass draws what the view needs before the lit pass.
+struct ViewTarget {
+  GLuint framebuffer = 0;
+  int width = 0, height = 0;
+};
+
+// A lit draw a pass asks the renderer for: the lit program's variant and its name among the pass times.
+struct LitDraw {
+  LitVariant variant = LitVariant::Lit;
+  const char* name = "";
+};
+
+// A false-colour view a pass asks for after the frame is lit (the variance remap, the cascades): the lit
+// draw, and the legend shown over the view.
+struct LitView {
+  LitDraw draw;
+  ColourLegend legend;
+};
 
 class ShadowPass {
  public:
@@ -163,6 +185,8 @@ class ShadowPass {
     LitVariant lit = LitVariant::Lit;  // what the lit pass draws
     // Every variant the pass uses (lit included), built with its includes.
     std::vector<LitVariant> lit_variants{LitVariant::Lit};
+    // A lit draw before draw_view_passes (shadow volumes: the ambient pass that lays the depth down).
+    std::optional<LitDraw> lit_first{};
   };
   // A constant of the technique, returned by reference: the frame asks for it twice and allocates nothing.
   virtual const Shape& shape() const {
@@ -185,7 +209,7 @@ class ShadowPass {
   virtual void frame_inputs(PassContext&, std::vector<float>& out) { out.clear(); }
   // 2. The shadow map, from the light.
   virtual void draw_map(PassContext&) {}
-  virtual void draw_view_passes(PassContext&, LitPass&) {}
+  virtual void draw_view_passes(PassContext&, const ViewTarget&) {}
   // 3. Binds what the lit pass reads (texture unit 0 is u_shadow_map) and sets the technique's
   // uniforms; leaves texture unit 0 active.
   virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
@@ -193,8 +217,9 @@ class ShadowPass {
   // (the same bind_lit_inputs sets; a shadow test's own come from the test, ShadowTest::constants);
   // empty by default. Only parameters declaring kInvalidatesPrograms may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
   virtual void lit_constants(const ParamSet&, LitConstants& out) const { out.clear(); }
-  // 4. The technique's own debug views (after the lit pass), and its map in the corner.
-  virtual void draw_views(PassContext&, LitPass&) {}
+  // 4. The technique's own false-colour view for these parameters, drawn by the renderer after the lit
+  // pass (none by default), and its map in the corner.
+  virtual std::optional<LitView> lit_view(const ParamSet&) const { return std::nullopt; }
   virtual void draw_debug_quads(const DebugQuadArea&) {}
 
   // A filter matched to the light's size (pcf.match_light, vsm.match_light; FrameLight::

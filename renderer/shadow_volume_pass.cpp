@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "core/adjacency.h"
-#include "renderer/lit_pass.h"
 
 namespace shadowlab {
 
@@ -25,14 +24,13 @@ std::map<std::string, std::string> ShadowVolumePass::default_includes(LightType)
 
 void ShadowVolumePass::for_each_program(const std::function<void(ReloadableProgram&)>& f) { f(program_); }
 
-void ShadowVolumePass::draw_view_passes(PassContext& ctx, LitPass& lit) {
+void ShadowVolumePass::draw_view_passes(PassContext& ctx, const ViewTarget& view) {
   const bool z_fail = ctx.params.get(param::volume_method) == "z-fail";
-  // 1. The scene with ambient light only: colour, depth (and the G-buffer, visibility 0).
-  ctx.timed("ambient", [&] { lit.draw(ctx, LitVariant::VolumeAmbient); });
-  // 2. The volumes into the stencil buffer.
+  // 1. The scene with ambient light only (colour, depth and the G-buffer, visibility 0) is drawn by the
+  // renderer first (shape().lit_first). 2. The volumes into the stencil buffer.
   ctx.timed("volumes", [&] {
-    glBindFramebuffer(GL_FRAMEBUFFER, lit.framebuffer());
-    glViewport(0, 0, lit.width(), lit.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, view.framebuffer);
+    glViewport(0, 0, view.width, view.height);
     glClearStencil(0);
     glClear(GL_STENCIL_BUFFER_BIT);
     draw_stencil(ctx.camera_view_proj(), ctx.light.vector4(), z_fail, ctx.stats.draws);

@@ -62,7 +62,8 @@ class ShadowVolumePass final : public ShadowPass {
   static std::map<std::string, std::string> default_includes(LightType light);
 
   const Shape& shape() const override {
-    static const Shape volumes{false, true, LitVariant::VolumeAdditive, {LitVariant::VolumeAdditive, LitVariant::VolumeAmbient}};
+    static const Shape volumes{false, true, LitVariant::VolumeAdditive, {LitVariant::VolumeAdditive, LitVariant::VolumeAmbient},
+                               LitDraw{LitVariant::VolumeAmbient, "ambient"}};
     return volumes;
   }
   // Points "lab/volume.glsl" at a file (default shaders/volume/volume.glsl) and rebuilds; false (old
@@ -70,8 +71,9 @@ class ShadowVolumePass final : public ShadowPass {
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet&) override { return false; }
-  // The ambient pass, then the volumes into the stencil buffer (volume.method: z-fail or z-pass).
-  void draw_view_passes(PassContext& ctx, LitPass& lit) override;
+  // The volumes into the stencil buffer (volume.method: z-fail or z-pass), after the ambient pass
+  // (shape().lit_first) laid the depth down.
+  void draw_view_passes(PassContext& ctx, const ViewTarget& view) override;
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
   int size() const override { return 0; }
   // No shadow map: a 16 x 16 grey placeholder keeps the outputs' shape.

@@ -18,5 +18,14 @@ for i in "${!rooms[@]}"; do
     bad=1
   fi
 done
+# Inside the renderer the passes stand below the lit pass: a pass says which lit draws it wants
+# (ShadowPass::Shape::lit_first, lit_view) and the renderer draws them; no pass calls the lit pass.
+# Only the renderer and its debug views (and the lit pass itself) include renderer/lit_pass.h.
+hits=$(cd "$root" && grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"renderer/lit_pass.h"' -r core oracle renderer grading labs app |
+       grep -vxE 'renderer/(lit_pass|renderer|debug_views)\.(h|cpp)' | sort || true)
+if [ -n "$hits" ]; then
+  echo "$hits" | sed "s|^|rooms: includes renderer/lit_pass.h (a pass asks for lit draws, it never draws the lit pass): |" >&2
+  bad=1
+fi
 [ "$bad" -eq 0 ] || exit 1
-echo "rooms: no include runs up (${rooms[*]})"
+echo "rooms: no include runs up (${rooms[*]}), no pass includes the lit pass"
