@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <utility>
 
 #include "app/penumbra_view.h"
 #include "grading/lab.h"
@@ -59,56 +60,41 @@ constexpr double kPcssSpotPenumbraError = 0.10;
 // A kernel twice too wide fails it: 0.104-0.112, above half the hard test's error at radii 0.2 and 0.4.
 constexpr double kPcssPointPenumbraError = 0.12;
 
-TEST_F(PcssLightsTest, SpotPcssFollowsTheSoftTruthWhereTheHardTestCannot) {
+// Over radii 0.2, 0.4 and 0.8: a real penumbra graded, the hard test off by more than 0.15 there, PCSS
+// below `limit` and below half the hard test's error.
+void expect_pcss_follows_the_soft_truth(const char* lab_slug, const char* pcss_test, double limit) {
   for (const float size : {0.2f, 0.4f, 0.8f}) {
-    const Graded g = grade_light("spot_light", "pcss_spot", size);
+    const Graded g = grade_light(lab_slug, pcss_test, size);
     ASSERT_FALSE(g.pcss.sun);
     ASSERT_GT(g.pcss.metrics.penumbra_pixels, 500u) << size;  // the frame grades a real penumbra
     ASSERT_EQ(g.pcss.metrics.penumbra_pixels, g.hard.metrics.penumbra_pixels);  // the same frame and truth
-    std::printf("spot of radius %.1f (lab 7's scene, 640 x 360): penumbra %llu px; error there: hard %.3f, PCSS %.3f\n",
-                size, static_cast<unsigned long long>(g.pcss.metrics.penumbra_pixels), g.hard.metrics.mae_penumbra,
-                g.pcss.metrics.mae_penumbra);
+    std::printf("%s, radius %.1f (lab %s's scene, 640 x 360): penumbra %llu px; error there: hard %.3f, PCSS %.3f\n",
+                pcss_test, size, lab_slug, static_cast<unsigned long long>(g.pcss.metrics.penumbra_pixels),
+                g.hard.metrics.mae_penumbra, g.pcss.metrics.mae_penumbra);
     // A hard edge through the penumbra is off by about a quarter there on average; PCSS by a fraction of it.
     EXPECT_GT(g.hard.metrics.mae_penumbra, 0.15) << size;
-    EXPECT_LT(g.pcss.metrics.mae_penumbra, kPcssSpotPenumbraError) << size;
+    EXPECT_LT(g.pcss.metrics.mae_penumbra, limit) << size;
     EXPECT_LT(g.pcss.metrics.mae_penumbra, 0.5 * g.hard.metrics.mae_penumbra) << size;
   }
 }
 
-TEST_F(PcssLightsTest, SpotPcssAtSizeZeroIsTheSpotTestPixelForPixel) {
-  const Graded g = grade_light("spot_light", "pcss_spot", 0.0f);
-  EXPECT_EQ(g.pcss.metrics.penumbra_pixels, 0u);
-  EXPECT_EQ(g.pcss.rgba, g.hard.rgba);
-  EXPECT_DOUBLE_EQ(g.pcss.metrics.mae, g.hard.metrics.mae);
+TEST_F(PcssLightsTest, SpotPcssFollowsTheSoftTruthWhereTheHardTestCannot) {
+  expect_pcss_follows_the_soft_truth("spot_light", "pcss_spot", kPcssSpotPenumbraError);
 }
-
-}  // namespace
-}  // namespace shadowlab
-
-namespace shadowlab {
-namespace {
 
 // Lab 8's point light, the same way: its six faces' hard test against PCSS around the ray to the point.
 TEST_F(PcssLightsTest, PointPcssFollowsTheSoftTruthWhereTheHardTestCannot) {
-  for (const float size : {0.2f, 0.4f, 0.8f}) {
-    const Graded g = grade_light("point_light", "pcss_point", size);
-    ASSERT_FALSE(g.pcss.sun);
-    ASSERT_GT(g.pcss.metrics.penumbra_pixels, 500u) << size;
-    ASSERT_EQ(g.pcss.metrics.penumbra_pixels, g.hard.metrics.penumbra_pixels);
-    std::printf("point light of radius %.1f (lab 8's scene, 640 x 360): penumbra %llu px; error there: hard %.3f, "
-                "PCSS %.3f\n",
-                size, static_cast<unsigned long long>(g.pcss.metrics.penumbra_pixels), g.hard.metrics.mae_penumbra,
-                g.pcss.metrics.mae_penumbra);
-    EXPECT_GT(g.hard.metrics.mae_penumbra, 0.15) << size;
-    EXPECT_LT(g.pcss.metrics.mae_penumbra, kPcssPointPenumbraError) << size;
-    EXPECT_LT(g.pcss.metrics.mae_penumbra, 0.5 * g.hard.metrics.mae_penumbra) << size;
-  }
+  expect_pcss_follows_the_soft_truth("point_light", "pcss_point", kPcssPointPenumbraError);
 }
 
-TEST_F(PcssLightsTest, PointPcssAtSizeZeroIsThePointTestPixelForPixel) {
-  const Graded g = grade_light("point_light", "pcss_point", 0.0f);
-  EXPECT_EQ(g.pcss.metrics.penumbra_pixels, 0u);
-  EXPECT_EQ(g.pcss.rgba, g.hard.rgba);
+// With light.size 0 each is its light's hard test, pixel for pixel.
+TEST_F(PcssLightsTest, AtSizeZeroEachIsItsLightsHardTest) {
+  for (const auto& [lab, test] : {std::pair{"spot_light", "pcss_spot"}, std::pair{"point_light", "pcss_point"}}) {
+    const Graded g = grade_light(lab, test, 0.0f);
+    EXPECT_EQ(g.pcss.metrics.penumbra_pixels, 0u) << test;
+    EXPECT_EQ(g.pcss.rgba, g.hard.rgba) << test;
+    EXPECT_DOUBLE_EQ(g.pcss.metrics.mae, g.hard.metrics.mae) << test;
+  }
 }
 
 }  // namespace
