@@ -297,6 +297,8 @@ struct ProbeTally {
   int near_clips = 0, far_clips = 0, near_loose = 0, far_loose = 0;
 };
 
+// Calls where a property may fail: none.
+constexpr double kMaxBadCalls = 0;
 // Rounding allowed in the probes: the matrices are float, the probes' arithmetic double.
 constexpr double kMatrixTolerance = 1e-4;
 // tan(cone) x the projection's x and y scales must be 1 within this (a fov of the cone itself: about 2).
@@ -381,7 +383,7 @@ void probe_matrices(CheckContext& ctx, CheckResult& result) {
                              {"cone_not_map", t.cone_not_map}, {"near_clips", t.near_clips}, {"far_clips", t.far_clips},
                              {"near_loose", t.near_loose}, {"far_loose", t.far_loose}};
   auto row = [&](const char* name, int count, const char* why, const char* advice) {
-    result.criteria.push_back({std::string("probe.") + name, static_cast<double>(count), Criterion::kAtMost, 0.0, why, advice});
+    result.criteria.push_back({std::string("probe.") + name, static_cast<double>(count), Criterion::kAtMost, kMaxBadCalls, why, advice});
   };
   row("non_finite", t.non_finite, "no NaN or Inf in the view or the projection, for any node",
       "a lookAt whose up vector is parallel to the light has no basis (the node pointing straight down or up): take "
