@@ -209,10 +209,7 @@ class SubmittedFlashlight {
 };
 
 std::shared_ptr<SubmittedFlashlight> submitted_flashlight(const std::filesystem::path& file) {
-  static std::map<std::filesystem::path, std::shared_ptr<SubmittedFlashlight>> built;
-  std::shared_ptr<SubmittedFlashlight>& fit = built[file];
-  if (!fit) fit = std::make_shared<SubmittedFlashlight>(file);
-  return fit;
+  return built_once<SubmittedFlashlight>(file);
 }
 
 // The fit in the slot: the exercise and the solution are compiled into the program (a student's own
