@@ -10,6 +10,7 @@
 // for the flashlight (Embree, rays cast toward it) times its Lambert term, on pixels in the interior of its
 // truth, in four conditions: the lab's own node, held out from the seed (the node elsewhere on its circle,
 // another cone and intensity), the node straight above the centre, and the flashlight on the camera.
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -298,6 +299,9 @@ struct ProbeTally {
 constexpr double kMaxBadCalls = 0;
 // Rounding allowed in the probes: the matrices are float, the probes' arithmetic double.
 constexpr double kMatrixTolerance = 1e-4;
+// The view's axis may also be off by this times the node's distance from the origin: a direction taken in
+// float as (p + d) - p (what lookAt(p, p + d, up) does) loses about |p| x FLT_EPSILON / 2 of it.
+constexpr double kPositionRounding = 4.0 * FLT_EPSILON;
 // tan(cone) x the projection's x and y scales must be 1 within this (a fov of the cone itself: about 2).
 constexpr double kConeTolerance = 1e-3;
 // Near and far "fitted": at least this share of the fitted near, at most this many times the distance to
@@ -330,7 +334,7 @@ void probe_one(const ProbeCase& pc, const LightView& v, ProbeTally& t) {
   const glm::dvec3 eye(view * glm::dvec4(position, 1.0));
   const glm::dvec3 looks(view * glm::dvec4(axis, 0.0));
   if (glm::length(eye) > kMatrixTolerance * std::max(h, glm::length(position)) ||
-      glm::length(looks - glm::dvec3(0.0, 0.0, -1.0)) > kMatrixTolerance)
+      glm::length(looks - glm::dvec3(0.0, 0.0, -1.0)) > kMatrixTolerance + kPositionRounding * glm::length(position))
     ++t.off_node;
   // The projection: perspective (w = -z in the eye's space), centred, square, the cone's rim on the
   // image's edges (tan(cone) x the x and y scales = 1).
