@@ -9,8 +9,6 @@
 
 namespace shadowlab {
 
-// Inside the scene's box the nearest geometry may be anywhere: near is never less than far / this.
-constexpr float kMaxFarOverNear = 1000.0f;
 // A point light's six cube faces: square views of this field of view cover every direction once.
 constexpr float kCubeFaceFovDeg = 90.0f;
 

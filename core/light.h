@@ -17,6 +17,10 @@ glm::vec3 direction_from_angles(float azimuth_deg, float elevation_deg);
 // where a lookAt with up = +Y degenerates). Columns: x, y, z.
 glm::mat3 orthonormal_basis(const glm::vec3& z);
 
+// Inside the scene's box the nearest geometry may be anywhere: a fitted perspective near plane is never
+// less than far / this (fit_spot_light, point_light_views; lab 15's exercise uses the same floor).
+inline constexpr float kMaxFarOverNear = 1000.0f;
+
 struct LightView {
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};

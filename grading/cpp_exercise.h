@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -91,5 +92,15 @@ class CppExercise {
   std::filesystem::path work_;
   platform::PipeChild child_;
 };
+
+// A lab's wrapper of a submitted file's program (it takes the file in its constructor), built once per
+// file and process: a check asks for a lab's hooks several times, and each build is a compile.
+template <typename Program>
+std::shared_ptr<Program> built_once(const std::filesystem::path& file) {
+  static std::map<std::filesystem::path, std::shared_ptr<Program>> built;
+  std::shared_ptr<Program>& program = built[file];
+  if (!program) program = std::make_shared<Program>(file);
+  return program;
+}
 
 }  // namespace shadowlab

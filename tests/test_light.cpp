@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "core/flashlight.h"
 #include "core/light.h"
 
 namespace shadowlab {
@@ -288,6 +290,46 @@ TEST(PointLight, SixFacesCoverEveryDirectionOnce) {
   }
   EXPECT_LT(cube.near_plane, 1.0f);
   EXPECT_GT(cube.far_plane, glm::length(glm::vec3(5, 2, 5)));
+}
+
+// Lab 15's node: a rigid transform at its place on the circle whose -Z aims at the box's centre, with a
+// basis even straight above the centre (flashlight.radius 0: pointing straight down, where a lookAt with
+// up = +Y is NaN); the flashlight's view, lab 15's solution, is fit_spot_light from the node's origin
+// along its -Z, and the frame's light is placed with it.
+TEST(FlashlightNode, RigidOnItsCircleAndStraightDown) {
+  Bounds box;
+  box.extend(glm::vec3(-4, 0, -3));
+  box.extend(glm::vec3(6, 2, 5));
+  const float half_diagonal = 0.5f * glm::length(box.extent());
+  ParamSet params(flashlight_param_specs());
+  for (const double phase : {0.0, 90.0, 200.0, 333.0}) {
+    for (const char* radius : {"0.9", "0"}) {
+      params.set("flashlight.phase", phase);
+      params.set_from_string("flashlight.radius", radius);
+      const glm::mat4 node = flashlight_node_to_world(params, box, glm::mat4(1.0f));
+      const glm::mat3 r(node);
+      const glm::mat3 rtr = glm::transpose(r) * r;
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(rtr[c][k], c == k ? 1.0f : 0.0f, 1e-5f) << "phase " << phase << " radius " << radius;
+      EXPECT_NEAR(glm::determinant(r), 1.0f, 1e-5f);
+      const glm::vec3 position(node[3]), axis = -glm::vec3(node[2]);
+      EXPECT_NEAR(glm::distance(glm::normalize(box.center() - position), axis), 0.0f, 1e-5f) << "aims at the centre";
+      const glm::vec2 out(position.x - box.center().x, position.z - box.center().z);
+      EXPECT_NEAR(glm::length(out), std::stof(radius) * half_diagonal, 1e-4f);
+      if (std::string(radius) == "0") {
+        EXPECT_NEAR(glm::distance(axis, glm::vec3(0, -1, 0)), 0.0f, 1e-6f) << "straight down";
+      }
+      const LightView fitted = flashlight_view(node, 28.0f, box), spot = fit_spot_light(box, position, axis, 28.0f);
+      const FrameLight light = flashlight_light(params, box, glm::mat4(1.0f));
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) {
+          ASSERT_TRUE(std::isfinite(fitted.view[c][k]) && std::isfinite(fitted.projection[c][k]));
+          EXPECT_NEAR(fitted.view[c][k], spot.view[c][k], 1e-5f);
+          EXPECT_NEAR(fitted.projection[c][k], spot.projection[c][k], 1e-5f);
+          EXPECT_NEAR(light.view.view_projection()[c][k], spot.view_projection()[c][k], 1e-5f);
+        }
+    }
+  }
 }
 
 }  // namespace

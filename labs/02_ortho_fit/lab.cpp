@@ -142,12 +142,7 @@ static_assert(sizeof(FitCall) == 9 * sizeof(float), "FitCall is the key: nine fl
 
 bool is_compiled_in(const std::filesystem::path& file) { return file == kExercise || file == kSolution; }
 
-std::shared_ptr<SubmittedFit> submitted_fit(const std::filesystem::path& file) {
-  static std::map<std::filesystem::path, std::shared_ptr<SubmittedFit>> built;
-  std::shared_ptr<SubmittedFit>& fit = built[file];
-  if (!fit) fit = std::make_shared<SubmittedFit>(file);
-  return fit;
-}
+std::shared_ptr<SubmittedFit> submitted_fit(const std::filesystem::path& file) { return built_once<SubmittedFit>(file); }
 
 // The fit in a slot: the exercise and the solution are compiled into the program (a student's own
 // build: edit, rebuild, Check); any other file is a submission's, built on its own.

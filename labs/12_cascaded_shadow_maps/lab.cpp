@@ -119,12 +119,7 @@ std::vector<float> splits_of(const CascadeAnswer& a) {
   return std::vector<float>(a.splits, a.splits + std::clamp(a.split_count, 0, kMaxCascades + 1));
 }
 
-std::shared_ptr<SubmittedCascades> submitted(const std::filesystem::path& file) {
-  static std::map<std::filesystem::path, std::shared_ptr<SubmittedCascades>> built;
-  auto& s = built[file];
-  if (!s) s = std::make_shared<SubmittedCascades>(file);
-  return s;
-}
+std::shared_ptr<SubmittedCascades> submitted(const std::filesystem::path& file) { return built_once<SubmittedCascades>(file); }
 
 struct CascadeFns {
   CascadeSplitFn splits;

@@ -60,6 +60,10 @@ VARIANTS = [
     # Lab 12: the cascade count and the split blend varied (the solution): where cascades win.
     *[(12, f"solution_count_{n}", "check", ["--impl", "solution", "--set", f"csm.count={n}"]) for n in ("1", "2", "8")],
     *[(12, f"solution_lambda_{l}", "check", ["--impl", "solution", "--set", f"csm.lambda={l}"]) for l in ("0", "0.5", "1")],
+    # Lab 15: two of the corpus's answers as they are: a near and far typed in (every frame right on the
+    # lab's scene, only the probes' other boxes show it) and lookAt with up = +Y (only straight down).
+    (15, "fixed_near_far", "submission", ["flash_fixed"]),
+    (15, "lookat_up_y", "submission", ["flash_lookat"]),
 ]
 
 # A "submission" run's first argument names one of these: {exercise slot: (the project file it is made
@@ -80,6 +84,10 @@ SUBMISSIONS["msm_upper"] = {"labs/14_msm/exercise.glsl": (
 SUBMISSIONS["msm_cramer"] = {"labs/14_msm/exercise.glsl": (
     "tests/answers/14_msm/wrong/cramer_in_float__exercise.glsl", "  vec3 rhs = vec3(1.0, z, z * z);",
     "  vec3 rhs = vec3(1.0, z, z * z);")}
+SUBMISSIONS["flash_fixed"] = {"labs/15_two_lights/exercise.cpp": (
+    "tests/answers/15_two_lights/wrong/fixed_near_far__exercise.cpp", "  LightView v;", "  LightView v;")}
+SUBMISSIONS["flash_lookat"] = {"labs/15_two_lights/exercise.cpp": (
+    "tests/answers/15_two_lights/wrong/lookat_up_y__exercise.cpp", "  LightView v;", "  LightView v;")}
 # The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
 SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
     "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
