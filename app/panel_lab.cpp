@@ -326,6 +326,11 @@ PanelActions draw_lab_panel(PanelModel& m) {
     ImGui::TextWrapped("Shader error (the last good program keeps running):\n%s", m.shader_error.c_str());
     ImGui::PopStyleColor();
   }
+  if (!m.cpp_status.empty()) {
+    if (m.cpp_error) ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+    ImGui::TextWrapped("%s", shortened(m.cpp_status, 2000).c_str());
+    if (m.cpp_error) ImGui::PopStyleColor();
+  }
   if (!m.scene_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kRed);
     ImGui::TextWrapped("%s", shortened(m.scene_error, 600).c_str());  // bounded, whatever the caller passed

@@ -65,6 +65,8 @@ struct PanelModel {
   CheckProgress check_progress;
   const CheckResult* check = nullptr;
   std::string shader_error;
+  std::string cpp_status;  // a live C++ exercise's state (grading/live_cpp.h): building, live, or its error
+  bool cpp_error = false;  // cpp_status is an error
   std::string status;
   CompareState* compare = nullptr;  // null: no Compare section (headless)
   SettingsSession* settings = nullptr;

@@ -34,6 +34,7 @@
 #include "app/view_annotations.h"
 #include "app/window_app.h"
 #include "grading/check.h"
+#include "grading/cpp_exercise.h"
 #include "grading/lab.h"
 #include "labs/registry.h"
 #include "renderer/context.h"
@@ -151,6 +152,8 @@ void draw_panel(WindowApp& app) {
   }
   model.check = app.check_result ? &*app.check_result : nullptr;
   model.shader_error = app.renderer->shader_error();
+  model.cpp_status = app.live_cpp.message();
+  model.cpp_error = app.live_cpp.has_error();
   model.status = app.status;
   model.compare = &app.compare;
   model.settings = &app.settings;
@@ -245,6 +248,10 @@ void drop_callback(GLFWwindow* window, int count, const char** paths) {
 
 // A Check that finished on the worker: its time kept for the progress bar, its result shown when it is
 // still for the lab and implementation on screen.
+void take_live_hooks(WindowApp& app) {
+  if (std::optional<Features> hooks = app.live_cpp.take_hooks()) app.use_live_hooks(*hooks);
+}
+
 void take_finished_check(WindowApp& app) {
   if (auto result = app.check_worker.take_result()) {
     const Lab* checked = app.check_worker.lab();
@@ -259,6 +266,14 @@ void poll_files(WindowApp& app) {
   if (glfwGetTime() - app.last_poll <= 0.5) return;
   app.renderer->poll_shader_files();
   app.split.poll_shader_files();
+  // A saved C++ exercise is built again on a worker thread; its hooks are used once they are ready. What
+  // it says is also said on the terminal, once (a build error in full there).
+  app.live_cpp.poll(*app.lab, app.impl);
+  if (const std::string said = app.live_cpp.message(); said != app.live_cpp_said) {
+    if (!said.empty()) std::fprintf(app.live_cpp.has_error() ? stderr : stdout, "shadowlab: %s\n", said.c_str());
+    std::fflush(stdout);
+    app.live_cpp_said = said;
+  }
   app.last_poll = glfwGetTime();
   app.settings.keep_camera(app.renderer->scene().name, app.camera);
   app.settings.autosave(app.lab->number, app.params);
@@ -320,6 +335,7 @@ void run_loop(WindowApp& app, const WindowOptions& options, InputScript& script)
     }
     update_ui_scale(app);
     take_finished_check(app);
+    take_live_hooks(app);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -331,7 +347,12 @@ void run_loop(WindowApp& app, const WindowOptions& options, InputScript& script)
     draw_caption(app);
     draw_toast(app);
     run_requests(app, script, width, height);
-    render_counted_view(app, cost, width, height, glfwGetTime() - frame_start);
+    try {
+      render_counted_view(app, cost, width, height, glfwGetTime() - frame_start);
+    } catch (const ExerciseError& e) {  // the edited C++ exercise's program crashed or timed out on a call
+      app.apply_hooks();  // the compiled copy again
+      app.live_cpp.failed(e.what());
+    }
     ImGui::Render();
     // With the panel hidden and no line, hint, label or legend shown there is nothing over the view to draw.
     if (ImGui::GetDrawData()->TotalVtxCount > 0) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -74,7 +74,12 @@ const Preset* WindowApp::preset_shown() const {
 
 void WindowApp::apply_hooks() {
   if (!renderer->set_features(lab->hooks(impl))) status = "shader error: the previous program keeps running";
+  live_cpp.reset();  // the renderer runs the compiled copy again: the next poll hands out an edited file's hooks
   rebuild_split();
+}
+
+void WindowApp::use_live_hooks(const Features& hooks) {
+  if (!renderer->set_features(hooks)) status = "shader error: the previous program keeps running";
 }
 
 void WindowApp::rebuild_split() {

@@ -19,6 +19,7 @@
 #include "app/split_view.h"
 #include "grading/check.h"
 #include "grading/lab.h"
+#include "grading/live_cpp.h"
 #include "renderer/renderer.h"
 
 struct GLFWwindow;
@@ -87,6 +88,8 @@ struct WindowApp {
   bool check_requested = false;
   std::optional<CheckResult> check_result;  // the last Check, for the current lab and implementation
   CheckWorker check_worker;
+  LiveCppExercise live_cpp;  // the lab's C++ exercise rebuilt when saved (grading/live_cpp.h)
+  std::string live_cpp_said;  // what it said last on the terminal
   std::map<int, double> check_seconds;  // per lab, how long its last check took: the progress bar's estimate
   // Text: fonts rasterised for the monitor's content scale and the user's size (the panel's control).
   UiFonts fonts;
@@ -128,6 +131,8 @@ struct WindowApp {
   // The chosen preset, while every value it set still holds.
   const Preset* preset_shown() const;
   void apply_hooks();
+  // Hooks a live C++ build made, set on the renderer (the split view's exercise side follows).
+  void use_live_hooks(const Features& hooks);
   void rebuild_split();
   // Measures the view against the exact penumbra (at most 640 pixels wide, the window's aspect).
   void measure_penumbra(int width, int height);

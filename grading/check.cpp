@@ -258,17 +258,6 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
   }
 }
 
-namespace {
-
-// A text file's bytes without carriage returns: a checkout with CRLF line ends and the copy the compiler
-// embedded (which reads them as plain line ends) are the same file.
-std::string without_carriage_returns(std::string text) {
-  std::erase(text, '\r');
-  return text;
-}
-
-}  // namespace
-
 std::vector<std::string> CheckContext::grade_edited_cpp_files() {
   std::vector<std::string> notes;
   for (auto& file : graded) {

@@ -45,6 +45,13 @@ class ExerciseError : public std::runtime_error {
 // The largest C++ exercise file read (a submission's, or an edited one on disk): an exercise is a few KB.
 inline constexpr std::uint64_t kMaxExerciseSourceBytes = 1 << 20;
 
+// A text file's bytes without carriage returns: a checkout with CRLF line ends and the copy the compiler
+// embedded (which reads them as plain line ends) are the same file.
+inline std::string without_carriage_returns(std::string text) {
+  std::erase(text, '\r');
+  return text;
+}
+
 struct CppExerciseSpec {
   std::filesystem::path source;      // the student's file
   std::string display_name;          // as the student knows it: "labs/02_ortho_fit/exercise.cpp"
@@ -94,10 +101,13 @@ class CppExercise {
 };
 
 // A lab's wrapper of a submitted file's program (it takes the file in its constructor), built once per
-// file and process: a check asks for a lab's hooks several times, and each build is a compile.
+// file and thread: a check asks for a lab's hooks several times, and each build is a compile. Per thread,
+// because the program dies with the thread that started it (PR_SET_PDEATHSIG, bubblewrap's
+// --die-with-parent): the window runs each Check on a thread of its own, and a second Check of the same
+// edited file would otherwise call the program the first one's thread took with it.
 template <typename Program>
 std::shared_ptr<Program> built_once(const std::filesystem::path& file) {
-  static std::map<std::filesystem::path, std::shared_ptr<Program>> built;
+  thread_local std::map<std::filesystem::path, std::shared_ptr<Program>> built;
   std::shared_ptr<Program>& program = built[file];
   if (!program) program = std::make_shared<Program>(file);
   return program;

@@ -382,6 +382,44 @@ assert stats["clicked/plain"] > 0.3, "the click changed (almost) nothing in the 
 assert stats["clicked/F4"] < 0.005, "the click gave another picture than the preset's key F4"
 PY
     ;;
+  window_live_cpp)  # issue 34: a saved C++ exercise is rebuilt in the background and used from the next frame
+    # A data folder like the source tree (SHADOWLAB_DATA_DIR), with lab 2 copied so its exercise can be edited.
+    mkdir -p "$tmp/data/labs"
+    for f in "$src"/*; do [ "$(basename "$f")" = labs ] || ln -s "$f" "$tmp/data/"; done
+    for f in "$src"/labs/*; do ln -s "$f" "$tmp/data/labs/"; done
+    rm "$tmp/data/labs/02_ortho_fit" && cp -r "$src/labs/02_ortho_fit" "$tmp/data/labs/"
+    export SHADOWLAB_DATA_DIR="$tmp/data"
+    exercise="$tmp/data/labs/02_ortho_fit/exercise.cpp"
+    # The student saves twice while the window runs: a right answer once the first picture is taken, then
+    # a file that does not compile once the second is. Each save is picked up by the window's poll.
+    ( for _ in $(seq 600); do [ -s "$tmp/stock.png" ] && break; sleep 0.1; done
+      cp "$src/tests/answers/02_ortho_fit/right/own_basis__exercise.cpp" "$exercise"
+      for _ in $(seq 1800); do [ -s "$tmp/live.png" ] && break; sleep 0.1; done
+      printf 'int broken = ;\n' >>"$exercise" ) &
+    editor=$!
+    # The builds take a few seconds each here (compiled in the sandbox, under load up to half a minute).
+    window --lab 2 --script "frames:3,screenshot:$tmp/stock.png,wait:45,frames:3,screenshot:$tmp/live.png,wait:45,frames:3,screenshot:$tmp/broken.png"
+    wait "$editor"
+    grep -q "shadowlab: your edited C++ exercise is live" "$tmp/out" || fail "the edited exercise was not used: $(cat "$tmp/out" "$tmp/err")"
+    grep -q "labs/02_ortho_fit/exercise.cpp:[0-9]*:[0-9]*: error" "$tmp/err" || fail "the build error does not name the student's line: $(cat "$tmp/err")"
+    grep -q "your last good build keeps running" "$tmp/err" || fail "the error does not say the last good build runs: $(cat "$tmp/err")"
+    png_python - "$tmp" <<'PY' || fail "the view did not follow the saved exercise"
+import sys
+from png_tools import load
+d = sys.argv[1]
+r = {n: load(f"{d}/{n}.png")[2] for n in ("stock", "live", "broken")}
+w = len(r["stock"][0]) // 4
+# The 3D view right of the panel (x from 460), under the pass-time line (whose figures change every frame):
+# the fixed box of the stock exercise against the fitted one.
+def differing(a, b):
+    return sum(1 for y in range(60, len(a), 2) for x in range(460, w, 2)
+               if sum(abs(a[y][4 * x + c] - b[y][4 * x + c]) for c in range(3)) > 30)
+stats = {"stock->live": differing(r["stock"], r["live"]), "live->broken": differing(r["live"], r["broken"])}
+print(stats)
+assert stats["stock->live"] > 500, "the saved right answer did not change the view"
+assert stats["live->broken"] < 50, "a file that does not build replaced the last good one"
+PY
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"
