@@ -14,6 +14,9 @@
 
 namespace shadowlab {
 
+// The GL exercise's grading (setup_check.cpp).
+void check_gl_setup(CheckContext& ctx, CheckResult& result);
+
 namespace {
 
 constexpr const char* kExercise = SHADOWLAB_LAB_FOLDER "/exercise.glsl";
@@ -106,6 +109,7 @@ void probe_shadow_test(CheckContext& ctx, CheckResult& result) {
 }
 
 void check_basic(CheckContext& ctx, CheckResult& result) {
+  check_gl_setup(ctx, result);
   probe_shadow_test(ctx, result);
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
@@ -124,6 +128,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Two passes: depth from the light, then one depth comparison per pixel.";
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
+  lab.gl_exercise_files = {SHADOWLAB_LAB_FOLDER "/gl_shadow_target.cpp"};
+  lab.gl_solution_files = {"renderer/shadow_target.cpp"};
   lab.presets = {
       {"acne", "No bias: surfaces shadow themselves in stripes.", {{"shadow.bias", "0"}},
        {.provokes = "acne", .fixed_by = "tutorial"}},
