@@ -101,6 +101,11 @@ TEST(GlExerciseSandbox, SolutionAndAWrongAnswerRunWithTheirOwnContext) {
       run_in_sandbox(data_dir() / "tests/answers/00_basic_shadow_map/wrong/repeat_wrap__gl_shadow_target.cpp");
   EXPECT_EQ(repeat.status, GL_FRAMEBUFFER_COMPLETE);
   EXPECT_EQ(repeat.wrap_s, GL_REPEAT);
+  // What the lit pass reads (kProbeUv): the solution the far plane beyond the right edge beside the open
+  // quarter, a repeating map the occluder from the other side (both within a 24-bit step).
+  EXPECT_NEAR(right.probe_reads[2], 1.0f, 1.0 / 16777215.0);
+  EXPECT_NEAR(repeat.probe_reads[2], kOccluderDepth, 1.0 / 16777215.0);
+  EXPECT_NEAR(right.probe_reads[0], kOccluderDepth, 1.0 / 16777215.0);
   const TargetState uncleared =
       run_in_sandbox(data_dir() / "tests/answers/00_basic_shadow_map/wrong/no_clear__gl_shadow_target.cpp");
   // The stain as the 24-bit map stores it: within one step of 2^-24 (0.25 reads back as 0.25000003 here).

@@ -36,7 +36,19 @@ struct TargetState {
   int pass_framebuffer = 0;  // GL_DRAW_FRAMEBUFFER_BINDING
   int viewport[4] = {0, 0, 0, 0};
   float depth_min = -1, depth_max = -1;  // over the whole map; -1: not readable (incomplete)
+  // What a lit pass then reads (kProbeUv): the host draws an occluder at depth kOccluderDepth over the
+  // map's lower left quarter through the state begin_shadow_pass left, and samples the map with
+  // texture() at each point; -1: not run (the framebuffer is incomplete).
+  float probe_reads[5] = {-1, -1, -1, -1, -1};  // kGlProbePoints
 };
+
+// The occluder's depth, and where the probe reads: under it, in the open, beyond the right edge beside it
+// and beyond the top edge above it (a map that repeats reads the occluder there), and on its right edge
+// (between an occluded and an open texel: nearest reads either, linear a depth no surface has).
+inline constexpr float kOccluderDepth = 0.3f;
+inline constexpr int kGlProbePoints = 5;
+inline constexpr float kProbeUv[kGlProbePoints][2] = {{0.25f, 0.25f}, {0.75f, 0.75f}, {1.1f, 0.25f}, {0.25f, 1.1f}, {0.5f, 0.25f}};
+static_assert(sizeof(TargetState::probe_reads) == kGlProbePoints * sizeof(float), "one read per probe point");
 
 // The depth the host writes into the map before begin_shadow_pass: a pass that does not clear keeps it.
 inline constexpr float kStainDepth = 0.25f;

@@ -2,6 +2,8 @@
 // OpenGL context first, then each TargetCall is answered with what create_shadow_target and
 // begin_shadow_pass left (labs/00_basic_shadow_map/gl_setup.h). Not part of the shadowlab binary.
 #include <algorithm>
+#include <iterator>
+#include <utility>
 #include <vector>
 
 #include "labs/00_basic_shadow_map/gl_setup.h"
@@ -48,6 +50,66 @@ void read_framebuffer(GLuint framebuffer, TargetState& s) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+GLuint compile_program(const char* vertex, const char* fragment) {
+  const GLuint program = glCreateProgram();
+  for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, vertex}, std::pair{GL_FRAGMENT_SHADER, fragment}}) {
+    const GLuint shader = glCreateShader(type);
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    glAttachShader(program, shader);
+    glDeleteShader(shader);
+  }
+  glLinkProgram(program);
+  return program;
+}
+
+// The depth pass and a lit pass through the student's state: an occluder drawn at kOccluderDepth over
+// the lower left quarter of NDC with the binding and viewport begin_shadow_pass left, then the map read
+// with texture() at kProbeUv, one pixel each.
+void probe(GLuint depth_texture, TargetState& s) {
+  GLuint vao = 0, colour = 0, framebuffer = 0;
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  const GLuint occluder = compile_program(
+      "#version 330 core\nuniform float u_z;\n"
+      "void main() { gl_Position = vec4(vec2(gl_VertexID & 1, gl_VertexID >> 1) - 1.0, u_z, 1.0); }\n",
+      "#version 330 core\nvoid main() {}\n");
+  glUseProgram(occluder);
+  glUniform1f(glGetUniformLocation(occluder, "u_z"), 2.0f * kOccluderDepth - 1.0f);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  constexpr int kPoints = static_cast<int>(std::size(kProbeUv));
+  glGenTextures(1, &colour);
+  glBindTexture(GL_TEXTURE_2D, colour);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kPoints, 1, 0, GL_RED, GL_FLOAT, nullptr);
+  glGenFramebuffers(1, &framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+  glViewport(0, 0, kPoints, 1);
+  glDisable(GL_DEPTH_TEST);
+  const GLuint reader = compile_program(
+      "#version 330 core\nvoid main() { gl_Position = vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0); }\n",
+      "#version 330 core\nuniform sampler2D u_map;\nuniform vec2 u_uv[5];\nout vec4 read;\n"
+      "void main() { read = vec4(texture(u_map, u_uv[int(gl_FragCoord.x)]).r); }\n");
+  glUseProgram(reader);
+  glUniform2fv(glGetUniformLocation(reader, "u_uv"), kPoints, &kProbeUv[0][0]);
+  glUniform1i(glGetUniformLocation(reader, "u_map"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth_texture);
+  glBindSampler(0, 0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glReadPixels(0, 0, kPoints, 1, GL_RED, GL_FLOAT, s.probe_reads);
+  glUseProgram(0);
+  glDeleteProgram(occluder);
+  glDeleteProgram(reader);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &colour);
+  glDeleteVertexArrays(1, &vao);
+}
+
 TargetState answer(const TargetCall& call) {
   TargetState s;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -82,6 +144,7 @@ TargetState answer(const TargetCall& call) {
       s.depth_min = *lo;
       s.depth_max = *hi;
     }
+    probe(target.depth_texture, s);  // the draw binding and the viewport are still the pass's
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(1, &target.framebuffer);

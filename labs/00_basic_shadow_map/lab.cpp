@@ -4,11 +4,13 @@
 // Check: the default scene under the default light (azimuth 35, elevation 50) at the renderer's fixed
 // bias 0.005, then three held-out lights, map sizes and scenes: the continuous acne and leak errors over
 // interior pixels within lab 1's bounds in every case.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -125,6 +127,8 @@ const std::string kHost = std::string(SHADOWLAB_LAB_FOLDER).substr(std::string("
 constexpr TargetCall kCall{300, 1280, 720};
 // State is exact: no texel, pixel, wrong parameter or error is allowed.
 constexpr double kNoDifference = 0;
+// A read of the probe may differ from a stored depth by one step of the coarsest depth format (16 bits).
+constexpr double kReadTolerance = 1.0 / 65535.0;
 // The fewest depth bits a depth format has (GL_DEPTH_COMPONENT16); a colour texture has 0.
 constexpr int kMinDepthBits = 16;
 
@@ -170,7 +174,8 @@ nlohmann::json state_json(const TargetState& s) {
           {"gl_error_after_begin", enum_name(s.gl_error_after_begin)},
           {"pass_binds_the_target", s.pass_framebuffer == s.framebuffer && s.framebuffer != 0},
           {"viewport", {s.viewport[0], s.viewport[1], s.viewport[2], s.viewport[3]}},
-          {"depth_min", s.depth_min}, {"depth_max", s.depth_max}};
+          {"depth_min", s.depth_min}, {"depth_max", s.depth_max},
+          {"probe_reads", {s.probe_reads[0], s.probe_reads[1], s.probe_reads[2], s.probe_reads[3], s.probe_reads[4]}}};
 }
 
 std::string completeness_advice(const TargetState& s) {
@@ -246,6 +251,21 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "1 - the smallest depth in the map after begin_shadow_pass; the map held 0.25 before it (a last frame's)",
                "clear the map's depth in begin_shadow_pass (glClear(GL_DEPTH_BUFFER_BIT) with the clear depth 1, the "
                "default): otherwise last frame's depths stay, and surfaces that moved away still cast shadows."});
+  // What a lit pass reads (gl_setup.h, kProbeUv): under the occluder its depth; in the open and beyond the
+  // map's edges beside the open quarters the far plane; on the occluder's edge either.
+  const float under = kOccluderDepth, open = 1.0f;
+  const std::vector<std::vector<float>> right_reads = {{under}, {open}, {open}, {open}, {under, open}};
+  double wrong_reads = 0;
+  for (std::size_t i = 0; i < right_reads.size(); ++i)
+    wrong_reads += std::none_of(right_reads[i].begin(), right_reads[i].end(),
+                                [&](float r) { return std::abs(s.probe_reads[i] - r) <= kReadTolerance; });
+  c.push_back({"gl_setup.probe_reads_wrong", wrong_reads, Criterion::kAtMost, kNoDifference,
+               "an occluder at depth 0.3 drawn over the map's lower left quarter through begin_shadow_pass's state, "
+               "then the map read with texture() at 5 points, as a lit pass reads it (probe_reads in the metrics)",
+               "what the lit pass would read is wrong at some of the 5 points (under the occluder 0.3; in the open, "
+               "and just beyond the right and top edges beside the open quarters, 1; on the occluder's edge 0.3 or 1): "
+               "the state criteria above say which setting shows (a repeating map reads the occluder beyond the edge, "
+               "a linear filter a blend on its edge, an uncleared map or a window-sized viewport 0.25 or 0.3 in the open)."});
   const double errors = (s.gl_error_after_create != GL_NO_ERROR) + (s.gl_error_after_begin != GL_NO_ERROR);
   c.push_back({"gl_setup.gl_errors", errors, Criterion::kAtMost, kNoDifference,
                "glGetError after create_shadow_target and after begin_shadow_pass",
