@@ -99,6 +99,13 @@ std::string input_fingerprint(const Run& run, const Lab& lab, const fs::path& ro
   // Read only after exercise_file_problems found each a regular file within the limit.
   for (const auto& file : lab.exercise_files)
     f.add(file + "\n" + platform::read_regular_file(root / file, UnpackLimits{}.max_file_bytes));
+  // A GL exercise (lab 0's gl_shadow_target.cpp) may be missing (its criterion fails) or refused by the
+  // build (a link); a plain file within the limit counts, anything else counts as absent.
+  for (const auto& file : lab.gl_exercise_files) {
+    const fs::file_status st = fs::symlink_status(root / file, ec);
+    const bool plain = fs::is_regular_file(st) && fs::file_size(root / file, ec) <= UnpackLimits{}.max_file_bytes;
+    f.add(file + (plain ? "\n" + platform::read_regular_file(root / file, UnpackLimits{}.max_file_bytes) : " absent"));
+  }
   return f.hex();
 }
 

@@ -33,6 +33,7 @@ int run_list_labs(bool show_params, bool json, bool show_presets) {
     for (const auto& lab : all_labs()) {
       labs.push_back({{"number", lab.number}, {"slug", lab.slug}, {"folder", lab.folder()}, {"title", lab.title},
                       {"exercise_files", lab.exercise_files}, {"solution_files", lab.solution_files},
+                      {"gl_exercise_files", lab.gl_exercise_files}, {"gl_solution_files", lab.gl_solution_files},
                       {"offered_includes", lab.offered_includes}, {"has_check", static_cast<bool>(lab.check)}});
       if (show_presets) {
         labs.back()["presets"] = presets_json(lab);

@@ -248,6 +248,7 @@ CheckContext::CheckContext(Renderer& r, const Lab& l, Impl i, const Scene& defau
 
 void CheckContext::grade_submission(const std::filesystem::path& folder) {
   impl = Impl::Exercise;
+  submission = folder;
   graded.clear();
   for (const auto& file : lab.exercise_files) {
     const auto path = std::filesystem::absolute(folder / file);

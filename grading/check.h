@@ -109,6 +109,8 @@ class CheckContext {
   std::filesystem::path out_dir;  // empty: write no images
   // The files in the lab's exercise slots: lab.files(impl), or a submission's (see grade_submission).
   SlotFiles graded;
+  // The submission's folder (grade_submission); empty: this tree's files are graded.
+  std::filesystem::path submission;
   // Held-out conditions (light directions, map sizes, ...) are drawn from this seed and recorded.
   std::uint32_t seed = kDefaultSeed;
   static constexpr std::uint32_t kDefaultSeed = 1;

@@ -264,6 +264,13 @@ void refuse_definitions(const std::string& defined, const std::string& host_defi
 
 }  // namespace
 
+std::string cpp_exercise_unavailable(const std::string& host) {
+  if (const std::string& why = platform::sandbox_unavailable(); !why.empty()) return why;
+  if (!fs::exists(fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / ("libshadowlab_exercise_host_" + host + ".a")))
+    return "this build has no exercise host for " + host + " (a GL exercise's is built only with EGL, on Linux)";
+  return "";
+}
+
 CppExercise::CppExercise(CppExerciseSpec spec) : spec_(std::move(spec)) {
   work_ = platform::make_private_temp_dir("shadowlab-exercise");
   try {
@@ -304,6 +311,11 @@ void CppExercise::build() {
   for (std::string f; flags >> f;) compile.push_back(f);
   if (fs::exists(tools.pch.string() + ".gch")) compile.insert(compile.end(), {"-include", tools.pch.string()});
   compile.insert(compile.end(), {"-iquote", kSourceDir, "-c", spec_.display_name, "-o", "/out/exercise.o"});
+  // A GL exercise links the system's OpenGL dynamically (Mesa cannot be linked statically).
+  std::vector<std::string> link = {tools.compiler, "-Wl,--gc-sections", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp"};
+  if (spec_.renders) link.insert(link.end(), {"-lepoxy", "-lEGL"});
+  else link.insert(link.begin() + 1, "-static");
+  link.insert(link.end(), {"-o", "/out/exercise"});
   const std::string script =
       // 1. Compile it alone, with the lab's headers (precompiled) and nothing else of ours.
       "echo compiling >/out/step; " + command_line(compile) + " >/out/compiling.log 2>&1 || exit $?\n"
@@ -313,13 +325,12 @@ void CppExercise::build() {
       "nm --defined-only --extern-only /out/exercise.o >/out/defined.txt || exit $?\n"
       "nm --defined-only --extern-only /grader/libhost.a >/out/host.txt || exit $?\n"
       "objdump -h /out/exercise.o >/out/sections.txt || exit $?\n"
-      // 3. Link it, statically, with the lab's host (its main and the protocol) and the renderer's CPU
+      // 3. Link it (statically, but for a GL exercise: above) with the lab's host (its main and the protocol) and the renderer's CPU
       // library: the program then needs nothing but itself to run. Only what it calls is kept (the core
       // has a section per function): the labs' solutions, which share files with the functions an
       // exercise may call, are not in the program for it to find.
       "echo linking >/out/step; " +
-      command_line({tools.compiler, "-static", "-Wl,--gc-sections", "/out/exercise.o", "/grader/libhost.a", "/grader/libcore.a", "-lseccomp",
-                    "-o", "/out/exercise"}) +
+      command_line(link) +
       " >/out/linking.log 2>&1 || exit $?\n";
   const platform::SandboxCommand command(sandbox, {"/bin/sh", "-c", script});
   const platform::ChildOutcome built = platform::inner_outcome(
@@ -335,6 +346,11 @@ void CppExercise::build() {
   platform::SandboxSpec alone;
   alone.mounts = {{out / "exercise", "/exercise"}};
   alone.filter = platform::SyscallFilter::Computing;
+  if (spec_.renders) {  // the system's libraries and Mesa's files, one thread, no shader cache on disk
+    alone.system_toolchain = true;
+    alone.filter = platform::SyscallFilter::Toolchain;
+    alone.env = {{"LP_NUM_THREADS", "0"}, {"MESA_SHADER_CACHE_DISABLE", "true"}};
+  }
   const platform::SandboxCommand run(alone, {"/exercise"});
   std::string error;
   const platform::ChildLimits limits{0.0, 1ull << 30, 0.0, kLogBytes};

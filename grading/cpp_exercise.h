@@ -63,7 +63,16 @@ struct CppExerciseSpec {
   // The early, friendly refusals (includes, inline assembly, calls and definitions the lab does not
   // allow, code before main). The sandbox holds without them; tests turn them off to prove it.
   bool screen = true;
+  // A GL exercise (lab 0's depth framebuffer): the program is linked against the system's libepoxy and
+  // libEGL, and runs with the system's /usr read-only (Mesa's llvmpipe and its configuration), under the
+  // toolchain's filter until its host has made a headless OpenGL context; then the host confines itself
+  // to computing and rendering (grading/cpp_exercise_host.h) before it calls the student's functions.
+  bool renders = false;
 };
+
+// Empty where a C++ exercise of the lab host `host` ("00_basic_shadow_map") can be built and run here;
+// otherwise the one sentence saying why not (no sandbox; a GL exercise's host needs a build with EGL).
+std::string cpp_exercise_unavailable(const std::string& host);
 
 class CppExercise {
  public:

@@ -10,7 +10,7 @@
 
 namespace shadowlab {
 
-int exercise_host_begin() {
+int exercise_host_begin(bool (*prepare)()) {
   // The grader's socket is on 0 and 1; keep it on a descriptor of our own and point 1 at the log (2),
   // so that whatever the exercise prints cannot be taken for a reply.
   const int fd = ::dup(0);
@@ -19,8 +19,9 @@ int exercise_host_begin() {
     return -1;
   }
   ::close(0);
+  if (prepare && !prepare()) return -1;
   std::string error;
-  if (!platform::confine_to_computing(error)) {
+  if (!platform::confine_to_computing(error, prepare != nullptr)) {
     std::fprintf(stderr, "exercise host: %s\n", error.c_str());
     return -1;
   }

@@ -9,7 +9,10 @@
 namespace shadowlab {
 
 // Sets up the descriptors and the confinement; returns the descriptor to talk on, or -1 (reason on stderr).
-int exercise_host_begin();
+// `prepare` (a GL exercise's host: its OpenGL context, grading/gl_exercise_host.h) runs between the two,
+// before any of the student's code; false stops the host. A host that prepares is confined as rendering
+// (platform::confine_to_computing).
+int exercise_host_begin(bool (*prepare)() = nullptr);
 // Reads exactly `size` bytes; false at end of input.
 bool exercise_host_read(int fd, void* data, std::size_t size);
 // Writes all `size` bytes; false if the grader has gone.
@@ -17,8 +20,8 @@ bool exercise_host_write(int fd, const void* data, std::size_t size);
 
 // The loop: main() of a lab's host is `return serve_exercise<Request, Reply>(answer);`.
 template <typename Request, typename Reply, typename Answer>
-int serve_exercise(Answer&& answer) {
-  const int fd = exercise_host_begin();
+int serve_exercise(Answer&& answer, bool (*prepare)() = nullptr) {
+  const int fd = exercise_host_begin(prepare);
   if (fd < 0) return 3;
   Request request;
   while (exercise_host_read(fd, &request, sizeof request)) {

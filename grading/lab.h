@@ -91,6 +91,12 @@ struct Lab {
   // Files the student edits, relative to the data folder; the solution's files in the same order.
   std::vector<std::string> exercise_files;
   std::vector<std::string> solution_files;
+  // GL exercises (C++ with real OpenGL calls: lab 0's gl_shadow_target.cpp) and their solutions, the
+  // renderer's own files, in the same order. Not exercise slots: no renderer hook reads them and they are
+  // never compiled into the program; the lab's check builds and runs the graded one in a sandbox with its
+  // own headless OpenGL context (grading/cpp_exercise.h, `renders`), the file on disk or a submission's.
+  std::vector<std::string> gl_exercise_files = {};
+  std::vector<std::string> gl_solution_files = {};
   // The C++ exercise files compiled into this program, each with its text as it was built (relative path
   // -> text; labs/CMakeLists.txt embeds them). Check grades the file on disk, never a stale copy: when the
   // file differs from its copy, it is built on its own like a submission's (grading/check.cpp).

@@ -83,8 +83,10 @@ class PipeChild {
 // has, allocate memory and exit; any other system call (open a file, start a program, a socket...)
 // kills it with SIGSYS. Returns false with `error` if the kernel refuses. Linux: a seccomp filter
 // through libseccomp. Elsewhere: macOS sandbox_init (deprecated) or Windows AppContainer tokens;
-// without it the process limits still hold.
-bool confine_to_computing(std::string& error);
+// without it the process limits still hold. `rendering`: a GL exercise's host, whose OpenGL context
+// (Mesa's llvmpipe, made before, with no threads of its own: LP_NUM_THREADS=0) also asks the system's
+// memory size (sysinfo) and reads a link (readlink) when it compiles a shader.
+bool confine_to_computing(std::string& error, bool rendering = false);
 
 // "SIGSEGV (segmentation fault)".
 std::string describe_signal(int signal);

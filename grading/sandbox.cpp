@@ -109,6 +109,7 @@ SandboxCommand::SandboxCommand(const SandboxSpec& spec, const std::vector<std::s
   argv_ = {"bwrap", "--unshare-all", "--unshare-user", "--disable-userns", "--uid", kSandboxUser, "--gid",
            kSandboxUser, "--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv",
            "--setenv", "PATH", "/usr/bin:/bin", "--setenv", "LC_ALL", "C"};
+  for (const auto& [name, value] : spec.env) argv_.insert(argv_.end(), {"--setenv", name, value});
   if (spec.system_toolchain) add_system(argv_, spec.tmp_bytes);
   for (const auto& m : spec.mounts)
     argv_.insert(argv_.end(), {m.writable ? "--bind" : "--ro-bind", m.host.string(), m.inside});

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grading/platform_process.h"
@@ -40,6 +41,7 @@ struct SandboxSpec {
   std::uint64_t tmp_bytes = 64 << 20;  // the size of that /tmp
   std::string chdir = "/";
   SyscallFilter filter = SyscallFilter::Computing;
+  std::vector<std::pair<std::string, std::string>> env = {};  // set in the sandbox's empty environment
 };
 
 // A program's command line wrapped in bubblewrap, and the filter's descriptor it reads (which the

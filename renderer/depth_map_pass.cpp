@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "renderer/billboards.h"
+#include "renderer/shadow_target.h"
 
 namespace shadowlab {
 
@@ -45,12 +46,11 @@ bool DepthMapPass::ensure_targets(const ParamSet& params) {
   const int size = std::stoi(params.get(param::shadow_map_size));
   const std::string& format = params.get(param::shadow_depth_format);
   if (size == size_ && format == format_) return false;
-  depth_texture_ = make_texture_2d(depth_internal_format(format), size, size, GL_DEPTH_COMPONENT, GL_FLOAT, GL_NEAREST);
-  fbo_ = GlFramebuffer::create();
+  // The course's depth framebuffer, made by lab 0's GL solution (renderer/shadow_target.h).
+  const ShadowTarget target = create_shadow_target(size, depth_internal_format(format));
+  depth_texture_ = GlTexture::adopt(target.depth_texture);
+  fbo_ = GlFramebuffer::adopt(target.framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_texture_.id(), 0);
-  glDrawBuffer(GL_NONE);  // depth only: the course's first pass needs no colour buffer
-  glReadBuffer(GL_NONE);
   check_framebuffer("shadow map");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   size_ = size;
@@ -70,13 +70,9 @@ void DepthMapPass::draw_map(PassContext& ctx) {
 void DepthMapPass::draw_depth(PassContext& ctx) {
   if (depth_u_.generation != depth_.generation())
     depth_u_ = {depth_.generation(), Uniform(depth_.id(), "u_light_view_proj")};
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, size_, size_);
+  begin_shadow_pass({fbo_.id(), depth_texture_.id(), size_});
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glClearDepth(1.0);
-  glClear(GL_DEPTH_BUFFER_BIT);
   glUseProgram(depth_.id());
   const glm::mat4 light_view_proj = ctx.light.view.view_projection();
   depth_u_.light_view_proj.set(light_view_proj);

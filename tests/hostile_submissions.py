@@ -56,6 +56,7 @@ import zipfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LAB0 = "labs/00_basic_shadow_map/exercise.glsl"
 LAB2 = "labs/02_ortho_fit/exercise.cpp"
+LAB0_GL = "labs/00_basic_shadow_map/gl_shadow_target.cpp"  # lab 0's OpenGL part: the solution is the renderer's
 MISSING0 = ("missing", [LAB0 + ": not in the submission"])
 
 
@@ -69,6 +70,10 @@ def wrong_cpp():
 
 def solution_glsl():
     return open(ROOT + "/labs/00_basic_shadow_map/solution.glsl", "rb").read()
+
+
+def solution_gl():
+    return open(ROOT + "/renderer/shadow_target.cpp", "rb").read()
 
 
 def folder(path, files):
@@ -119,13 +124,13 @@ def make(out, kind):
     subs = os.path.join(out, "submissions")
     work = os.path.join(out, "work", kind)
     if kind == "right":
-        folder(os.path.join(subs, kind), {LAB0: solution_glsl(), LAB2: right_cpp()})
+        folder(os.path.join(subs, kind), {LAB0: solution_glsl(), LAB0_GL: solution_gl(), LAB2: right_cpp()})
         return kind, {"0": ("passed", []), "2": ("passed", [])}
     if kind == "wrong":
         folder(os.path.join(subs, kind), {LAB0: open(ROOT + "/" + LAB0, "rb").read(), LAB2: wrong_cpp()})
         return kind, {"0": ("failed", ["criteria failed"]), "2": ("failed", ["criteria failed"])}
     if kind == "absent":
-        folder(os.path.join(subs, kind), {LAB0: solution_glsl()})
+        folder(os.path.join(subs, kind), {LAB0: solution_glsl(), LAB0_GL: solution_gl()})
         return kind, {"0": ("passed", []), "2": ("missing", [LAB2 + ": not in the submission"])}
     if kind == "syntax":
         text = solution_glsl().rstrip(b"\n") + b"\nthis is not code;\n"

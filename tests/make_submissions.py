@@ -136,8 +136,13 @@ def main():
         for (kind, name), given in sorted(answers_of(labs[n]).items()):
             # check_corpus's rule: `// fails: compile_error` marks an answer whose point is not to build.
             fails = next(filter(None, (header(p, "fails") for p in given.values())), None)
-            unbuildable[(n, name)] = "compile_error" in (fails or "").split()
+            # The status an answer's `// fails:` line names instead of a criterion (a hostile one's), if any.
+            unbuildable[(n, name)] = next((w for w in (fails or "").split() if w in ("compile_error", "timed_out", "crashed")), None)
             files = {}
+            # A GL exercise (lab 0's gl_shadow_target.cpp): the answer's, else the solution's, which builds
+            # as an answer (the renderer's own file).
+            for ex, sol in zip(labs[n].get("gl_exercise_files", []), labs[n].get("gl_solution_files", [])):
+                files[ex] = (name, read(given.get(os.path.basename(ex), os.path.join(ROOT, sol))))
             for ex, sol in zip(exercises, solutions):
                 path = given.get(os.path.basename(ex), os.path.join(ROOT, sol) if drop_in else None)
                 if path is None:
@@ -146,7 +151,8 @@ def main():
             else:
                 offered[kind].append(files)
         if drop_in:
-            offered["right"].append({ex: ("solution", read(os.path.join(ROOT, sol))) for ex, sol in zip(exercises, solutions)})
+            slots = list(zip(exercises, solutions)) + list(zip(labs[n].get("gl_exercise_files", []), labs[n].get("gl_solution_files", [])))
+            offered["right"].append({ex: ("solution", read(os.path.join(ROOT, sol))) for ex, sol in slots})
         answers[n] = offered
         if not offered["right"]:
             sys.exit("make_submissions: no right answer for lab %d in tests/answers" % n)
@@ -200,8 +206,11 @@ def main():
                             entry["line"] = line + 1  # the name line below comes first
                     entry["variant"] = variant
                 files[ex] = "// %s: %s\n%s" % (name, variant, text)
+            for ex in labs[n].get("gl_exercise_files", []):  # as the answer gives it, never broken here
+                variant, text = chosen[ex]
+                files[ex] = "// %s: %s\n%s" % (name, variant, text)
             if kind == "wrong" and unbuildable[(n, chosen[exercises[0]][0])]:
-                entry["status"] = "compile_error"
+                entry["status"] = unbuildable[(n, chosen[exercises[0]][0])]
             record[str(n)] = entry
         kind = "folder"
         r = rng.random()

@@ -6,7 +6,8 @@
 Every answer becomes a submission folder: the answer's files in their exercise slots, the solution's files
 in the slots the answer does not give. A wrong answer must not pass, and must fail on a criterion its
 `// fails:` header line names (shell-style patterns over the criteria's metric names, e.g.
-`chebyshev.*`; `compile_error` for an answer whose point is not to build); a right answer must pass.
+`chebyshev.*`; `compile_error` for an answer whose point is not to build, `crashed` or `timed_out` for a hostile
+one the sandbox stops); a right answer must pass.
 Exit 0 when every answer is graded as expected, 1 otherwise (each misgrade printed), 2 on a usage error.
 """
 import argparse
@@ -55,12 +56,14 @@ def answers_of(lab, only=None):
 
 def make_submission(lab, files, root):
     """A folder laid out like the project: the answer's files, the solution's in the other slots."""
-    for exercise, solution in zip(lab["exercise_files"], lab["solution_files"]):
+    exercises = lab["exercise_files"] + lab.get("gl_exercise_files", [])  # GL exercises (lab 0's) as slots
+    solutions = lab["solution_files"] + lab.get("gl_solution_files", [])
+    for exercise, solution in zip(exercises, solutions):
         target = root / exercise
         target.parent.mkdir(parents=True, exist_ok=True)
         name = pathlib.Path(exercise).name
         shutil.copyfile(files.get(name, ROOT / solution), target)
-    unknown = set(files) - {pathlib.Path(e).name for e in lab["exercise_files"]}
+    unknown = set(files) - {pathlib.Path(e).name for e in exercises}
     if unknown:
         raise SystemExit(f"lab {lab['number']}: answer files for no exercise slot: {sorted(unknown)}")
 
@@ -97,8 +100,8 @@ def verdict(kind, expected, outcome, foreign=False):
     if expected is None:
         return "no `// fails:` line names the criterion this mistake must fail"
     patterns = expected.split()
-    if status == "compile_error":
-        return None if "compile_error" in patterns else f"does not build: {outcome.get('error', '')[:300]}"
+    if status in ("compile_error", "crashed", "timed_out"):  # a hostile answer names the sandbox's status
+        return None if status in patterns else f"{status}: {outcome.get('error', '')[:300]}"
     if foreign or any(fnmatch.fnmatch(metric, p) for metric in outcome["failed"] for p in patterns):
         return None
     return f"fails, but not on {expected}: failed {outcome['failed']}"

@@ -31,7 +31,7 @@ A count of the exam corpus's answers names its folders (a glob), counted as chec
 
     143<!-- # tests/answers/*/wrong --> wrong answers
 
-The project's README.md is held to its markers. Exit 0 when every text agrees, 1 otherwise (each
+The project's README.md and the corpus's (tests/answers/README.md) are held to their markers. Exit 0 when every text agrees, 1 otherwise (each
 disagreement printed with its file and line).
 """
 import functools
@@ -161,7 +161,14 @@ def measured_value(file, pointer):
 
 
 def answers_in(pattern):
-    """How many answers the corpus folders matching pattern hold (NAME__SLOT files, one per NAME)."""
+    """How many answers the corpus folders matching pattern hold (NAME__SLOT files, one per NAME). A pattern
+    whose last part names files (`tests/answers/00_basic_shadow_map/wrong/*__gl_shadow_target.cpp`) counts
+    the answers that give that slot."""
+    if "__" in pattern.rsplit("/", 1)[-1]:
+        files = [f for f in sorted(ROOT.glob(pattern)) if f.is_file()]
+        if not files:
+            raise LookupError(f"no corpus file {pattern}")
+        return len({(f.parent, f.name.partition("__")[0]) for f in files})
     folders = [f for f in sorted(ROOT.glob(pattern)) if f.is_dir()]
     if not folders:
         raise LookupError(f"no corpus folder {pattern}")
@@ -176,6 +183,8 @@ def texts():
         yield notes, "instructor"
     if (ROOT / "README.md").exists():
         yield ROOT / "README.md", "project"
+    if (ROOT / "tests/answers/README.md").exists():  # the corpus's own text: held to its markers
+        yield ROOT / "tests/answers/README.md", "corpus"
 
 
 def measured_markers():
