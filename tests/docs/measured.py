@@ -60,6 +60,10 @@ VARIANTS = [
     # Lab 12: the cascade count and the split blend varied (the solution): where cascades win.
     *[(12, f"solution_count_{n}", "check", ["--impl", "solution", "--set", f"csm.count={n}"]) for n in ("1", "2", "8")],
     *[(12, f"solution_lambda_{l}", "check", ["--impl", "solution", "--set", f"csm.lambda={l}"]) for l in ("0", "0.5", "1")],
+    # Lab 17: the corpus's answers that each fail one criterion alone (the range check, the kernel's scale),
+    # as they are: the instructor notes quote their values against the limits.
+    *[(17, answer, "submission", [f"ssao_{answer}"])
+      for answer in ("no_range_check", "range_check_inverted", "unscaled_radius", "samples_on_shell")],
 ]
 
 # A "submission" run's first argument names one of these: {exercise slot: (the project file it is made
@@ -80,6 +84,12 @@ SUBMISSIONS["msm_upper"] = {"labs/14_msm/exercise.glsl": (
 SUBMISSIONS["msm_cramer"] = {"labs/14_msm/exercise.glsl": (
     "tests/answers/14_msm/wrong/cramer_in_float__exercise.glsl", "  vec3 rhs = vec3(1.0, z, z * z);",
     "  vec3 rhs = vec3(1.0, z, z * z);")}
+# Lab 17's wrong answers, taken as they are (their first code line kept).
+for _answer in ("no_range_check", "range_check_inverted", "unscaled_radius", "samples_on_shell"):
+    SUBMISSIONS[f"ssao_{_answer}"] = {"labs/17_ssao/exercise.glsl": (
+        f"tests/answers/17_ssao/wrong/{_answer}__exercise.glsl",
+        "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {",
+        "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {")}
 # The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
 SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
     "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
