@@ -100,33 +100,27 @@ std::vector<std::uint8_t> discontinuities(const GBuffer& g, float radius) {
   return d;
 }
 
-// Marks every pixel within `reach` pixels (a square) of a pixel where `source` holds.
+// Marks every pixel within `reach` pixels (a square) of a pixel where `source` holds: along each row, then
+// along each column of that.
 std::vector<std::uint8_t> dilate(const std::vector<std::uint8_t>& source, int w, int h, int reach) {
+  // One line of `length` pixels, pixel k at index(k): marks in `to` what lies within reach of a mark in `from`.
+  const auto line = [reach](const std::vector<std::uint8_t>& from, std::vector<std::uint8_t>& to, int length,
+                            const auto& index) {
+    int last = -2 * reach - 1;
+    for (int k = 0; k < length; ++k) {
+      if (from[index(k)]) last = k;
+      if (k - last <= reach) to[index(k)] = 1;
+    }
+    last = length + 2 * reach + 1;
+    for (int k = length - 1; k >= 0; --k) {
+      if (from[index(k)]) last = k;
+      if (last - k <= reach) to[index(k)] = 1;
+    }
+  };
+  const auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x); };
   std::vector<std::uint8_t> rows(source.size(), 0), out(source.size(), 0);
-  for (int y = 0; y < h; ++y) {
-    int last = -1000000;
-    for (int x = 0; x < w; ++x) {
-      if (source[static_cast<std::size_t>(y) * w + x]) last = x;
-      if (x - last <= reach) rows[static_cast<std::size_t>(y) * w + x] = 1;
-    }
-    last = 1000000;
-    for (int x = w - 1; x >= 0; --x) {
-      if (source[static_cast<std::size_t>(y) * w + x]) last = x;
-      if (last - x <= reach) rows[static_cast<std::size_t>(y) * w + x] = 1;
-    }
-  }
-  for (int x = 0; x < w; ++x) {
-    int last = -1000000;
-    for (int y = 0; y < h; ++y) {
-      if (rows[static_cast<std::size_t>(y) * w + x]) last = y;
-      if (y - last <= reach) out[static_cast<std::size_t>(y) * w + x] = 1;
-    }
-    last = 1000000;
-    for (int y = h - 1; y >= 0; --y) {
-      if (rows[static_cast<std::size_t>(y) * w + x]) last = y;
-      if (last - y <= reach) out[static_cast<std::size_t>(y) * w + x] = 1;
-    }
-  }
+  for (int y = 0; y < h; ++y) line(source, rows, w, [&](int x) { return at(x, y); });
+  for (int x = 0; x < w; ++x) line(rows, out, h, [&](int y) { return at(x, y); });
   return out;
 }
 
@@ -321,7 +315,8 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"halos", "A large radius without the range check: the boxes and the sphere darken the floor far behind them.",
        {{"ssao.radius", "2"}, {"ssao.range_check", "0"}},
        {.provokes = "halos", .fixed_by = "tuned"}},
-      {"self-occlusion", "Bias 0: the flat floor occludes its own samples where the depths round.",
+      {"self-occlusion", "Bias 0 and no blur: samples lying almost in the surface's own plane are compared with the surface's own "
+       "depths, and some count as hidden: a faint speckle on flat surfaces (faint here: the positions are stored as floats).",
        {{"ssao.bias", "0"}, {"ssao.blur", "0"}},
        {.provokes = "self-occlusion", .fixed_by = "tuned"}},
       {"banding", "No noise, no blur, 8 samples: every pixel uses the same few sample directions, and bands show.",
