@@ -235,7 +235,7 @@ AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracl
                            {"halo_pixels", f.halo_pixels},
                            {"halo_width_px", f.halo_width},
                            {"truth_rays", f.rays},
-                           {"truth_seconds", f.truth_seconds}};
+                           {"truth_ms", f.truth_seconds * 1000.0}};
   std::printf("    %-10s open %.4f (%ld px) occluded %.4f (%ld px) captured %.4f\n", c.tag.c_str(), f.open_error, f.open,
               f.occluded_error, f.occluded, f.captured);
   std::printf("    %-10s AO mean error %.4f (signed %+.4f, %ld px), halo width %.3f px (%ld / %ld), truth %.2f s %llu rays\n",
