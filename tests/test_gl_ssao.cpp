@@ -33,8 +33,8 @@ class SsaoTest : public GlTest {
   const FrameStats& render(Renderer& r, const Features& features, bool blur = true) {
     EXPECT_TRUE(r.set_features(features)) << r.shader_error();
     r.set_scene(make_default_scene());
-    params.set("view.debug_quad", 0.0);
-    params.set("ssao.blur", blur ? 1.0 : 0.0);
+    params.set(param::view_debug_quad, false);
+    params.set(param::ssao_blur, blur);
     FrameRequest req;
     req.camera = OrbitCamera::framing(make_default_scene().bounds(), 30.0f, 35.0f);
     req.width = 320;

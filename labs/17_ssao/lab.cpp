@@ -271,7 +271,7 @@ AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracl
 
 void check_ssao(CheckContext& ctx, CheckResult& result) {
   ParamSet params = ctx.params();
-  params.set("view.debug_quad", 0.0);
+  params.set(param::view_debug_quad, false);
   ctx.use(ctx.hooks());
   std::vector<AoCase> cases = {{"lab", "default", 30.0f, 30.0f, static_cast<float>(params.get(param::ssao_radius))}};
   std::mt19937 rng = ctx.held_out_rng();
@@ -294,7 +294,7 @@ void check_ssao(CheckContext& ctx, CheckResult& result) {
       scene_name = c.scene;
     }
     ParamSet p = params;
-    p.set("ssao.radius", c.radius);
+    p.set(param::ssao_radius, c.radius);
     grade_case(ctx, result, *oracle, p, c);
   }
   ctx.use_default_scene();
