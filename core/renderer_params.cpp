@@ -235,10 +235,38 @@ std::vector<ParamSpec> volume_param_specs() {
   return specs_of(param::volume_method);
 }
 
+namespace param {
+
+// Screen-space ambient occlusion (renderer/ssao_pass.h, shaders/ssao/): read by its passes as uniforms.
+const FloatParam ssao_radius{{"ssao.radius", "AO radius", ParamKind::Float, 0.5, 0.05, 4.0,
+    "How far (world units) a surface may be and still occlude: the hemisphere of samples around each point "
+    "has this radius, and the AO truth counts occluders within it.", {}, kInvalidatesNothing, true}};
+const IntParam ssao_samples{{"ssao.samples", "AO samples", ParamKind::Int, 32.0, 4.0, 64.0,
+    "Kernel samples per pixel (the first N of the renderer's 64): fewer, noisier AO.", {}}};
+const FloatParam ssao_bias{{"ssao.bias", "AO depth bias", ParamKind::Float, 0.025, 0.0, 0.2,
+    "How far (view-space units) the depth buffer's surface must be in front of a sample to occlude it: 0 lets "
+    "a flat surface's own depths, rounded, occlude its samples (self-occlusion).", {}}};
+const BoolParam ssao_range_check{{"ssao.range_check", "AO range check", ParamKind::Bool, 1.0, 0.0, 1.0,
+    "Passed to the occlusion test as range_check: off, a surface far behind a sample (a wall far in front of "
+    "the background) occludes it all the same, and dark halos surround the objects.", {}}};
+const BoolParam ssao_blur{{"ssao.blur", "AO blur", ParamKind::Bool, 1.0, 0.0, 1.0,
+    "Average the AO over 4 x 4 pixels (the noise texture's tile), which removes the noise's pattern.", {}}};
+const BoolParam ssao_noise{{"ssao.noise", "AO noise rotation", ParamKind::Bool, 1.0, 0.0, 1.0,
+    "Rotate the kernel per pixel by the 4 x 4 noise texture's vectors; off, every pixel uses the same vector "
+    "(1, 0, 0) and the few samples show as bands.", {}}};
+
+}  // namespace param
+
+std::vector<ParamSpec> ssao_param_specs() {
+  return specs_of(param::ssao_radius, param::ssao_samples, param::ssao_bias, param::ssao_range_check, param::ssao_blur,
+                  param::ssao_noise);
+}
+
 namespace {
 std::vector<ParamSpec> all_technique_specs() {
   std::vector<ParamSpec> all;
-  for (auto group : {light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs()})
+  for (auto group : {light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs(),
+                     ssao_param_specs()})
     all.insert(all.end(), group.begin(), group.end());
   return all;
 }

@@ -8,6 +8,7 @@
 //   pcf.*     percentage-closer filtering: kernel size, hardware comparison
 //   point.*   the cube shadow map of a point light
 //   volume.*  stencil shadow volumes
+//   ssao.*    screen-space ambient occlusion (renderer/ssao_pass.h), when the features switch it on
 #pragma once
 
 #include <string>
@@ -24,6 +25,7 @@ std::vector<ParamSpec> light_param_specs();
 std::vector<ParamSpec> pcf_param_specs();
 std::vector<ParamSpec> point_param_specs();
 std::vector<ParamSpec> volume_param_specs();
+std::vector<ParamSpec> ssao_param_specs();
 // The specs with these keys from any of the groups above, in the order given; throws std::out_of_range
 // for an unknown key.
 std::vector<ParamSpec> technique_param_specs(const std::vector<std::string>& keys);
@@ -45,6 +47,12 @@ extern const ChoiceParam pcss_view;
 extern const FloatParam pcss_view_range;
 extern const BoolParam point_single_pass;
 extern const ChoiceParam volume_method;
+extern const FloatParam ssao_radius;
+extern const IntParam ssao_samples;
+extern const FloatParam ssao_bias;
+extern const BoolParam ssao_range_check;
+extern const BoolParam ssao_blur;
+extern const BoolParam ssao_noise;
 }  // namespace param
 
 LightType light_type(const ParamSet& params);

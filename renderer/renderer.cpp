@@ -11,6 +11,7 @@
 #include "renderer/lit_pass.h"
 #include "renderer/moments_pass.h"
 #include "renderer/shadow_volume_pass.h"
+#include "renderer/ssao_pass.h"
 #include "core/vsm_params.h"
 
 namespace shadowlab {
@@ -187,6 +188,11 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     billboards = std::make_unique<BillboardPass>();
     ok = billboards->set_includes(includes, features.include_rules) && ok;
   }
+  std::unique_ptr<SsaoPass> ssao;
+  if (features.ssao) {
+    ssao = std::make_unique<SsaoPass>();
+    ok = ssao->set_includes(includes, features.include_rules) && ok;
+  }
   if (!ok) {
     // Kept now: a fresh pass that failed is dropped, and shader_error() walks only the kept passes.
     failed_build_error_.clear();
@@ -194,11 +200,13 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     lit_->for_each_program(collect);
     pass.for_each_program(collect);
     if (billboards) billboards->for_each_program(collect);
+    if (ssao) ssao->for_each_program(collect);
     for (const ShadowedLight& shadowed : lights) shadowed.for_each_program(collect);
     return false;
   }
   failed_build_error_.clear();
   billboards_ = std::move(billboards);
+  ssao_ = std::move(ssao);
   lights_ = std::move(lights);
   if (fresh) {
     shadow_ = std::move(fresh);
@@ -218,6 +226,7 @@ void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f
   views_->for_each_program(f);
   if (shadow_) shadow_->for_each_program(f);
   if (billboards_) billboards_->for_each_program(f);
+  if (ssao_) ssao_->for_each_program(f);
   for (const ShadowedLight& light : lights_) light.for_each_program(f);
 }
 
@@ -317,6 +326,9 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     });
   }
 
+  // 3b. Screen-space ambient occlusion over the lit picture, when the features ask for it.
+  if (ssao_) ssao_->draw(ctx, *lit_);
+
   // 4. Debug views.
   views_->draw(ctx, shadow, *lit_);
 
@@ -401,6 +413,10 @@ GBuffer Renderer::read_gbuffer() const {
   if (!placement_.is_identity())
     for (glm::vec3& p : g.position) p = placement_.to_scene(p);
   return g;
+}
+std::vector<float> Renderer::read_ao(bool blurred) const {
+  if (!ssao_) throw std::logic_error("read_ao needs the features' SSAO (Features::ssao)");
+  return ssao_->read_open(blurred);
 }
 std::vector<float> Renderer::read_shadow_depth(int* size) const { return shadow_->read_depth(size); }
 std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const { return shadow_->image(size); }

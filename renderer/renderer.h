@@ -45,6 +45,7 @@ class BillboardPass;
 struct PassContext;
 class LitPass;
 class DebugViews;
+class SsaoPass;
 struct MomentsTargetInfo;
 struct VolumeMeshReport;
 struct VolumeTriangles;
@@ -109,6 +110,9 @@ struct Features {
   // reads no uniform of its own): its file goes into "lab/visibility.glsl" unless `includes` names
   // another there (a student's version of it), and the lit pass sets its uniforms, no other test's.
   std::string shadow_test;
+  // Screen-space ambient occlusion (renderer/ssao_pass.h) after the lit pass: "lab/ssao.glsl" (default
+  // shaders/ssao/ssao_core.glsl) and the ssao.* parameters. Off: no SSAO pass exists at all.
+  bool ssao = false;
 };
 
 // The define Features::own_shadow_coords compiles the lit pass's and the probes' programs with.
@@ -195,6 +199,9 @@ class Renderer {
   std::vector<std::uint8_t> read_color() const;
   std::vector<float> read_visibility() const;
   GBuffer read_gbuffer() const;
+  // The SSAO pass's AO of the last frame (1 open, 0 occluded), bottom row first: blurred (when ssao.blur
+  // was on) or raw. Throws unless the features switch SSAO on.
+  std::vector<float> read_ao(bool blurred = true) const;
   // The shadow map's depths, bottom row first, and its side length (with the moments technique: the
   // moments pass's depth renderbuffer; empty with size 0 for a cube map or shadow volumes).
   std::vector<float> read_shadow_depth(int* size) const;
@@ -285,6 +292,7 @@ class Renderer {
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;
   std::unique_ptr<BillboardPass> billboards_;  // only while the features have billboards
+  std::unique_ptr<SsaoPass> ssao_;              // only while the features switch SSAO on
   std::vector<ShadowedLight> lights_;           // one per Features::lights entry
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws

@@ -137,6 +137,8 @@ class Uniform {
   void set(const glm::vec3& v) const { glUniform3f(location_, v.x, v.y, v.z); }
   void set(const glm::vec4& v) const { glUniform4f(location_, v.x, v.y, v.z, v.w); }
   void set(const glm::mat4& m) const { glUniformMatrix4fv(location_, 1, GL_FALSE, &m[0][0]); }
+  // An array of `count` vec3 (the uniform looked up by the array's name or its element 0).
+  void set(const glm::vec3* v, int count) const { glUniform3fv(location_, count, &v->x); }
   bool present() const { return location_ >= 0; }
   // Locations looked up by name so far, by every thread (glGetUniformLocation calls made here): tests
   // count them per frame.

@@ -64,6 +64,10 @@ VARIANTS = [
     # lab's scene, only the probes' other boxes show it) and lookAt with up = +Y (only straight down).
     (15, "fixed_near_far", "submission", ["flash_fixed"]),
     (15, "lookat_up_y", "submission", ["flash_lookat"]),
+    # Lab 17: the corpus's answers that each fail one criterion alone (the range check, the kernel's scale),
+    # as they are: the instructor notes quote their values against the limits.
+    *[(17, answer, "submission", [f"ssao_{answer}"])
+      for answer in ("no_range_check", "range_check_inverted", "unscaled_radius", "samples_on_shell")],
 ]
 
 # A "submission" run's first argument names one of these: {exercise slot: (the project file it is made
@@ -88,6 +92,12 @@ SUBMISSIONS["flash_fixed"] = {"labs/15_two_lights/exercise.cpp": (
     "tests/answers/15_two_lights/wrong/fixed_near_far__exercise.cpp", "  LightView v;", "  LightView v;")}
 SUBMISSIONS["flash_lookat"] = {"labs/15_two_lights/exercise.cpp": (
     "tests/answers/15_two_lights/wrong/lookat_up_y__exercise.cpp", "  LightView v;", "  LightView v;")}
+# Lab 17's wrong answers, taken as they are (their first code line kept).
+for _answer in ("no_range_check", "range_check_inverted", "unscaled_radius", "samples_on_shell"):
+    SUBMISSIONS[f"ssao_{_answer}"] = {"labs/17_ssao/exercise.glsl": (
+        f"tests/answers/17_ssao/wrong/{_answer}__exercise.glsl",
+        "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {",
+        "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {")}
 # The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
 SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
     "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
