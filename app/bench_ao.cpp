@@ -48,17 +48,6 @@ std::vector<AoSetting> ao_settings(bool quick) {
   return out;
 }
 
-// Lab 17's camera: the objects' box without the flat floor (labs/17_ssao/lab.cpp's objects_bounds).
-Bounds objects_of(const Scene& scene) {
-  Bounds all;
-  for (const Mesh& mesh : scene.meshes) {
-    Bounds b;
-    for (const glm::vec3& p : mesh.positions) b.extend(p);
-    if (!b.empty() && b.max.y - b.min.y > 1e-3f) all.extend(b);
-  }
-  return all.empty() ? scene.bounds() : all;
-}
-
 bool is_ao_pass(std::string_view name) { return name.starts_with("ssao") || name.starts_with("gtao"); }
 
 }  // namespace
@@ -67,7 +56,7 @@ nlohmann::json measure_ao_front(Renderer& renderer, bool quick) {
   const Lab& lab = *find_lab(17);
   if (!renderer.set_features(lab.hooks(Impl::Solution))) throw std::runtime_error(renderer.shader_error());
   renderer.set_scene(make_default_scene());
-  FrameRequest request = bench_request(objects_of(renderer.scene()));  // yaw and pitch 30: lab 17's view
+  FrameRequest request = bench_request(ao_view_bounds(renderer.scene()));  // yaw and pitch 30: lab 17's view
   const int frames = quick ? 3 : 7;
   ParamSet base = lab_params(lab);
   for (const ParamSpec& spec : ao_method_param_specs()) base.declare(spec);

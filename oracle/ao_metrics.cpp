@@ -55,6 +55,16 @@ std::vector<std::uint8_t> near_marked(const std::vector<std::uint8_t>& marked, i
 
 }  // namespace
 
+Bounds ao_view_bounds(const Scene& scene) {
+  Bounds all;
+  for (const Mesh& mesh : scene.meshes) {
+    Bounds b;
+    for (const glm::vec3& p : mesh.positions) b.extend(p);
+    if (!b.empty() && b.max.y - b.min.y > 1e-3f) all.extend(b);
+  }
+  return all.empty() ? scene.bounds() : all;
+}
+
 std::vector<std::uint8_t> ao_interior(const GBuffer& g, float radius) {
   const std::size_t n = checked_pixel_count(g, "ao_interior");
   const auto e = edges(g, radius);

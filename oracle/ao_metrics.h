@@ -27,6 +27,10 @@ struct AoInteriorError {
   long interior_pixels = 0, open_pixels = 0, occluded_pixels = 0;
 };
 
+// What lab 17's camera frames (labs/17_ssao/lab.cpp): the meshes' box without the flat ones (thinner than
+// 1e-3 in y: the ground, a receiver), so that the radius spans enough pixels; the scene's box when all are flat.
+Bounds ao_view_bounds(const Scene& scene);
+
 // 1 on interior pixels (covered, no discontinuity within kAoInteriorMargin pixels).
 std::vector<std::uint8_t> ao_interior(const GBuffer& gbuffer, float radius);
 

@@ -28,17 +28,6 @@ constexpr int kWidth = 640, kHeight = 360;
 
 class GtaoTest : public GlTest {};
 
-// Lab 17's camera: the objects' box without the flat floor, at yaw 30 and pitch 30 (labs/17_ssao/lab.cpp).
-OrbitCamera lab17_camera(const Scene& scene) {
-  Bounds objects;
-  for (const Mesh& mesh : scene.meshes) {
-    Bounds b;
-    for (const glm::vec3& p : mesh.positions) b.extend(p);
-    if (!b.empty() && b.max.y - b.min.y > 1e-3f) objects.extend(b);
-  }
-  return OrbitCamera::framing(objects, 30.0f, 30.0f);
-}
-
 struct Frame {
   GBuffer gbuffer;
   std::vector<float> ao;
@@ -58,7 +47,7 @@ Frame render(const std::vector<std::pair<std::string, std::string>>& settings, c
   params.set("ssao.radius", kRadius);
   for (const auto& [key, value] : settings) params.set_from_string(key, value);
   FrameRequest request;
-  request.camera = lab17_camera(r.scene());
+  request.camera = OrbitCamera::framing(ao_view_bounds(r.scene()), 30.0f, 30.0f);  // lab 17's view
   request.width = kWidth;
   request.height = kHeight;
   request.gbuffer = true;
