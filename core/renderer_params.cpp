@@ -263,7 +263,8 @@ const ChoiceParam ssao_method{{"ssao.method", "AO method", ParamKind::Choice, 0.
     "(Jimenez et al. 2016), the horizons found along screen-space slices and the cosine-weighted visible "
     "arc between them integrated in closed form.", {"ssao", "gtao"}}};
 const IntParam ssao_gtao_directions{{"ssao.gtao_directions", "GTAO slices", ParamKind::Int, 4.0, 1.0, 16.0,
-    "GTAO's slice directions per pixel (rotated per pixel by the 4 x 4 noise): fewer, noisier AO.", {}}};
+    "GTAO's slice directions per pixel, turned and their steps offset per pixel by the 4 x 4 noise when "
+    "ssao.noise is on: fewer, noisier AO.", {}}};
 const IntParam ssao_gtao_steps{{"ssao.gtao_steps", "GTAO steps", ParamKind::Int, 8.0, 1.0, 32.0,
     "GTAO's depth samples on each side of a slice, spread over the radius projected on the screen.", {}}};
 

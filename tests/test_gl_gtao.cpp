@@ -6,9 +6,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sstream>
+#include <random>
 #include <string>
 
 #include "core/light.h"
@@ -19,6 +18,7 @@
 #include "oracle/ao_metrics.h"
 #include "renderer/renderer.h"
 #include "tests/gl_fixture.h"
+#include "tests/test_util.h"
 
 namespace shadowlab {
 namespace {
@@ -72,24 +72,22 @@ AoInteriorError graded(const Frame& f, const char* name) {
   return e;
 }
 
-// GTAO's core with one line changed, written to a temporary file: its path.
-std::string sabotaged_core(const std::string& name, const std::string& from, const std::string& to) {
-  std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/ssao/gtao_core.glsl");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string source = text.str();
-  std::size_t at = 0;
-  int replaced = 0;
-  while ((at = source.find(from, at)) != std::string::npos) {
-    source.replace(at, from.size(), to);
-    at += to.size();
-    ++replaced;
+// GTAO's core with every `from` replaced by `to`, in a file of its own under the temporary folder
+// (a random name: test processes run side by side), removed when it goes.
+struct SabotagedCore {
+  SabotagedCore(const std::string& name, const std::string& from, const std::string& to)
+      : path(std::filesystem::temp_directory_path() /
+             ("shadowlab_gtao_" + name + "_" + std::to_string(std::random_device{}()) + ".glsl")) {
+    std::string source = test::read_all(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/ssao/gtao_core.glsl");
+    int replaced = 0;
+    for (std::size_t at = 0; (at = source.find(from, at)) != std::string::npos; at += to.size(), ++replaced)
+      source.replace(at, from.size(), to);
+    EXPECT_GT(replaced, 0) << "the sabotage '" << name << "' no longer matches gtao_core.glsl";
+    test::write_all(path, source);
   }
-  EXPECT_GT(replaced, 0) << "the sabotage '" << name << "' no longer matches gtao_core.glsl";
-  const auto path = std::filesystem::temp_directory_path() / ("shadowlab_gtao_" + name + ".glsl");
-  std::ofstream(path) << source;
-  return path.string();
-}
+  ~SabotagedCore() { std::filesystem::remove(path); }
+  std::filesystem::path path;
+};
 
 // Limits, measured on this frame (2026-11-28, llvmpipe): GTAO 4 x 8 blurred errs 0.0055 over the
 // interior (0.0013 where the truth is open, 0.0723 where occluded); lab 17's SSAO (32 samples, blurred)
@@ -109,17 +107,15 @@ TEST_F(GtaoTest, NearTheAoTruthAndNearerThanSsaoInTheCreases) {
 }
 
 TEST_F(GtaoTest, SamplesBeyondTheRadiusCountedFail) {
-  const AoInteriorError e = graded(
-      render({{"ssao.method", "gtao"}}, sabotaged_core("no_radius", "<= u_radius)", "<= 1e30)")), "gtao, no radius");
+  const SabotagedCore core("no_radius", "<= u_radius)", "<= 1e30)");
+  const AoInteriorError e = graded(render({{"ssao.method", "gtao"}}, core.path.string()), "gtao, no radius");
   EXPECT_GT(e.mean, kGtaoInteriorLimit);
   EXPECT_GT(e.open, kGtaoOpenLimit);
 }
 
 TEST_F(GtaoTest, ProjectedNormalNotWeighedFails) {
-  const AoInteriorError e = graded(render({{"ssao.method", "gtao"}}, sabotaged_core("no_projected_length",
-                                                                                   "visible += np_length * (arc0 + arc1);",
-                                                                                   "visible += arc0 + arc1;")),
-                                   "gtao, no |np| weight");
+  const SabotagedCore core("no_projected_length", "visible += np_length * (arc0 + arc1);", "visible += arc0 + arc1;");
+  const AoInteriorError e = graded(render({{"ssao.method", "gtao"}}, core.path.string()), "gtao, no |np| weight");
   EXPECT_GT(e.mean, kGtaoInteriorLimit);  // brighter where the normal leans out of the slice: the creases
 }
 
