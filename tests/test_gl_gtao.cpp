@@ -23,19 +23,19 @@
 namespace shadowlab {
 namespace {
 
-constexpr float kRadius = 0.5f;  // lab 17's radius
+constexpr float kLabRadius = 0.5f;  // lab 17's radius
 constexpr int kWidth = 640, kHeight = 360;
 
 class GtaoTest : public GlTest {};
 
-struct Frame {
+struct GtaoFrame {
   GBuffer gbuffer;
   std::vector<float> ao;
 };
 
 // Lab 17's solution with these AO parameters (and, when not empty, GTAO's core from `gtao_core`), seen from
 // lab 17's camera (yaw 30, pitch 30) or another yaw.
-Frame render(const std::vector<std::pair<std::string, std::string>>& settings, const std::string& gtao_core = {},
+GtaoFrame render(const std::vector<std::pair<std::string, std::string>>& settings, const std::string& gtao_core = {},
              float yaw = 30.0f) {
   const Lab& lab = *find_lab(17);
   Features features = lab.hooks(Impl::Solution);
@@ -46,7 +46,7 @@ Frame render(const std::vector<std::pair<std::string, std::string>>& settings, c
   ParamSet params = lab_params(lab);
   for (const ParamSpec& spec : ao_method_param_specs()) params.declare(spec);
   params.set("view.debug_quad", 0.0);
-  params.set("ssao.radius", kRadius);
+  params.set("ssao.radius", kLabRadius);
   for (const auto& [key, value] : settings) params.set_from_string(key, value);
   FrameRequest request;
   request.camera = OrbitCamera::framing(ao_view_bounds(r.scene()), yaw, 30.0f);
@@ -92,8 +92,8 @@ struct GradedPair {
 // GTAO (with `gtao_core` when not empty) and lab 17's SSAO on one frame, against its truth.
 GradedPair grade_frame(float radius, float yaw, const std::string& gtao_core = {}) {
   const std::string r = std::to_string(radius);
-  const Frame g = render({{"ssao.method", "gtao"}, {"ssao.radius", r}}, gtao_core, yaw);
-  const Frame s = render({{"ssao.method", "ssao"}, {"ssao.radius", r}}, {}, yaw);
+  const GtaoFrame g = render({{"ssao.method", "gtao"}, {"ssao.radius", r}}, gtao_core, yaw);
+  const GtaoFrame s = render({{"ssao.method", "ssao"}, {"ssao.radius", r}}, {}, yaw);
   const Oracle oracle(ao_occluders(make_default_scene()));
   const AoTruth truth = evaluate_ao(oracle, g.gbuffer, radius);
   GradedPair p{ao_interior_error(g.gbuffer, g.ao, truth, radius), ao_interior_error(s.gbuffer, s.ao, truth, radius)};
@@ -103,7 +103,7 @@ GradedPair grade_frame(float radius, float yaw, const std::string& gtao_core = {
   return p;
 }
 
-constexpr std::pair<float, float> kFrames[] = {{kRadius, 30.0f}, {0.3f, 120.0f}, {1.0f, -60.0f}};
+constexpr std::pair<float, float> kFrames[] = {{kLabRadius, 30.0f}, {0.3f, 120.0f}, {1.0f, -60.0f}};
 
 TEST_F(GtaoTest, NearTheAoTruthAndNearerThanSsaoInTheCreases) {
   for (const auto& [radius, yaw] : kFrames) {
@@ -117,19 +117,19 @@ TEST_F(GtaoTest, NearTheAoTruthAndNearerThanSsaoInTheCreases) {
 // Written differently, the same integral: every slice turned half a turn, so its two sides swap roles.
 TEST_F(GtaoTest, SlicesTurnedHalfATurnPass) {
   const SabotagedCore core("half_turn", "* kPi / float(u_directions);", "* kPi / float(u_directions) + kPi;");
-  const GradedPair p = grade_frame(kRadius, 30.0f, core.path.string());
+  const GradedPair p = grade_frame(kLabRadius, 30.0f, core.path.string());
   EXPECT_LE(p.gtao.open, kGtaoOpenLimit);
   EXPECT_LE(p.gtao.occluded, kGtaoOverSsaoOccluded * p.ssao.occluded);
 }
 
 TEST_F(GtaoTest, SamplesBeyondTheRadiusCountedFail) {
   const SabotagedCore core("no_radius", "<= u_radius)", "<= 1e30)");
-  EXPECT_GT(grade_frame(kRadius, 30.0f, core.path.string()).gtao.open, kGtaoOpenLimit);
+  EXPECT_GT(grade_frame(kLabRadius, 30.0f, core.path.string()).gtao.open, kGtaoOpenLimit);
 }
 
 TEST_F(GtaoTest, ProjectedNormalNotWeighedFails) {
   const SabotagedCore core("no_projected_length", "visible += np_length * (arc0 + arc1);", "visible += arc0 + arc1;");
-  const GradedPair p = grade_frame(kRadius, 30.0f, core.path.string());
+  const GradedPair p = grade_frame(kLabRadius, 30.0f, core.path.string());
   EXPECT_GT(p.gtao.occluded, kGtaoOverSsaoOccluded * p.ssao.occluded);
 }
 
