@@ -16,6 +16,7 @@
 #include "app/command_options.h"
 #include "app/imgui_offscreen.h"
 #include "app/bench_frame_cost.h"
+#include "app/bench_ao.h"
 #include "app/bench_plot.h"
 #include "grading/check.h"
 #include "app/bench_figures.h"
@@ -275,7 +276,8 @@ bool write_pareto_png(const BenchPlots& plots, const fs::path& file, bool sized_
     if (is_sized_light_plot(name) == sized_lights) names.push_back(name);
   if (names.empty()) return false;
   const int plot_w = 640, plot_h = 420;
-  const int cols = 2, rows = static_cast<int>((names.size() + 1) / 2);
+  // Two tiles a row; one tile alone (ao_pareto.png) gets no empty half beside it.
+  const int cols = names.size() > 1 ? 2 : 1, rows = static_cast<int>((names.size() + 1) / 2);
   ImGuiOffscreen imgui(cols * plot_w, rows * plot_h);
   const auto pixels = imgui.render([&] {
     int i = 0;
@@ -374,6 +376,23 @@ int bench_frame_cost_only(const BenchOptions& options) {
   }
   write_text_atomic(fs::path(options.out_dir) / "frame_cost.json", frame_cost.dump(2) + "\n");
   print_frame_cost(frame_cost);
+  return 0;
+}
+
+// --ao: the AO front alone.
+int bench_ao_only(const BenchOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  nlohmann::json ao;
+  {
+    Renderer renderer;
+    ao = measure_ao_front(renderer, options.quick);
+  }
+  ao["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_text_atomic(fs::path(options.out_dir) / "ao_front.json", ao.dump(2) + "\n");
+  write_pareto_png(bench_plots_from_json(ao), fs::path(options.out_dir) / "ao_pareto.png");
+  std::printf("%zu AO points in %.0f s; wrote %s/ao_front.json, ao_pareto.png\n", ao.at("points").size(),
+              ao.at("seconds").get<double>(), options.out_dir.c_str());
+  print_ao_front(ao);
   return 0;
 }
 
@@ -546,16 +565,21 @@ int run_bench(const BenchOptions& options) {
     if (replot) return replot_bench(options, *replot);
     if (options.frame_cost_only) return bench_frame_cost_only(options);
     if (options.soft_truth_only) return bench_soft_truth_only(options, bench_scenes);
+    if (options.ao_only) return bench_ao_only(options);
     const std::vector<int> sizes = options.quick ? std::vector<int>{512, 1024, 2048} : std::vector<int>{512, 1024, 2048, 4096};
     const int frames = options.quick ? 3 : 7;
     const auto techs = techniques(options.quick);
     std::vector<BenchPoint> points;
     BenchFigures figures;
+    nlohmann::json ao;
     const auto start = std::chrono::steady_clock::now();
     {
       Renderer renderer;
       points = sweep(renderer, bench_scenes, techs, sizes, frames, start);
       figures = measure_figures(renderer, options, bench_scenes);
+      const auto ao_start = std::chrono::steady_clock::now();
+      ao = measure_ao_front(renderer, options.quick);
+      ao["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - ao_start).count();
     }
 
     // Each scene's points and its Pareto front (no other technique of that scene is both faster and more
@@ -579,14 +603,17 @@ int run_bench(const BenchOptions& options) {
                              {"blur_methods", blur_json(figures.blur_rows)},
                              {"technique_passes", technique_passes_json(figures.technique_rows)},
                              {"oracle_cost", oracle_cost_json(figures.oracle_cost)},
-                             {"soft_truth_cost", figures.soft_truth}};
+                             {"soft_truth_cost", figures.soft_truth},
+                             {"ao", ao}};
     write_text_atomic(out / "bench.json", report.dump(2) + "\n");
 
     write_pareto_png(plots, out / "pareto.png");
     write_pareto_png(plots, out / "pareto_light_size.png", true);
-    std::printf("%zu points in %.0f s; wrote %s/bench.csv, bench.json, pareto.png\n", points.size(), seconds,
-                options.out_dir.c_str());
+    write_pareto_png(bench_plots_from_json(ao), out / "ao_pareto.png");
+    std::printf("%zu points in %.0f s; wrote %s/bench.csv, bench.json, pareto.png, ao_pareto.png\n", points.size(),
+                seconds, options.out_dir.c_str());
     print_bench(figures, plots);
+    print_ao_front(ao);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%sshadowlab bench: %s\n", platform::is_terminal(stderr) ? "\n" : "", e.what());

@@ -20,6 +20,9 @@ struct BenchOptions {
   // Only the placement figures (app/bench_placement.h): every technique over offsets and scales, and the
   // frame cost with the local origin against without it; placement.json. --quick: the CI test's sample.
   bool placement_only = false;
+  // Only the AO front (app/bench_ao.h): ao_front.json and ao_pareto.png. A whole run measures it too
+  // (bench.json's "ao", ao_pareto.png).
+  bool ao_only = false;
   // Only pareto.png, drawn again from this bench.json (a recorded run): nothing is measured.
   std::string replot;
 };

@@ -170,6 +170,9 @@ CLI::App* add_bench_command(CLI::App& app, shadowlab::BenchOptions& bench) {
   bench_cmd->add_flag("--placement", bench.placement_only,
                       "Only the placement figures: every technique's error at offsets 1e3..1e7 and scales 1e-4..1e5 "
                       "against the origin's, and the frame cost with the local origin against without it");
+  bench_cmd->add_flag("--ao", bench.ao_only,
+                      "Only the AO front: SSAO (8-64 samples, blur off and on) and GTAO (slices x steps) on lab 17's "
+                      "scene, GPU ms against the error to the AO truth; ao_front.json, ao_pareto.png");
   bench_cmd->add_option("--scene", bench.scene_file, "glTF 2.0 file to use as the large real model (default: PalmTree)");
   bench_cmd->add_option("--replot", bench.replot, "Only draw pareto.png again from this bench.json (no measuring)");
   bench_cmd->add_option("--out", bench.out_dir, "Folder for the outputs (created if missing)")->required();

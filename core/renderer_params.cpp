@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/placement.h"
+#include "core/ao_params.h"
 #include "core/technique_params.h"
 #include "core/vsm_params.h"
 
@@ -255,6 +256,18 @@ const BoolParam ssao_noise{{"ssao.noise", "AO noise rotation", ParamKind::Bool, 
     "Rotate the kernel per pixel by the 4 x 4 noise texture's vectors; off, every pixel uses the same vector "
     "(1, 0, 0) and the few samples show as bands.", {}}};
 
+// The AO pass's method (renderer/ssao_pass.h): lab 17's SSAO or the renderer's own GTAO. Kept out of
+// ssao_param_specs() (lab 17's sliders): a lab or the bench declares them.
+const ChoiceParam ssao_method{{"ssao.method", "AO method", ParamKind::Choice, 0.0, 0.0, 1.0,
+    "ssao: the kernel of samples in the hemisphere (lab 17's ssao_open); gtao: ground-truth-based AO "
+    "(Jimenez et al. 2016), the horizons found along screen-space slices and the cosine-weighted visible "
+    "arc between them integrated in closed form.", {"ssao", "gtao"}}};
+const IntParam ssao_gtao_directions{{"ssao.gtao_directions", "GTAO slices", ParamKind::Int, 4.0, 1.0, 16.0,
+    "GTAO's slice directions per pixel, turned and their steps offset per pixel by the 4 x 4 noise when "
+    "ssao.noise is on: fewer, noisier AO.", {}}};
+const IntParam ssao_gtao_steps{{"ssao.gtao_steps", "GTAO steps", ParamKind::Int, 8.0, 1.0, 32.0,
+    "GTAO's depth samples on each side of a slice, spread over the radius projected on the screen.", {}}};
+
 }  // namespace param
 
 std::vector<ParamSpec> ssao_param_specs() {
@@ -262,11 +275,15 @@ std::vector<ParamSpec> ssao_param_specs() {
                   param::ssao_noise);
 }
 
+std::vector<ParamSpec> ao_method_param_specs() {
+  return specs_of(param::ssao_method, param::ssao_gtao_directions, param::ssao_gtao_steps);
+}
+
 namespace {
 std::vector<ParamSpec> all_technique_specs() {
   std::vector<ParamSpec> all;
   for (auto group : {light_param_specs(), pcf_param_specs(), point_param_specs(), volume_param_specs(),
-                     ssao_param_specs()})
+                     ssao_param_specs(), ao_method_param_specs()})
     all.insert(all.end(), group.begin(), group.end());
   return all;
 }

@@ -4,6 +4,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/ao_params.h"
 #include "renderer/lit_pass.h"
 
 namespace shadowlab {
@@ -41,6 +42,7 @@ std::array<glm::vec3, kSsaoNoiseSide * kSsaoNoiseSide> ssao_noise() {
 SsaoPass::SsaoPass()
     : gbuffer_({"shaders/ssao/view_gbuffer.vert", {}, "shaders/ssao/view_gbuffer.frag", {}, {}}),
       ssao_({"shaders/fullscreen.vert", {}, "shaders/ssao/ssao.frag", {}, {}}),
+      gtao_({"shaders/fullscreen.vert", {}, "shaders/ssao/gtao.frag", {}, {}}),
       blur_({"shaders/fullscreen.vert", {}, "shaders/ssao/blur.frag", {}, {}}),
       composite_({"shaders/fullscreen.vert", {}, "shaders/ssao/composite.frag", {}, {}}),
       quad_({"shaders/fullscreen.vert", {}, "shaders/ssao/quad.frag", {}, {}}),
@@ -63,12 +65,19 @@ bool SsaoPass::set_includes(const IncludeMap& includes, const IncludeRules& rule
   desc.includes.emplace("lab/ssao.glsl", "shaders/ssao/ssao_core.glsl");  // unless a lab gives one
   desc.rules = rules;
   ssao_.set_desc(desc);
-  return ssao_.rebuild();
+  ProgramDesc gtao = gtao_.desc();
+  gtao.includes = includes;
+  gtao.includes.emplace("ao/gtao.glsl", "shaders/ssao/gtao_core.glsl");  // unless a test gives one
+  gtao.rules = rules;
+  gtao_.set_desc(gtao);
+  const bool ssao_ok = ssao_.rebuild();
+  return gtao_.rebuild() && ssao_ok;
 }
 
 void SsaoPass::for_each_program(const std::function<void(ReloadableProgram&)>& f) {
   f(gbuffer_);
   f(ssao_);
+  f(gtao_);
   f(blur_);
   f(composite_);
   f(quad_);
@@ -137,8 +146,10 @@ void SsaoPass::draw(PassContext& ctx, LitPass& lit) {
     glBindTexture(GL_TEXTURE_2D, texture);
     sampler.set(unit);
   };
-  // 2. The AO buffer.
-  ctx.timed("ssao", [&] {
+  // 2. The AO buffer: SSAO's, or GTAO's (ssao_gtao.cpp).
+  const bool gtao = params.get(param::ssao_method) == "gtao";
+  if (gtao) ctx.timed("gtao", [&] { draw_gtao(ctx); });
+  if (!gtao) ctx.timed("ssao", [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, open_fbo_.id());
     glViewport(0, 0, width_, height_);
     glUseProgram(ssao_.id());

@@ -5,6 +5,9 @@
 //   2. ssao          per pixel, ssao_open() of "lab/ssao.glsl" (default shaders/ssao/ssao_core.glsl):
 //                    the kernel's hemisphere around the normal, rotated by the 4 x 4 noise texture, each
 //                    sample tested against the positions' depths -> the AO buffer (1 open, 0 occluded)
+//      or gtao       with ssao.method = gtao, in its place: gtao_open() of "ao/gtao.glsl" (default
+//                    shaders/ssao/gtao_core.glsl), horizons along ssao.gtao_directions screen-space slices
+//                    of ssao.gtao_steps samples a side -> the same AO buffer
 //   3. ssao_blur     the AO averaged over the noise's 4 x 4 tile (ssao.blur)
 //   4. ssao_composite the lit picture multiplied by the AO
 // With view.debug_quad, three quads along the bottom left: the AO buffer, the noise, the blurred AO.
@@ -53,13 +56,17 @@ class SsaoPass {
  private:
   void ensure_targets(int width, int height);
   void debug_quads(PassContext& ctx, LitPass& lit);
+  void draw_gtao(PassContext& ctx);  // pass 2 with ssao.method = gtao (renderer/ssao_gtao.cpp)
 
-  ReloadableProgram gbuffer_, ssao_, blur_, composite_, quad_;
+  ReloadableProgram gbuffer_, ssao_, gtao_, blur_, composite_, quad_;
   struct GbufferUniforms {
     Uniform view, projection;
   };
   struct SsaoUniforms {
     Uniform position, normal, noise, noise_scale, use_noise, projection, view, kernel, samples, radius, bias, range_check;
+  };
+  struct GtaoUniforms {
+    Uniform position, normal, noise, noise_scale, use_noise, projection, directions, steps, radius;
   };
   struct BlurUniforms {
     Uniform open, position;
@@ -69,6 +76,7 @@ class SsaoPass {
   };
   UniformCache<GbufferUniforms> gbuffer_u_;
   UniformCache<SsaoUniforms> ssao_u_;
+  UniformCache<GtaoUniforms> gtao_u_;
   UniformCache<BlurUniforms> blur_u_;
   UniformCache<ImageUniforms> composite_u_, quad_u_;
   int width_ = 0, height_ = 0;

@@ -386,7 +386,7 @@ for r in json.load(open(sys.argv[1]))['labs']:
     start=$(date +%s)
     "$bin" bench --quick --out "$tmp/bench" >"$tmp/out" 2>"$tmp/err" || fail "bench failed: $(tail -3 "$tmp/err")"
     elapsed=$(( $(date +%s) - start ))
-    for f in bench.csv bench.json pareto.png pareto_light_size.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
+    for f in bench.csv bench.json pareto.png pareto_light_size.png ao_pareto.png; do [ -s "$tmp/bench/$f" ] || fail "missing $f"; done
     # stderr is a file here, not a terminal: progress lines end in newlines, never carriage returns.
     grep -q $'\r' "$tmp/err" && fail "carriage returns in a log"
     grep -q '^\[[0-9]*/[0-9]*\] ' "$tmp/err" || fail "no progress lines: $(head -5 "$tmp/err")"
@@ -421,6 +421,12 @@ for p in j["points"]:  # every frame graded against the suns with a size too, on
 for scene in {p["scene"] for p in j["points"]}:
     for k in (0, 1):
         assert any(p["light_sizes"][k]["pareto"] for p in j["points"] if p["scene"] == scene), (scene, k)
+a = j["ao"]  # the AO front (app/bench_ao.h): both methods, timed and graded, the fastest on the front
+assert a["resolution"] == [640, 360] and a["truth_rays"] > 0 and a["seconds"] > 0, a
+ao = a["points"]
+assert {p["ssao.method"] for p in ao} == {"ssao", "gtao"}, ao
+assert all(p["gpu_ms"] > 0 and 0 <= p["error"] <= 1 and p["interior_pixels"] > 0 for p in ao), ao
+assert min(ao, key=lambda p: p["gpu_ms"])["pareto"], ao
 PY
     echo "bench --quick: ${elapsed} s"
     ;;
