@@ -481,7 +481,9 @@ std::vector<DirectionalCase> draw_directional_cases(CheckContext& ctx, const std
   return cases;
 }
 
-CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run) {
+namespace {
+
+CheckResult grade_on(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run) {
   CheckResult result;
   result.lab = lab.number;
   result.slug = lab.slug;
@@ -521,14 +523,56 @@ CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene
   } catch (const std::exception& e) {
     result.error = e.what();
   }
-  if (run.foreign_scene && result.error.empty()) {
-    CheckRun solution_run = run;
-    solution_run.impl = Impl::Solution;
-    solution_run.submission.clear();
-    solution_run.out_dir.clear();
-    solution_run.foreign_scene = false;
-    grade_against_solution(result, run_lab_check(renderer, lab, scene, solution_run));
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+// The box a scene is drawn in with these parameters: its own, with the ground plane the renderer adds.
+Bounds drawn_bounds(const Scene& scene, const ParamSet& params) {
+  return with_ground(scene, adds_ground(scene, params)).bounds();
+}
+
+std::string vector_text(const glm::dvec3& v) {
+  char s[128];
+  std::snprintf(s, sizeof s, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+  return s;
+}
+
+}  // namespace
+
+CheckResult run_lab_check(Renderer& renderer, const Lab& lab, const Scene& scene, const CheckRun& run) {
+  if (!run.foreign_scene) return grade_on(renderer, lab, scene, run);
+  const auto start = std::chrono::steady_clock::now();
+  ParamSet params = lab_params(lab);
+  LabFrame frame;
+  bool ground = false;
+  try {
+    for (const auto& a : run.assignments) params.apply_assignment(a);
+    ground = adds_ground(scene, params);
+    // The lab's own scene: the built-in one every lab is graded on without --scene (its conditions name the
+    // others they use, e.g. "stacked", and those stay as they are).
+    frame = lab_frame(drawn_bounds(scene, params), drawn_bounds(make_default_scene(), params));
+  } catch (const std::exception&) {
+    // A bad assignment: grade_on reports it as the lab's run does.
   }
+  const Scene fitted = in_lab_frame(scene, frame);
+  CheckResult result = grade_on(renderer, lab, fitted, run);
+  if (result.error.empty()) {
+    // The solution graded against itself needs no second run: its own result, the same frames and seed.
+    if (run.impl == Impl::Solution && run.submission.empty()) {
+      grade_against_solution(result, CheckResult(result));
+    } else {
+      CheckRun solution_run = run;
+      solution_run.impl = Impl::Solution;
+      solution_run.submission.clear();
+      solution_run.out_dir.clear();
+      grade_against_solution(result, grade_on(renderer, lab, fitted, solution_run));
+    }
+  }
+  result.notes.push_back("graded in the lab's frame: this scene's box (centre " + vector_text(frame.from + scene.origin) +
+                         (ground ? ", with the ground plane added to it" : "") + ") scaled by " + format("%.6g", frame.scale) +
+                         " and centred where the lab's own scene is, so the lights, cameras and lengths the "
+                         "lab's conditions give stand where they stand on the lab's scene");
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

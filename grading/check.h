@@ -269,6 +269,28 @@ inline constexpr double kAgainstSolutionMargin = 0.1;
 // criterion needs (no camera inside a volume, no shadowed quarter); a note says so.
 void grade_against_solution(CheckResult& result, const CheckResult& solution);
 
+// A scene not the lab's own is graded in the lab's frame: every length a lab's conditions give in absolute
+// units (spot and point light positions, a positional light's size, cameras and their eyes, boxes, a bias a
+// shader applies in world units) was chosen on the lab's own scene, and would stand nowhere useful on a model
+// a thousand times smaller or far from the origin. The foreign scene is moved and scaled instead (a
+// similarity, in double: one scale about the centre of its box, then a move), so that its bounding sphere
+// (centre of the box, half its diagonal, with the ground plane the renderer adds to it) is the lab's scene's:
+// lengths are in units of the scene's bounding radius about its centre. What is graded (fractions of pixels,
+// visibility, angles) does not change under a similarity; a scaled and moved copy of the lab's scene grades
+// as the lab's scene does.
+struct LabFrame {
+  double scale = 1.0;            // lab units per scene unit
+  glm::dvec3 from{0.0};          // the centre of the scene's box, in its own frame
+  glm::dvec3 to{0.0};            // the centre of the lab's scene's box
+  glm::vec3 apply(const glm::vec3& p) const { return glm::vec3(to + scale * (glm::dvec3(p) - from)); }
+};
+// The similarity that puts `scene`'s bounding sphere on `lab`'s (the identity when either is empty; a move
+// only when `scene` is a point).
+LabFrame lab_frame(const Bounds& scene, const Bounds& lab);
+// The scene with every position mapped (normals unchanged: the scale is uniform and positive) and its origin
+// at the lab's (the positions are the lab frame's own).
+Scene in_lab_frame(const Scene& scene, const LabFrame& frame);
+
 // One lab's grading as `shadowlab check` and the window's Check button run it.
 struct CheckRun {
   Impl impl = Impl::Exercise;
@@ -276,8 +298,9 @@ struct CheckRun {
   std::uint32_t seed = CheckContext::kDefaultSeed;
   std::vector<std::string> assignments;  // --set key=value over the lab's defaults
   std::filesystem::path out_dir;         // empty: no images
-  // The scene is not the lab's own (check --scene): its limits were measured on the built-in scenes, so
-  // the answer is also graded against the solution's own results there (grade_against_solution).
+  // The scene is not the lab's own (check --scene): it is graded in the lab's frame (LabFrame), and as its
+  // limits were measured on the built-in scenes, the answer is also graded against the solution's own results
+  // there (grade_against_solution).
   bool foreign_scene = false;
 };
 

@@ -1,11 +1,32 @@
-// Grading on a scene that is not the lab's own (check --scene): what the lab's solution itself fails there
-// is graded against the solution's own value (grading/check.h, grade_against_solution).
+// Grading on a scene that is not the lab's own (check --scene): the scene is moved and scaled into the lab's
+// frame (grading/check.h, LabFrame), and what the lab's solution itself fails there is graded against the
+// solution's own value (grade_against_solution).
 #include <map>
 #include <string>
 
 #include "grading/check.h"
 
 namespace shadowlab {
+
+LabFrame lab_frame(const Bounds& scene, const Bounds& lab) {
+  LabFrame f;
+  if (scene.empty() || lab.empty()) return f;
+  // In double: a scene 1e6 units from the origin keeps the small differences of its box.
+  f.from = 0.5 * (glm::dvec3(scene.min) + glm::dvec3(scene.max));
+  f.to = 0.5 * (glm::dvec3(lab.min) + glm::dvec3(lab.max));
+  const double radius = 0.5 * glm::length(glm::dvec3(scene.max) - glm::dvec3(scene.min));
+  const double lab_radius = 0.5 * glm::length(glm::dvec3(lab.max) - glm::dvec3(lab.min));
+  if (radius > 0.0) f.scale = lab_radius / radius;
+  return f;
+}
+
+Scene in_lab_frame(const Scene& scene, const LabFrame& frame) {
+  Scene out = scene;
+  out.origin = glm::dvec3(0.0);
+  for (Mesh& mesh : out.meshes)
+    for (glm::vec3& p : mesh.positions) p = frame.apply(p);
+  return out;
+}
 
 void grade_against_solution(CheckResult& result, const CheckResult& solution) {
   if (!solution.error.empty()) {
