@@ -179,7 +179,7 @@ const std::vector<HeldOutRange> kHeldOut = {{20.0f, 45.0f, {"512", "1024"}, {"de
 const HardLimits kLimits{
     .why = "lab 1's bounds, interior beyond the kernel's reach",
     .lit_advice = "acne inside lit areas: a tap k texels away reads the receiver k texels along its slope, so the bias "
-                  "must grow with the kernel's reach (lab 1's bias times 1 + r).",
+                  "must grow with the kernel's reach (lab 1's bias times 1 + r sqrt(2): the corner taps' distance).",
     .shadow_advice = "light inside shadows: average the comparisons (0 or 1 each), not the depths, and keep the bias small."};
 // Images are graded at this size: the band's many samples per pixel make the oracle dearer.
 constexpr int kWidth = 640, kHeight = 360;
