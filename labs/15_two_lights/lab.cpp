@@ -399,7 +399,7 @@ void probe_matrices(CheckContext& ctx, CheckResult& result) {
       "a spot light spreads from a point: glm::perspective, not glm::ortho.");
   row("cone_not_map", t.cone_not_map, "the square map holds the cone exactly: fov twice the half-angle, aspect 1",
       "cone_deg is the HALF-angle: fovy = glm::radians(2 * cone_deg), aspect 1, centred on the axis.");
-  row("near_clips", t.near_clips, "near at most the least depth of the box's corners (or far / 1000 where that is less)",
+  row("near_clips", t.near_clips, "near at most the least depth of the box's corners (or far / 1000 where that is larger)",
       "near must not cut a caster: the least depth ALONG THE AXIS (dot(corner - p, axis)) of the 8 corners, not the "
       "distance to the box; never below far / kMaxFarOverNear.");
   row("far_clips", t.far_clips, "far at least the greatest depth of the box's corners",
