@@ -431,10 +431,11 @@ const std::vector<std::pair<std::string, std::string>>& window_keys() {
   return keys;
 }
 
-CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene) {
+CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene, bool foreign_scene) {
   Renderer renderer;  // its own, so the window's renderer keeps its programs and targets
   CheckRun run;
   run.impl = impl;
+  run.foreign_scene = foreign_scene;
   return run_lab_check(renderer, lab, scene, run);
 }
 

@@ -112,6 +112,8 @@ LabText make_lab_text(std::string markdown);
 const std::vector<std::pair<std::string, std::string>>& window_keys();
 
 // Runs the lab's check in the current GL context with a renderer of its own, as `shadowlab check` does.
-CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene);
+// `foreign_scene`: the scene is not one of the lab's built-in ones (a model the user opened or dropped):
+// graded in the lab's frame and against the solution there, as `check --scene` grades (CheckRun).
+CheckResult run_lab_check(const Lab& lab, Impl impl, const Scene& scene, bool foreign_scene = false);
 
 }  // namespace shadowlab

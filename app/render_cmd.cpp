@@ -204,7 +204,7 @@ int run_render(const RenderOptions& options) {
     {
       const Impl impl = options.impl == "exercise" ? Impl::Exercise : Impl::Solution;
       std::optional<CheckResult> check;
-      if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene);
+      if (options.panel && options.panel_check && lab->check) check = run_lab_check(*lab, impl, scene, !options.scene_file.empty());
       Renderer renderer;
       Features features = lab->hooks(impl);
       if (shadow_test) {  // the test's own file in the visibility slot, with its uniforms

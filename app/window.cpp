@@ -289,7 +289,7 @@ void run_requests(WindowApp& app, InputScript& script, int width, int height) {
   }
   if (app.check_requested) {
     std::string error;
-    if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), &error)) app.status = error;
+    if (!app.check_worker.start(*app.lab, app.impl, app.renderer->scene(), app.scene_from_file, &error)) app.status = error;
     app.check_requested = false;
   }
 }
@@ -422,6 +422,7 @@ void start_session(WindowApp& app, const WindowOptions& options, const Lab& lab,
   app.gl_fallbacks = gl_fallbacks();
   app.renderer = std::make_unique<Renderer>();
   app.renderer->set_scene(v.scene);
+  app.scene_from_file = !options.scene_file.empty();
   app.camera = v.camera;
   app.windowed[2] = v.width;
   app.windowed[3] = v.height;

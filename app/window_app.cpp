@@ -118,6 +118,7 @@ void WindowApp::open_scene(const std::string& path) {
     std::vector<std::string> warnings;  // e.g. an image that cannot be decoded (drawn as a checker)
     const Scene scene = load_gltf(path, {}, &warnings);
     renderer->set_scene(scene);
+    scene_from_file = true;
     split.set_scene(scene);
     oracle.reset();
     camera = frame_scene_camera(scene, params);  // the model and its shadow, on the ground it may get
@@ -142,6 +143,7 @@ void WindowApp::show_preset_view(const Preset& preset) {
   if (!preset.view.scene.empty() && preset.view.scene != renderer->scene().name) {
     const Scene scene = builtin_scene(preset.view.scene);  // the names are the lab's own: a test renders each
     renderer->set_scene(scene);
+    scene_from_file = false;
     split.set_scene(scene);
     oracle.reset();
     check_result.reset();

@@ -50,7 +50,7 @@ class CheckWorker {
   double seconds() const;
 
   // Starts a check; false (and `error` says why) when no context could be made for it.
-  bool start(const Lab& lab, Impl impl, const Scene& scene, std::string* error);
+  bool start(const Lab& lab, Impl impl, const Scene& scene, bool foreign_scene, std::string* error);
   // The result once the worker has finished (the thread is joined); nothing while it runs.
   std::optional<CheckResult> take_result();
 
@@ -79,6 +79,7 @@ struct WindowApp {
   bool toast_error = false;
   double toast_since = -1e9;
   std::string scene_error;  // the last dropped file that could not be opened
+  bool scene_from_file = false;  // the scene is a model opened from a file (--scene, dropped): Check grades it as foreign
   bool screenshot_requested = false;
   bool panel_hidden = false;  // H: no ImGui window is built or drawn, nor the pass-time line
   double hidden_since = 0.0;  // when H hid the panel: a hint says how to get it back, for a few seconds

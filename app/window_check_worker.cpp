@@ -36,7 +36,7 @@ CheckWorker::~CheckWorker() {
 
 double CheckWorker::seconds() const { return glfwGetTime() - started_; }
 
-bool CheckWorker::start(const Lab& lab, Impl impl, const Scene& scene, std::string* error) {
+bool CheckWorker::start(const Lab& lab, Impl impl, const Scene& scene, bool foreign_scene, std::string* error) {
   if (running()) return false;
   if (!context_) {
     GLFWwindow* current = glfwGetCurrentContext();
@@ -51,10 +51,10 @@ bool CheckWorker::start(const Lab& lab, Impl impl, const Scene& scene, std::stri
   impl_ = impl;
   done_ = false;
   started_ = glfwGetTime();
-  thread_ = std::thread([this, scene] {
+  thread_ = std::thread([this, scene, foreign_scene] {
     glfwMakeContextCurrent(context_);
     try {
-      result_ = run_lab_check(*lab_, impl_, scene);
+      result_ = run_lab_check(*lab_, impl_, scene, foreign_scene);
     } catch (const std::exception& e) {
       CheckResult r;
       r.lab = lab_->number;

@@ -259,30 +259,6 @@ void CheckContext::grade_submission(const std::filesystem::path& folder) {
   }
 }
 
-std::vector<std::string> CheckContext::grade_edited_cpp_files() {
-  std::vector<std::string> notes;
-  for (auto& file : graded) {
-    const auto copy = lab.compiled_copies.find(file.generic_string());
-    if (copy == lab.compiled_copies.end()) continue;
-    const std::filesystem::path on_disk = data_dir() / file;
-    std::string text;
-    try {  // a FIFO or a device is refused before it is opened, a file too large before it is read
-      text = platform::read_regular_file(on_disk, kMaxExerciseSourceBytes);
-    } catch (const std::exception& e) {
-      throw ExerciseError("compile_error", copy->first + ": " + e.what());
-    }
-    if (without_carriage_returns(text) == without_carriage_returns(std::string(copy->second))) continue;
-    if (const std::string why = platform::grading_unavailable(); !why.empty())
-      throw ExerciseError("compile_error", copy->first + " has changed since this shadowlab was built: rebuild it "
-                                               "(cmake --build build), then Check again (on Linux, Check builds an edited "
-                                               "C++ exercise on its own; here " + why + ")");
-    notes.push_back(copy->first + " differs from the copy built into this program: graded from the file on disk, "
-                    "compiled on its own (as a submission is)");
-    file = std::filesystem::absolute(on_disk);
-  }
-  return notes;
-}
-
 Features CheckContext::hooks_with_only(std::size_t slot) const {
   SlotFiles files = lab.files(Impl::Solution);
   files.at(slot) = graded.at(slot);

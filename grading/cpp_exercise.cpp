@@ -1,5 +1,7 @@
 #include "grading/cpp_exercise.h"
 
+#include "grading/check.h"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -381,6 +383,32 @@ void CppExercise::call_raw(const void* request, std::size_t request_size, void* 
                         : "stopped before answering (exit code " + std::to_string(o.exit_code) + ")";
   const std::string printed = student_view(read_file(work_ / "run.log"), spec_, work_, 10);
   throw ExerciseError("crashed", spec_.display_name + ": the exercise " + how + (printed.empty() ? "" : "\n" + printed));
+}
+
+// The local student flow (grading/check.h): an exercise file edited since the build is graded from disk,
+// built on its own as a submission's is.
+std::vector<std::string> CheckContext::grade_edited_cpp_files() {
+  std::vector<std::string> notes;
+  for (auto& file : graded) {
+    const auto copy = lab.compiled_copies.find(file.generic_string());
+    if (copy == lab.compiled_copies.end()) continue;
+    const std::filesystem::path on_disk = data_dir() / file;
+    std::string text;
+    try {  // a FIFO or a device is refused before it is opened, a file too large before it is read
+      text = platform::read_regular_file(on_disk, kMaxExerciseSourceBytes);
+    } catch (const std::exception& e) {
+      throw ExerciseError("compile_error", copy->first + ": " + e.what());
+    }
+    if (without_carriage_returns(text) == without_carriage_returns(std::string(copy->second))) continue;
+    if (const std::string why = platform::grading_unavailable(); !why.empty())
+      throw ExerciseError("compile_error", copy->first + " has changed since this shadowlab was built: rebuild it "
+                                               "(cmake --build build), then Check again (on Linux, Check builds an edited "
+                                               "C++ exercise on its own; here " + why + ")");
+    notes.push_back(copy->first + " differs from the copy built into this program: graded from the file on disk, "
+                    "compiled on its own (as a submission is)");
+    file = std::filesystem::absolute(on_disk);
+  }
+  return notes;
 }
 
 }  // namespace shadowlab

@@ -327,7 +327,7 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
   }
 
   // 3b. Screen-space ambient occlusion over the lit picture, when the features ask for it.
-  if (ssao_) ssao_->draw(ctx, *lit_);
+  if (ssao_) ssao_->draw(ctx, ViewTarget{lit_->framebuffer(), lit_->width(), lit_->height()});
 
   // 4. Debug views.
   views_->draw(ctx, shadow, *lit_);

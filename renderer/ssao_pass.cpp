@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "core/ao_params.h"
-#include "renderer/lit_pass.h"
 
 namespace shadowlab {
 
@@ -112,102 +111,112 @@ void SsaoPass::ensure_targets(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void SsaoPass::draw(PassContext& ctx, LitPass& lit) {
-  const ParamSet& params = ctx.params;
-  ensure_targets(lit.width(), lit.height());
-  // 1. View-space positions and normals.
-  ctx.timed("ssao_gbuffer", [&] {
-    glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_fbo_.id());
-    glDrawBuffers(2, kGbufferAttachments);
-    glViewport(0, 0, width_, height_);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glUseProgram(gbuffer_.id());
-    const GbufferUniforms& u = gbuffer_u_.get(gbuffer_, [](GLuint id) {
-      return GbufferUniforms{{id, "u_view"}, {id, "u_projection"}};
-    });
-    u.view.set(ctx.camera_view);
-    u.projection.set(ctx.camera_projection);
-    ctx.gpu_scene.bind();
-    for (const auto& range : ctx.gpu_scene.ranges()) {
-      ctx.gpu_scene.draw(range);
-      ++ctx.stats.draws;
-    }
+namespace {
+
+void bind_sampler(int unit, GLuint texture, const Uniform& sampler) {
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  sampler.set(unit);
+}
+
+}  // namespace
+
+void SsaoPass::draw_gbuffer(PassContext& ctx) {
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_fbo_.id());
+  glDrawBuffers(2, kGbufferAttachments);
+  glViewport(0, 0, width_, height_);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glUseProgram(gbuffer_.id());
+  const GbufferUniforms& u = gbuffer_u_.get(gbuffer_, [](GLuint id) {
+    return GbufferUniforms{{id, "u_view"}, {id, "u_projection"}};
   });
+  u.view.set(ctx.camera_view);
+  u.projection.set(ctx.camera_projection);
+  ctx.gpu_scene.bind();
+  for (const auto& range : ctx.gpu_scene.ranges()) {
+    ctx.gpu_scene.draw(range);
+    ++ctx.stats.draws;
+  }
+}
+
+void SsaoPass::draw_ssao(PassContext& ctx) {
+  const ParamSet& params = ctx.params;
+  glBindFramebuffer(GL_FRAMEBUFFER, open_fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glUseProgram(ssao_.id());
+  const SsaoUniforms& u = ssao_u_.get(ssao_, [](GLuint id) {
+    return SsaoUniforms{{id, "u_position"}, {id, "u_normal"},      {id, "u_noise"},     {id, "u_noise_scale"},
+                        {id, "u_use_noise"}, {id, "u_projection"}, {id, "u_view"},      {id, "u_kernel"},
+                        {id, "u_samples"},  {id, "u_radius"},      {id, "u_bias"},      {id, "u_range_check"}};
+  });
+  bind_sampler(0, position_.id(), u.position);
+  bind_sampler(1, normal_.id(), u.normal);
+  bind_sampler(2, noise_.id(), u.noise);
+  u.noise_scale.set(glm::vec2(static_cast<float>(width_), static_cast<float>(height_)) / static_cast<float>(kSsaoNoiseSide));
+  u.use_noise.set(params.get(param::ssao_noise) ? 1 : 0);
+  u.projection.set(ctx.camera_projection);
+  u.view.set(ctx.camera_view);
+  u.kernel.set(kernel_.data(), kSsaoKernelSize);
+  u.samples.set(std::clamp(params.get(param::ssao_samples), 1, kSsaoKernelSize));
+  u.radius.set(params.get(param::ssao_radius));
+  u.bias.set(params.get(param::ssao_bias));
+  u.range_check.set(params.get(param::ssao_range_check) ? 1 : 0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void SsaoPass::draw_blur(PassContext&) {
+  glBindFramebuffer(GL_FRAMEBUFFER, blurred_fbo_.id());
+  glViewport(0, 0, width_, height_);
+  glUseProgram(blur_.id());
+  const BlurUniforms& u = blur_u_.get(blur_, [](GLuint id) { return BlurUniforms{{id, "u_open"}, {id, "u_position"}}; });
+  bind_sampler(0, open_.id(), u.open);
+  bind_sampler(1, position_.id(), u.position);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void SsaoPass::draw(PassContext& ctx, const ViewTarget& view) {
+  const ParamSet& params = ctx.params;
+  ensure_targets(view.width, view.height);
+  // 1. View-space positions and normals.
+  ctx.timed("ssao_gbuffer", [&] { draw_gbuffer(ctx); });
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(ctx.empty_vao);
-  const auto bind = [](int unit, GLuint texture, const Uniform& sampler) {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    sampler.set(unit);
-  };
   // 2. The AO buffer: SSAO's, or GTAO's (ssao_gtao.cpp).
   const bool gtao = params.get(param::ssao_method) == "gtao";
   if (gtao) ctx.timed("gtao", [&] { draw_gtao(ctx); });
-  if (!gtao) ctx.timed("ssao", [&] {
-    glBindFramebuffer(GL_FRAMEBUFFER, open_fbo_.id());
-    glViewport(0, 0, width_, height_);
-    glUseProgram(ssao_.id());
-    const SsaoUniforms& u = ssao_u_.get(ssao_, [](GLuint id) {
-      return SsaoUniforms{{id, "u_position"}, {id, "u_normal"},      {id, "u_noise"},     {id, "u_noise_scale"},
-                          {id, "u_use_noise"}, {id, "u_projection"}, {id, "u_view"},      {id, "u_kernel"},
-                          {id, "u_samples"},  {id, "u_radius"},      {id, "u_bias"},      {id, "u_range_check"}};
-    });
-    bind(0, position_.id(), u.position);
-    bind(1, normal_.id(), u.normal);
-    bind(2, noise_.id(), u.noise);
-    u.noise_scale.set(glm::vec2(static_cast<float>(width_), static_cast<float>(height_)) / static_cast<float>(kSsaoNoiseSide));
-    u.use_noise.set(params.get(param::ssao_noise) ? 1 : 0);
-    u.projection.set(ctx.camera_projection);
-    u.view.set(ctx.camera_view);
-    u.kernel.set(kernel_.data(), kSsaoKernelSize);
-    u.samples.set(std::clamp(params.get(param::ssao_samples), 1, kSsaoKernelSize));
-    u.radius.set(params.get(param::ssao_radius));
-    u.bias.set(params.get(param::ssao_bias));
-    u.range_check.set(params.get(param::ssao_range_check) ? 1 : 0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  });
+  if (!gtao) ctx.timed("ssao", [&] { draw_ssao(ctx); });
   // 3. The blur over the noise's tile.
   blurred_ = params.get(param::ssao_blur);
-  if (blurred_) {
-    ctx.timed("ssao_blur", [&] {
-      glBindFramebuffer(GL_FRAMEBUFFER, blurred_fbo_.id());
-      glViewport(0, 0, width_, height_);
-      glUseProgram(blur_.id());
-      const BlurUniforms& u = blur_u_.get(blur_, [](GLuint id) { return BlurUniforms{{id, "u_open"}, {id, "u_position"}}; });
-      bind(0, open_.id(), u.open);
-      bind(1, position_.id(), u.position);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-    });
-  }
+  if (blurred_) ctx.timed("ssao_blur", [&] { draw_blur(ctx); });
   const GLuint shown = blurred_ ? blurred_open_.id() : open_.id();
   // 4. The lit picture times the AO.
   ctx.timed("ssao_composite", [&] {
-    bind_color_target(lit.framebuffer(), lit.width(), lit.height());
+    bind_color_target(view.framebuffer, view.width, view.height);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ZERO, GL_SRC_COLOR);
     glUseProgram(composite_.id());
     const ImageUniforms& u = composite_u_.get(composite_, [](GLuint id) { return ImageUniforms{{id, "u_open"}, {}}; });
-    bind(0, shown, u.image);
+    bind_sampler(0, shown, u.image);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_BLEND);
   });
-  if (params.get(param::view_debug_quad)) ctx.timed("ssao_quads", [&] { debug_quads(ctx, lit); });
+  if (params.get(param::view_debug_quad)) ctx.timed("ssao_quads", [&] { debug_quads(ctx, view); });
   glActiveTexture(GL_TEXTURE0);
   glEnable(GL_DEPTH_TEST);
-  glViewport(0, 0, lit.width(), lit.height());
+  glViewport(0, 0, view.width, view.height);
 }
 
-void SsaoPass::debug_quads(PassContext& ctx, LitPass& lit) {
-  bind_color_target(lit.framebuffer(), lit.width(), lit.height());
+void SsaoPass::debug_quads(PassContext& ctx, const ViewTarget& view) {
+  bind_color_target(view.framebuffer, view.width, view.height);
   const int side =
-      std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get(param::view_debug_quad_size)));
-  const int quad_width = std::max(8, side * lit.width() / std::max(1, lit.height()));
+      std::max(8, static_cast<int>(static_cast<float>(view.height) * ctx.params.get(param::view_debug_quad_size)));
+  const int quad_width = std::max(8, side * view.width / std::max(1, view.height));
   glUseProgram(quad_.id());
   const ImageUniforms& u = quad_u_.get(quad_, [](GLuint id) { return ImageUniforms{{id, "u_image"}, {id, "u_is_noise"}}; });
   u.image.set(0);

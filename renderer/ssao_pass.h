@@ -26,7 +26,6 @@
 
 namespace shadowlab {
 
-class LitPass;
 
 // The kernel's size (the most ssao.samples may ask for) and the noise texture's side.
 inline constexpr int kSsaoKernelSize = 64;
@@ -48,14 +47,17 @@ class SsaoPass {
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules);
   void for_each_program(const std::function<void(ReloadableProgram&)>& f);
   // Draws passes 1-4 (and the quads) for the frame the lit pass just drew.
-  void draw(PassContext& ctx, LitPass& lit);
+  void draw(PassContext& ctx, const ViewTarget& view);
   // The AO of the last frame, bottom row first (GL order): the blurred one when `blurred` and ssao.blur
   // was on, else the raw one; 1 where no surface was drawn.
   std::vector<float> read_open(bool blurred) const;
 
  private:
   void ensure_targets(int width, int height);
-  void debug_quads(PassContext& ctx, LitPass& lit);
+  void debug_quads(PassContext& ctx, const ViewTarget& view);
+  void draw_gbuffer(PassContext& ctx);  // pass 1: view-space positions and normals
+  void draw_ssao(PassContext& ctx);     // pass 2 with ssao.method = ssao: the student's occlusion
+  void draw_blur(PassContext& ctx);     // pass 3: the blur over the noise's tile
   void draw_gtao(PassContext& ctx);  // pass 2 with ssao.method = gtao (renderer/ssao_gtao.cpp)
 
   ReloadableProgram gbuffer_, ssao_, gtao_, blur_, composite_, quad_;

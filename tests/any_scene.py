@@ -64,8 +64,9 @@ WRONG = {
     12: ["lambda_reversed"],
     13: ["ignores_c"],
     14: ["roots_swapped"],
-    15: ["shadows_swapped"],
+    15: ["frozen_first_call"],
     16: ["hard_shadow"],
+    17: ["no_range_check"],
 }
 
 

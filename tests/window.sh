@@ -420,6 +420,26 @@ assert stats["stock->live"] > 500, "the saved right answer did not change the vi
 assert stats["live->broken"] < 50, "a file that does not build replaced the last good one"
 PY
     ;;
+  window_check_dropped)  # issue 36: Check on a dropped model grades it as `check --scene` does (in the lab's frame, against the solution there)
+    # Lab 7's solution on the Duck: in absolute units its spot places miss the model (high.shadow_error 0.022
+    # against the lab's 0.005: FAIL lines); graded as a foreign scene it passes (cli.check_foreign_scene).
+    window --lab 7 --impl solution --script "frames:2,drop:$src/assets/models/Duck/Duck.glb,frames:2,screenshot:$tmp/duck.png,check,wait:60,frames:3,screenshot:$tmp/checked.png"
+    png_python - "$tmp" <<'PY' || fail "the Check on the dropped Duck did not grade it as a foreign scene"
+import sys
+from png_tools import load
+r = {n: load(f"{sys.argv[1]}/{n}.png")[2] for n in ("duck", "checked")}
+# FAIL lines are red in the panel; a passing result has none. ImGui's green PASS (and the progress bar) are not red.
+red = lambda rows: sum(1 for y in range(20, 840, 2) for x in range(20, 430, 2)
+                       if rows[y][4 * x] > 200 and rows[y][4 * x + 1] < 150 and rows[y][4 * x + 2] < 140)
+green = lambda rows: sum(1 for y in range(20, 840, 2) for x in range(20, 430, 2)
+                         if rows[y][4 * x + 1] > 170 and rows[y][4 * x] < 150 and rows[y][4 * x + 2] < 150)
+stats = {"red duck": red(r["duck"]), "red checked": red(r["checked"]), "green duck": green(r["duck"]),
+         "green checked": green(r["checked"])}
+print(stats)
+assert stats["green checked"] > stats["green duck"] + 20, "no passing result shown"
+assert stats["red checked"] <= stats["red duck"] + 5, "the Check shows FAIL lines on the dropped model"
+PY
+    ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"

@@ -157,19 +157,11 @@ std::vector<std::uint8_t> side_by_side(const GBuffer& g, const std::vector<float
   return rgba;
 }
 
-AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracle, const ParamSet& params,
-                     const AoCase& c) {
-  FrameRequest request;
-  request.camera = OrbitCamera::framing(objects_bounds(ctx.scene()), c.yaw, c.pitch);
-  request.width = kWidth;
-  request.height = kHeight;
-  request.gbuffer = true;
-  ctx.renderer.render(params, request);
-  const GBuffer g = ctx.renderer.read_gbuffer();
-  const std::vector<float> ao = ctx.renderer.read_ao(true);
-  const AoTruth truth = evaluate_ao(oracle, g, c.radius);
+// The figures of one frame against its truth; `halo` marks the pixels counted as halo (for the picture).
+AoFigures tally(const GBuffer& g, const std::vector<float>& ao, const AoTruth& truth, float radius,
+                std::vector<std::uint8_t>& halo) {
   const int w = g.width, h = g.height;
-  const auto edge = discontinuities(g, c.radius);
+  const auto edge = discontinuities(g, radius);
   std::vector<std::uint8_t> any_edge(edge.size()), far_edge(edge.size());
   for (std::size_t i = 0; i < edge.size(); ++i) {
     any_edge[i] = edge[i] != 0 || !g.covered[i];
@@ -181,7 +173,7 @@ AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracl
   f.truth_seconds = truth.seconds;
   f.rays = truth.rays;
   double sum = 0.0, signed_sum = 0.0, dark_ao = 0.0, dark_truth = 0.0;
-  std::vector<std::uint8_t> halo(edge.size(), 0);
+  halo.assign(edge.size(), 0);
   for (std::size_t i = 0; i < edge.size(); ++i) {
     if (!truth.valid[i] || !std::isfinite(ao[i])) continue;
     const double err = static_cast<double>(ao[i]) - truth.open[i];
@@ -211,6 +203,52 @@ AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracl
   f.occluded_error = f.occluded ? f.occluded_error / static_cast<double>(f.occluded) : 1.0;
   f.captured = dark_truth > 0.0 ? dark_ao / dark_truth : 0.0;
   f.halo_width = f.edges ? static_cast<double>(f.halo_pixels) / static_cast<double>(f.edges) : 0.0;
+  return f;
+}
+
+// The four criteria of one frame, each with what to change when it fails.
+void add_case_criteria(CheckResult& result, const AoCase& c, const AoFigures& f) {
+  result.criteria.push_back(
+      {c.tag + ".open_error", f.open_error, Criterion::kAtMost, kOpenErrorLimit,
+       "mean |AO - AO truth| over interior pixels the truth sees open: the AO truth's own error (kAoTruthError)",
+       "open surfaces (a floor with nothing near it) are drawn darker than open: the samples must lie in the "
+       "hemisphere above the surface (turned around the normal by a frame from Gram-Schmidt, in view space like "
+       "p), a sample is hidden only when the surface is NEARER the camera than the sample by more than bias, "
+       "and you return the open share, not the occluded one."});
+  result.criteria.push_back(
+      {c.tag + ".darkening_share", f.captured, Criterion::kAtLeast, kMinDarkeningShare,
+       "the AO's darkening over the truth's, over interior pixels the truth sees occluded; the solution's lowest "
+       "measured, with a margin (INSTRUCTOR.md)",
+       "creases and contacts are not darkened enough: count a sample as hidden when the depth buffer's surface is "
+       "in front of it, and weigh a near occluder fully (the range check must only weigh down occluders much "
+       "farther than radius)."});
+  result.criteria.push_back(
+      {c.tag + ".darkening_share_cap", f.captured, Criterion::kAtMost, kMaxDarkeningShare,
+       "the same share, at most: the solution's highest measured, with a margin (INSTRUCTOR.md)",
+       "creases are darkened over too wide a reach: the kernel's samples must be scaled by radius, and kept as the "
+       "kernel gives them (nearer the centre)."});
+  result.criteria.push_back(
+      {c.tag + ".halo_width_px", f.halo_width, Criterion::kAtMost, kHaloWidthLimit,
+       "mean width (pixels) of false dark halos on the far side of depth discontinuities; the solution's worst "
+       "measured, twice (INSTRUCTOR.md)",
+       "dark halos around the objects on surfaces far behind them: an occluder much farther from the point "
+       "than the radius must not count (the range check)."});
+}
+
+AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracle, const ParamSet& params,
+                     const AoCase& c) {
+  FrameRequest request;
+  request.camera = OrbitCamera::framing(objects_bounds(ctx.scene()), c.yaw, c.pitch);
+  request.width = kWidth;
+  request.height = kHeight;
+  request.gbuffer = true;
+  ctx.renderer.render(params, request);
+  const GBuffer g = ctx.renderer.read_gbuffer();
+  const std::vector<float> ao = ctx.renderer.read_ao(true);
+  const AoTruth truth = evaluate_ao(oracle, g, c.radius);
+  const int w = g.width, h = g.height;
+  std::vector<std::uint8_t> halo;
+  const AoFigures f = tally(g, ao, truth, c.radius, halo);
   const std::string name = "lab17_" + c.tag + "_" + impl_name(ctx.impl);
   if (!ctx.out_dir.empty()) {
     const auto final_path = ctx.out_dir / (name + "_final.png");
@@ -242,31 +280,7 @@ AoFigures grade_case(CheckContext& ctx, CheckResult& result, const Oracle& oracl
   std::printf("    %-10s AO mean error %.4f (signed %+.4f, %ld px), halo width %.3f px (%ld / %ld), truth %.2f s %llu rays\n",
               c.tag.c_str(), f.mean_error, f.mean_signed, f.interior, f.halo_width, f.halo_pixels, f.edges,
               f.truth_seconds, static_cast<unsigned long long>(f.rays));
-  result.criteria.push_back(
-      {c.tag + ".open_error", f.open_error, Criterion::kAtMost, kOpenErrorLimit,
-       "mean |AO - AO truth| over interior pixels the truth sees open: the AO truth's own error (kAoTruthError)",
-       "open surfaces (a floor with nothing near it) are drawn darker than open: the samples must lie in the "
-       "hemisphere above the surface (turned around the normal by a frame from Gram-Schmidt, in view space like "
-       "p), a sample is hidden only when the surface is NEARER the camera than the sample by more than bias, "
-       "and you return the open share, not the occluded one."});
-  result.criteria.push_back(
-      {c.tag + ".darkening_share", f.captured, Criterion::kAtLeast, kMinDarkeningShare,
-       "the AO's darkening over the truth's, over interior pixels the truth sees occluded; the solution's lowest "
-       "measured, with a margin (INSTRUCTOR.md)",
-       "creases and contacts are not darkened enough: count a sample as hidden when the depth buffer's surface is "
-       "in front of it, and weigh a near occluder fully (the range check must only weigh down occluders much "
-       "farther than radius)."});
-  result.criteria.push_back(
-      {c.tag + ".darkening_share_cap", f.captured, Criterion::kAtMost, kMaxDarkeningShare,
-       "the same share, at most: the solution's highest measured, with a margin (INSTRUCTOR.md)",
-       "creases are darkened over too wide a reach: the kernel's samples must be scaled by radius, and kept as the "
-       "kernel gives them (nearer the centre)."});
-  result.criteria.push_back(
-      {c.tag + ".halo_width_px", f.halo_width, Criterion::kAtMost, kHaloWidthLimit,
-       "mean width (pixels) of false dark halos on the far side of depth discontinuities; the solution's worst "
-       "measured, twice (INSTRUCTOR.md)",
-       "dark halos around the objects on surfaces far behind them: an occluder much farther from the point "
-       "than the radius must not count (the range check)."});
+  add_case_criteria(result, c, f);
   return f;
 }
 
