@@ -269,7 +269,8 @@ void refuse_definitions(const std::string& defined, const std::string& host_defi
 std::string cpp_exercise_unavailable(const std::string& host) {
   if (const std::string& why = platform::sandbox_unavailable(); !why.empty()) return why;
   if (!fs::exists(fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / ("libshadowlab_exercise_host_" + host + ".a")))
-    return "this build has no exercise host for " + host + " (a GL exercise's is built only with EGL, on Linux)";
+    return "this build has no exercise host for " + host +
+           " (a GL exercise's is built only with EGL, on Linux; none is built with the sanitizers)";
   return "";
 }
 

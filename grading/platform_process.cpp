@@ -63,6 +63,10 @@ struct ExecPlan {
       const auto eq = entry.find('=');
       if (eq != std::string::npos) merged[entry.substr(0, eq)] = entry.substr(eq + 1);
     }
+    // A library preloaded into this process (a sanitizer's runtime, as scripts/test runs test_gl) is not
+    // preloaded into what it starts: bubblewrap, the compiler and a student's program run as anywhere else
+    // (bubblewrap aborted under a preloaded AddressSanitizer runtime: CI of b520b6d).
+    merged.erase("LD_PRELOAD");
     for (const auto& [k, v] : env) merged[k] = v;
     for (const auto& [k, v] : merged) env_strings.push_back(k + "=" + v);
     for (auto& s : args) argv.push_back(s.data());
