@@ -18,30 +18,38 @@
 
 namespace {
 
-const std::filesystem::path& work_dir() {
-  static const std::filesystem::path dir = [] {
+// One object owns the folder: it is made before main and removed at exit. (A function-local static
+// path with a separate remover object was destroyed before the remover ran, which ASan reported as a
+// heap-use-after-free at exit, with an empty "crash" input: the CI fuzz stage of 8815cec.)
+class WorkDir {
+ public:
+  WorkDir() {
     std::string pattern = (std::filesystem::temp_directory_path() / "shadowlab-fuzz-XXXXXX").string();
     if (!::mkdtemp(pattern.data())) {
       std::perror("fuzz_gltf: mkdtemp");
       std::abort();
     }
-    return std::filesystem::path(pattern);
-  }();
-  return dir;
-}
-
-struct RemoveWorkDir {
-  ~RemoveWorkDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(work_dir(), ec);
+    dir_ = pattern;
   }
-} remove_at_exit;
+  ~WorkDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  WorkDir(const WorkDir&) = delete;
+  WorkDir& operator=(const WorkDir&) = delete;
+  const std::filesystem::path& path() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+const WorkDir work_dir;
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
-  const std::filesystem::path file = work_dir() / (glb ? "model.glb" : "model.gltf");
+  const std::filesystem::path file = work_dir.path() / (glb ? "model.glb" : "model.gltf");
   std::FILE* f = std::fopen(file.c_str(), "wb");
   if (!f) std::abort();
   if (size > 0 && std::fwrite(data, 1, size, f) != size) std::abort();
