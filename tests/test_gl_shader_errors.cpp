@@ -5,14 +5,18 @@
 
 #ifndef _WIN32
 #include <sys/stat.h>  // mkfifo
+#include <unistd.h>    // getpid
 #endif
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "grading/check.h"
 #include "grading/lab.h"
+#include "grading/live_cpp.h"
+#include "grading/cpp_exercise.h"
 #include "labs/registry.h"
 #include "renderer/renderer.h"
 #include "core/scene.h"
@@ -326,6 +330,45 @@ TEST_F(IncludeConfinementTest, AFifoIsNotRead) {
   const ProgramBuild b = build(dir / "exercise.glsl");
   EXPECT_FALSE(b.program);
   EXPECT_NE(b.error.find("not a regular file"), std::string::npos) << b.error;
+}
+
+// The window's live C++ path reads the exercise as Check does: a FIFO in its place is refused by name at
+// once (never opened, so the poll cannot block), and so is a file over the exercise size limit; nothing
+// is built from either, and the program's copy keeps running.
+TEST(LiveCppExercise, AFifoOrAHugeFileIsRefusedNotRead) {
+  const fs::path data = fs::temp_directory_path() / ("shadowlab-live-fifo-" + std::to_string(::getpid()));
+  const fs::path lab_dir = data / "labs" / "02_ortho_fit";
+  fs::create_directories(lab_dir);
+  const char* old = std::getenv("SHADOWLAB_DATA_DIR");
+  const std::string saved = old ? old : "";
+  ::setenv("SHADOWLAB_DATA_DIR", data.c_str(), 1);
+  const Lab& lab = *find_lab(2);
+  ASSERT_EQ(lab.exercise_files.size(), 1u);
+  const fs::path file = data / lab.exercise_files[0];
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  {
+    LiveCppExercise live;
+    const auto start = std::chrono::steady_clock::now();
+    live.poll(lab, Impl::Exercise);  // would block for ever if the FIFO were opened
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_FALSE(live.building());
+    EXPECT_NE(live.message().find("exercise.cpp"), std::string::npos) << live.message();
+    EXPECT_NE(live.message().find("not a regular file"), std::string::npos) << live.message();
+    EXPECT_NE(live.message().find("the program's copy keeps running"), std::string::npos) << live.message();
+    EXPECT_FALSE(live.take_hooks());
+  }
+  fs::remove(file);
+  std::ofstream(file, std::ios::binary) << std::string(kMaxExerciseSourceBytes + 1, ' ');
+  {
+    LiveCppExercise live;
+    live.poll(lab, Impl::Exercise);
+    EXPECT_FALSE(live.building());
+    EXPECT_TRUE(live.has_error()) << live.message();
+    EXPECT_NE(live.message().find("exercise.cpp"), std::string::npos) << live.message();
+    EXPECT_FALSE(live.take_hooks());
+  }
+  if (old) ::setenv("SHADOWLAB_DATA_DIR", saved.c_str(), 1); else ::unsetenv("SHADOWLAB_DATA_DIR");
+  fs::remove_all(data);
 }
 #endif
 
