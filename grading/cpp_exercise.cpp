@@ -266,6 +266,13 @@ void refuse_definitions(const std::string& defined, const std::string& host_defi
 
 }  // namespace
 
+std::vector<std::string> exercise_compiler_command() {
+  std::vector<std::string> argv = {SHADOWLAB_CXX};
+  std::istringstream flags(SHADOWLAB_EXERCISE_CXX_FLAGS);
+  for (std::string f; flags >> f;) argv.push_back(f);
+  return argv;
+}
+
 std::string cpp_exercise_unavailable(const std::string& host) {
   if (const std::string& why = platform::sandbox_unavailable(); !why.empty()) return why;
   if (!fs::exists(fs::path(SHADOWLAB_EXERCISE_HOST_DIR) / ("libshadowlab_exercise_host_" + host + ".a")))

@@ -74,6 +74,9 @@ struct CppExerciseSpec {
 // otherwise the one sentence saying why not (no sandbox; a GL exercise's host needs a build with EGL).
 std::string cpp_exercise_unavailable(const std::string& host);
 
+// The compiler every exercise is built with (the system's, CMake's) and the flags, as an argv start.
+std::vector<std::string> exercise_compiler_command();
+
 class CppExercise {
  public:
   // Builds and starts the student's program; throws ExerciseError (or std::runtime_error when the

@@ -6,6 +6,7 @@
 #include "core/platform.h"
 #include "core/untrusted.h"
 #include "grading/cpp_exercise.h"
+#include "grading/live_gl.h"
 #include "grading/platform_process.h"
 
 namespace shadowlab {
@@ -26,6 +27,8 @@ void LiveCppExercise::reset() {
   wake_.wait(lock, [this] { return !building_; });  // a build under way finishes first
   built_text_.clear();
   tried_text_.clear();
+  gl_built_text_.clear();
+  gl_tried_text_.clear();
   ready_.reset();
   message_.clear();
   in_use_ = false;
@@ -37,12 +40,17 @@ void LiveCppExercise::poll(const Lab& lab, Impl impl) {
     const std::lock_guard lock(mutex_);
     if (&lab != lab_) {
       last_.reset();
+      gl_last_.reset();
       failed_text_.clear();
     }
     lab_ = &lab;
     impl_ = impl;
   }
   if (impl != Impl::Exercise || building_) return;
+  if (!lab.gl_exercise_files.empty()) {  // (no lab has both kinds yet; a CPU build's hooks would drop the GL code)
+    poll_gl(lab, impl);
+    if (building_) return;
+  }
   const std::vector<std::string>& files = lab.exercise_files;
   for (std::size_t slot = 0; slot < files.size(); ++slot) {
     const auto copy = lab.compiled_copies.find(files[slot]);
@@ -95,21 +103,7 @@ void LiveCppExercise::start_build(const Lab& lab, Impl impl, std::size_t slot, c
   SlotFiles files = lab.files(impl);
   files.at(slot) = copy;
   building_ = true;
-  if (!worker_.joinable())
-    worker_ = std::thread([this] {
-      std::unique_lock lock(mutex_);
-      for (;;) {
-        wake_.wait(lock, [this] { return stopping_ || job_; });
-        if (stopping_) return;
-        std::function<void()> job = std::move(job_);
-        job_ = nullptr;
-        lock.unlock();
-        job();
-        lock.lock();
-      }
-    });
-  const std::lock_guard lock(mutex_);
-  job_ = [this, &lab, files, text] {
+  run_on_worker([this, &lab, files, text] {
     std::optional<Features> hooks;
     std::string error;
     try {
@@ -117,22 +111,95 @@ void LiveCppExercise::start_build(const Lab& lab, Impl impl, std::size_t slot, c
     } catch (const std::exception& e) {  // ExerciseError (compile_error...), or the grader's own failure
       error = e.what();
     }
-    {
-      const std::lock_guard lock(mutex_);
-      if (hooks) {
-        last_.emplace(text, *hooks);
-        ready_ = std::move(hooks);
-        built_text_ = text;
-        message_.clear();
-        in_use_ = true;
-      } else {
-        message_ = printable(error, 4000);
-      }
-      building_ = false;
+    finish_build(std::move(hooks), error, text, false);
+  });
+}
+
+void LiveCppExercise::poll_gl(const Lab& lab, Impl impl) {
+  const std::string& file = lab.gl_exercise_files.front();
+  std::string text;
+  try {
+    text = without_carriage_returns(platform::read_regular_file(data_dir() / file, kMaxExerciseSourceBytes));
+  } catch (const std::exception& e) {
+    const std::lock_guard lock(mutex_);
+    message_ = file + ": " + e.what();
+    return;
+  }
+  if (text == gl_built_text_ || text == gl_tried_text_ || text == failed_text_) return;
+  gl_tried_text_ = text;
+  if (gl_last_ && text == gl_last_->first) {  // built before (the renderer was reset since): no new build
+    const std::lock_guard lock(mutex_);
+    gl_built_text_ = text;
+    ready_ = gl_last_->second;
+    message_.clear();
+    in_use_ = true;
+    return;
+  }
+  if (const std::string& why = platform::grading_unavailable(); !why.empty()) {
+    const std::lock_guard lock(mutex_);
+    message_ = file + ": the window draws with the program's own (the solution's) functions: building yours "
+                      "into it needs Linux here (" + why + "); `shadowlab check --lab " + std::to_string(lab.number) +
+               "` grades your file";
+    return;
+  }
+  start_gl_build(lab, impl, text);
+}
+
+void LiveCppExercise::start_gl_build(const Lab& lab, Impl impl, const std::string& text) {
+  if (folder_.empty()) folder_ = platform::make_private_temp_dir("shadowlab-live-");
+  const std::filesystem::path dir = folder_ / std::to_string(++generation_);  // a new library per build
+  building_ = true;
+  run_on_worker([this, &lab, impl, dir, text] {
+    std::optional<Features> hooks;
+    std::string error;
+    try {
+      Features features = lab.hooks(impl);
+      features.shadow_target = build_live_gl_exercise(dir, lab.gl_exercise_files.front(), text);
+      hooks = std::move(features);
+    } catch (const std::exception& e) {
+      error = e.what();
     }
-    wake_.notify_all();  // reset() may be waiting for this build
-  };
+    finish_build(std::move(hooks), error, text, true);
+  });
+}
+
+void LiveCppExercise::run_on_worker(std::function<void()> job) {
+  if (!worker_.joinable())
+    worker_ = std::thread([this] {
+      std::unique_lock lock(mutex_);
+      for (;;) {
+        wake_.wait(lock, [this] { return stopping_ || job_; });
+        if (stopping_) return;
+        std::function<void()> next = std::move(job_);
+        job_ = nullptr;
+        lock.unlock();
+        next();
+        lock.lock();
+      }
+    });
+  {
+    const std::lock_guard lock(mutex_);
+    job_ = std::move(job);
+  }
   wake_.notify_all();
+}
+
+void LiveCppExercise::finish_build(std::optional<Features> hooks, const std::string& error, const std::string& text,
+                                   bool gl) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (hooks) {
+      (gl ? gl_last_ : last_).emplace(text, *hooks);
+      ready_ = std::move(hooks);
+      (gl ? gl_built_text_ : built_text_) = text;
+      message_.clear();
+      in_use_ = true;
+    } else {
+      message_ = printable(error, 4000);
+    }
+    building_ = false;
+  }
+  wake_.notify_all();  // reset() may be waiting for this build
 }
 
 std::optional<Features> LiveCppExercise::take_hooks() {

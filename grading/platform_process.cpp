@@ -11,6 +11,7 @@
 #include <thread>
 
 #if defined(__linux__)
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <seccomp.h>
@@ -361,6 +362,19 @@ const std::string& grading_unavailable() {
   return available;
 }
 
+void* load_library_symbol(const fs::path& library, const char* symbol, std::string& error) {
+  void* handle = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = ::dlerror();
+    error = why ? why : library.string() + ": cannot be loaded";
+    return nullptr;
+  }
+  ::dlerror();
+  void* address = ::dlsym(handle, symbol);
+  if (!address) error = library.string() + ": no " + symbol;
+  return address;
+}
+
 fs::path make_private_temp_dir(const std::string& prefix) {
   std::string pattern = (fs::temp_directory_path() / (prefix + "-XXXXXX")).string();
   if (!::mkdtemp(pattern.data()))
@@ -422,6 +436,11 @@ void die_with_parent() {}
 void limit_own_address_space(std::uint64_t) {}
 
 fs::path self_executable() { throw std::runtime_error(needs_linux("shadowlab grade")); }
+
+void* load_library_symbol(const fs::path&, const char* symbol, std::string& error) {
+  error = needs_linux(std::string("loading ") + symbol);
+  return nullptr;
+}
 
 fs::path make_private_temp_dir(const std::string& prefix) {
   std::random_device random;

@@ -107,6 +107,13 @@ void limit_own_address_space(std::uint64_t bytes);
 // The running executable (Linux: /proc/self/exe; macOS: _NSGetExecutablePath; Windows: GetModuleFileName).
 std::filesystem::path self_executable();
 
+// The address of `symbol` in a shared library loaded into this process for good (never unloaded: what
+// is taken from it may be held anywhere): a student's GL exercise in the window, on their own machine
+// (grading/live_cpp.h). Null with `error` set when it cannot be loaded or has no such symbol. Linux:
+// dlopen (RTLD_NOW | RTLD_LOCAL) and dlsym; elsewhere LoadLibraryW and GetProcAddress on Windows, dlopen
+// on macOS, not built here: the fallback says it needs Linux.
+void* load_library_symbol(const std::filesystem::path& library, const char* symbol, std::string& error);
+
 // A new, empty folder only we can read, under the system's temporary folder (mkdtemp).
 std::filesystem::path make_private_temp_dir(const std::string& prefix);
 

@@ -205,6 +205,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     return false;
   }
   failed_build_error_.clear();
+  pass.set_target_code(features.shadow_target);
   billboards_ = std::move(billboards);
   ssao_ = std::move(ssao);
   lights_ = std::move(lights);

@@ -420,6 +420,59 @@ assert stats["stock->live"] > 500, "the saved right answer did not change the vi
 assert stats["live->broken"] < 50, "a file that does not build replaced the last good one"
 PY
     ;;
+  window_live_gl)  # issue 34: lab 0's GL exercise, saved, is built into the window and draws its shadow map
+    # A data folder like the source tree, with lab 0 copied: its GLSL part is a right answer, so that what
+    # changes the picture is the OpenGL part alone (gl_shadow_target.cpp).
+    mkdir -p "$tmp/data/labs"
+    for f in "$src"/*; do [ "$(basename "$f")" = labs ] || ln -s "$f" "$tmp/data/"; done
+    for f in "$src"/labs/*; do ln -s "$f" "$tmp/data/labs/"; done
+    lab0="$tmp/data/labs/00_basic_shadow_map"
+    rm "$lab0" && cp -r "$src/labs/00_basic_shadow_map" "$lab0"
+    answers="$src/tests/answers/00_basic_shadow_map"
+    cp "$answers/right/texel_fetch__exercise.glsl" "$lab0/exercise.glsl"
+    export SHADOWLAB_DATA_DIR="$tmp/data"
+    # The program's own functions (the solution's) with the same GLSL answer: what a right GL answer must draw.
+    window --lab 0 --impl solution --script "frames:3,screenshot:$tmp/solution.png"
+    # The student saves three times while the window runs: a right answer once the stock file's picture is
+    # taken, then one that never clears the map, then a file that does not compile. A build takes under a
+    # second here (0.4 s measured under a load of 8); each picture waits 10 s for it.
+    exercise="$lab0/gl_shadow_target.cpp"
+    ( for shot in stock right no_clear; do
+        for _ in $(seq 1200); do [ -s "$tmp/$shot.png" ] && break; sleep 0.1; done
+        case $shot in
+          stock) cp "$answers/right/clamp_to_border_one__gl_shadow_target.cpp" "$exercise" ;;
+          right) cp "$answers/wrong/no_clear__gl_shadow_target.cpp" "$exercise" ;;
+          no_clear) printf 'int broken = ;\n' >>"$exercise" ;;
+        esac
+      done ) &
+    editor=$!
+    steps="frames:3,wait:10,frames:3,screenshot:$tmp/stock.png"
+    for shot in right no_clear broken; do steps="$steps,wait:10,frames:3,screenshot:$tmp/$shot.png"; done
+    window --lab 0 --impl exercise --script "$steps"
+    wait "$editor"
+    grep -q "shadowlab: your edited C++ exercise is live" "$tmp/out" || fail "the GL exercise was not used: $(cat "$tmp/out" "$tmp/err")"
+    grep -q "labs/00_basic_shadow_map/gl_shadow_target.cpp:[0-9]*:[0-9]*: error" "$tmp/err" ||
+      fail "the build error does not name the student's line: $(cat "$tmp/err")"
+    png_python - "$tmp" <<'PY' || fail "the view did not follow the saved GL exercise"
+import sys
+from png_tools import load
+d = sys.argv[1]
+r = {n: load(f"{d}/{n}.png")[2] for n in ("solution", "stock", "right", "no_clear", "broken")}
+w = len(r["stock"][0]) // 4
+# The 3D view right of the panel (x from 460), under the pass-time line, debug quads included.
+def differing(a, b):
+    return sum(1 for y in range(60, len(a), 2) for x in range(460, w, 2)
+               if sum(abs(a[y][4 * x + c] - b[y][4 * x + c]) for c in range(3)) > 30)
+pairs = (("stock->right", "stock", "right"), ("right~solution", "right", "solution"),
+         ("right->no_clear", "right", "no_clear"), ("no_clear->broken", "no_clear", "broken"))
+stats = {k: differing(r[a], r[b]) for k, a, b in pairs}
+print(stats)
+assert stats["stock->right"] > 500, "the saved right answer did not change the view"
+assert stats["right~solution"] < 50, "a right answer does not draw what the program's own functions draw"
+assert stats["right->no_clear"] > 500, "a pass that never clears its map looks like a right one"
+assert stats["no_clear->broken"] < 50, "a file that does not build replaced the last good one"
+PY
+    ;;
   window_check_dropped)  # issue 36: Check on a dropped model grades it as `check --scene` does (in the lab's frame, against the solution there)
     # Lab 7's solution on the Duck: in absolute units its spot places miss the model (high.shadow_error 0.022
     # against the lab's 0.005: FAIL lines); graded as a foreign scene it passes (cli.check_foreign_scene).
