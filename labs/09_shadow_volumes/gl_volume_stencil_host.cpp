@@ -2,9 +2,6 @@
 // OpenGL context first, then each VolumeCall is answered with the three passes of gl_volume_setup.h's
 // scene run through stencil_pass and begin_additive_lit_pass, and the state they left
 // (labs/09_shadow_volumes/gl_volume_setup.h). Not part of the shadowlab binary.
-#include <iterator>
-#include <utility>
-
 #include "labs/09_shadow_volumes/gl_volume_setup.h"
 #include "grading/cpp_exercise_host.h"
 #include "grading/gl_exercise_host.h"
@@ -28,22 +25,9 @@ struct Scene {
   GLuint program = 0, vao = 0, colour = 0, depth_stencil = 0, framebuffer = 0;
 };
 
-GLuint compile_program() {
-  const GLuint program = glCreateProgram();
-  for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, kVertex}, std::pair{GL_FRAGMENT_SHADER, kFragment}}) {
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    glAttachShader(program, shader);
-    glDeleteShader(shader);
-  }
-  glLinkProgram(program);
-  return program;
-}
-
 Scene make_scene() {
   Scene s;
-  s.program = compile_program();
+  s.program = compile_exercise_program(kVertex, kFragment);
   glGenVertexArrays(1, &s.vao);
   glGenRenderbuffers(1, &s.colour);
   glBindRenderbuffer(GL_RENDERBUFFER, s.colour);

@@ -9,7 +9,6 @@
 // z-pass is shown failing; the volumes' triangle count against the solution's (each silhouette once).
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -19,9 +18,8 @@
 
 #include "labs/09_shadow_volumes/gl_volume_setup.h"
 #include "grading/check.h"
-#include "grading/cpp_exercise.h"
+#include "grading/gl_exercise_check.h"
 #include "grading/lab.h"
-#include "renderer/shader.h"  // data_dir
 #include "renderer/shadow_volume_pass.h"
 
 namespace shadowlab {
@@ -121,12 +119,8 @@ double ratio(long graded, long reference) {
 // Lab 9's GL exercise (gl_volume_setup.h): the graded gl_volume_stencil.cpp (the file on disk, a
 // submission's, or the solution: the renderer's renderer/volume_stencil.cpp) is built with its host and
 // run in the sandbox, once per counting method.
-namespace fs = std::filesystem;
-
 constexpr const char* kGlExercise = SHADOWLAB_LAB_FOLDER "/gl_volume_stencil.cpp";
 constexpr const char* kGlSolution = "renderer/volume_stencil.cpp";
-// The lab folder's exercise host (labs/CMakeLists.txt): the folder's name.
-const std::string kHost = std::string(SHADOWLAB_LAB_FOLDER).substr(std::string("labs/").size());
 // State is exact: no wrong column, setting or error is allowed.
 constexpr double kNoDifference = 0;
 // A column's red channel may differ from ambient (+ light) by one step of its 8 bits (the blend's rounding).
@@ -287,33 +281,13 @@ void add_lit_criteria(const VolumeState& s, CheckResult& result) {
                "GL_LESS passes none of them, GL_ALWAYS lights hidden ones too."});
 }
 
-fs::path graded_file(const CheckContext& ctx) {
-  if (!ctx.submission.empty()) return fs::absolute(ctx.submission / kGlExercise);
-  return data_dir() / (ctx.impl == Impl::Solution ? kGlSolution : kGlExercise);
-}
-
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context,
 // z-pass then z-fail, the state and picture it left turned into the gl_stencil.* criteria.
 void check_gl_stencil(CheckContext& ctx, CheckResult& result) {
-  const fs::path file = graded_file(ctx);
-  if (!ctx.submission.empty() && !fs::is_regular_file(file)) {
-    result.criteria.push_back({"gl_stencil.file_submitted", 0.0, Criterion::kAtLeast, 1.0,
-                               std::string(kGlExercise) + " in the submission",
-                               std::string("hand in ") + kGlExercise + " too: lab 9's OpenGL part."});
-    return;
-  }
-  if (const std::string why = cpp_exercise_unavailable(kHost); !why.empty()) {
-    result.notes.push_back(std::string(kGlExercise) + " is not graded here: " + why);
-    return;
-  }
-  CppExerciseSpec spec;
-  spec.source = file;
-  spec.display_name = ctx.impl == Impl::Solution && ctx.submission.empty() ? kGlSolution : kGlExercise;
-  spec.host = kHost;
-  spec.headers = {SHADOWLAB_LAB_FOLDER "/gl_volume_setup.h", "renderer/volume_stencil.h", "renderer/gl.h"};
-  spec.renders = true;
-  CppExercise program(spec);
-  const std::vector<VolumeState> states = program.call_many<VolumeState>(std::vector<VolumeCall>{{0}, {1}});
+  const auto program = start_gl_exercise(ctx, result, {kGlExercise, kGlSolution, "gl_stencil", "lab 9's OpenGL part",
+      {SHADOWLAB_LAB_FOLDER "/gl_volume_setup.h", "renderer/volume_stencil.h", "renderer/gl.h"}});
+  if (!program) return;
+  const std::vector<VolumeState> states = program->call_many<VolumeState>(std::vector<VolumeCall>{{0}, {1}});
   result.metrics["gl_stencil"] = {{"zpass", pass_json(states[0])}, {"zfail", pass_json(states[1])},
                                   {"lit", lit_json(states[1])}};
   add_pass_criteria(states[0], false, result);
