@@ -11,4 +11,8 @@ namespace shadowlab {
 // the system's OpenGL library before the host may no longer open files.
 bool make_exercise_gl_context();
 
+// A linked program of a vertex and a fragment shader's text, for a host's own draws (a compile error
+// shows as the draw's wrong result, which the host's tests would catch).
+unsigned compile_exercise_program(const char* vertex, const char* fragment);
+
 }  // namespace shadowlab

@@ -8,6 +8,7 @@
 #include "core/image_io.h"
 #include "renderer/debug_annotations.h"
 #include "renderer/shadowed_light.h"
+#include "renderer/volume_stencil.h"
 #include "core/technique_params.h"
 
 namespace shadowlab {
@@ -348,13 +349,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) 
       // Colour and visibility only; positions and normals stay as the ambient pass wrote them.
       const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_NONE};
       glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : buffers);
-      glDepthMask(GL_FALSE);
-      glDepthFunc(GL_EQUAL);  // exactly the surfaces the ambient pass kept (lit.vert's gl_Position is invariant)
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_EQUAL, 0, 0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
+      begin_additive_lit_pass();  // stencil == 0, depth equal, added (lab 9's GL exercise)
       break;
     }
     case LitVariant::RemapView:

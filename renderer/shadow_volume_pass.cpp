@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/adjacency.h"
+#include "renderer/volume_stencil.h"
 
 namespace shadowlab {
 
@@ -31,8 +32,6 @@ void ShadowVolumePass::draw_view_passes(PassContext& ctx, const ViewTarget& view
   ctx.timed("volumes", [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, view.framebuffer);
     glViewport(0, 0, view.width, view.height);
-    glClearStencil(0);
-    glClear(GL_STENCIL_BUFFER_BIT);
     draw_stencil(ctx.camera_view_proj(), ctx.light.vector4(), z_fail, ctx.stats.draws);
   });
   ++ctx.stats.stencil_passes;
@@ -110,38 +109,16 @@ void ShadowVolumePass::draw_volumes(const glm::mat4& view_proj, const glm::vec4&
 }
 
 void ShadowVolumePass::draw_stencil(const glm::mat4& view_proj, const glm::vec4& light, bool z_fail, long& draws) {
-  // 2. Only the stencil changes: no colour, no depth writes, but the depth test against the scene.
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glEnable(GL_DEPTH_CLAMP);  // the points at infinity land exactly on the far plane: keep them
-  glDisable(GL_CULL_FACE);   // both sides in one draw, each with its own stencil operation
-  // The near caps lie exactly on the occluders' lit faces: pushing the volumes a hair back makes those
-  // faces fail the depth test consistently instead of fighting over equal depths. A constant offset
-  // only (kVolumeOffsetUnits): a slope-scaled one pushes each side quad back by its own depth slope, up
-  // to a pixel's worth, and moves every shadow outline on a receiver by up to a pixel (lab 9's
-  // INSTRUCTOR.md: with glPolygonOffset(1, 1) the benchmark's frame had 190 wrong pixels on the default
-  // scene, with this 28).
+  // 2. The counting pass's state is renderer/volume_stencil.cpp's (lab 9's GL exercise). The near caps
+  // lie exactly on the occluders' lit faces: pushing the volumes a hair back makes those faces fail the
+  // depth test consistently instead of fighting over equal depths. A constant offset only
+  // (kVolumeOffsetUnits): a slope-scaled one pushes each side quad back by its own depth slope, up to a
+  // pixel's worth, and moves every shadow outline on a receiver by up to a pixel (lab 9's INSTRUCTOR.md:
+  // with glPolygonOffset(1, 1) the benchmark's frame had 190 wrong pixels on the default scene, with this 28).
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(0.0f, kVolumeOffsetUnits);
-  glEnable(GL_STENCIL_TEST);
-  glStencilMask(0xFF);
-  glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  if (z_fail) {
-    // Carmack's reverse: count the faces behind the surface, out to infinity.
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-  } else {
-    // Count the faces between the eye and the surface: entering a volume +1, leaving it -1.
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-  }
-  draw_volumes(view_proj, light, z_fail, glm::vec4(0.0f), draws);
+  stencil_pass(z_fail, [&] { draw_volumes(view_proj, light, z_fail, glm::vec4(0.0f), draws); });
   glDisable(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_DEPTH_CLAMP);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthMask(GL_TRUE);
 }
 
 VolumeTriangles ShadowVolumePass::count_triangles(const glm::vec4& light, bool caps, const Bounds& box) {

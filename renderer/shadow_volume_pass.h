@@ -84,7 +84,8 @@ class ShadowVolumePass final : public ShadowPass {
   const std::vector<VolumeMeshReport>& report() const { return report_; }
 
   // light: xyz the position (w = 1) or the direction toward the light (w = 0). view_proj must have an
-  // infinite far plane. Draws the volumes into the bound framebuffer's stencil buffer.
+  // infinite far plane. Clears the bound framebuffer's stencil and counts the volumes into it, with the
+  // state of renderer/volume_stencil.h's stencil_pass (lab 9's GL exercise).
   void draw_stencil(const glm::mat4& view_proj, const glm::vec4& light, bool z_fail, long& draws);
   // Captures the triangles the volumes emit for this light (transform feedback, nothing rasterised) and
   // sorts them by kind: how a grader tells an extrusion of the silhouette from one of every edge. A
