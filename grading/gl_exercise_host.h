@@ -11,4 +11,8 @@ namespace shadowlab {
 // the system's OpenGL library before the host may no longer open files.
 bool make_exercise_gl_context();
 
+// A program of a vertex and a fragment shader from their texts, for a host's probe draws (the host's own
+// GLSL, never the student's); 0-named uniforms and a failed link show in the probe's reads.
+unsigned compile_exercise_program(const char* vertex, const char* fragment);
+
 }  // namespace shadowlab

@@ -6,9 +6,7 @@
 // interior pixels within lab 1's bounds in every case.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -17,6 +15,7 @@
 #include "labs/00_basic_shadow_map/gl_setup.h"
 #include "grading/check.h"
 #include "grading/cpp_exercise.h"
+#include "grading/gl_names.h"
 #include "grading/lab.h"
 #include "grading/probe.h"
 #include "renderer/shader.h"  // data_dir
@@ -132,46 +131,18 @@ constexpr double kReadTolerance = 1.0 / 65535.0;
 // The fewest depth bits a depth format has (GL_DEPTH_COMPONENT16); a colour texture has 0.
 constexpr int kMinDepthBits = 16;
 
-std::string enum_name(int value) {
-  static const std::map<int, std::string> names = {
-      {GL_NONE, "GL_NONE"}, {GL_NEAREST, "GL_NEAREST"}, {GL_LINEAR, "GL_LINEAR"},
-      {GL_NEAREST_MIPMAP_NEAREST, "GL_NEAREST_MIPMAP_NEAREST"}, {GL_LINEAR_MIPMAP_LINEAR, "GL_LINEAR_MIPMAP_LINEAR"},
-      {GL_NEAREST_MIPMAP_LINEAR, "GL_NEAREST_MIPMAP_LINEAR"}, {GL_LINEAR_MIPMAP_NEAREST, "GL_LINEAR_MIPMAP_NEAREST"},
-      {GL_REPEAT, "GL_REPEAT"}, {GL_MIRRORED_REPEAT, "GL_MIRRORED_REPEAT"}, {GL_CLAMP_TO_EDGE, "GL_CLAMP_TO_EDGE"},
-      {GL_CLAMP_TO_BORDER, "GL_CLAMP_TO_BORDER"}, {GL_TEXTURE, "GL_TEXTURE"}, {GL_RENDERBUFFER, "GL_RENDERBUFFER"},
-      {GL_FRAMEBUFFER_COMPLETE, "GL_FRAMEBUFFER_COMPLETE"},
-      {GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"},
-      {GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"},
-      {GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER"},
-      {GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER"},
-      {GL_FRAMEBUFFER_UNSUPPORTED, "GL_FRAMEBUFFER_UNSUPPORTED"}, {GL_FRAMEBUFFER_UNDEFINED, "GL_FRAMEBUFFER_UNDEFINED"},
-      {GL_COLOR_ATTACHMENT0, "GL_COLOR_ATTACHMENT0"}, {GL_BACK, "GL_BACK"}, {GL_FRONT, "GL_FRONT"},
-      {GL_DEPTH_COMPONENT, "GL_DEPTH_COMPONENT"}, {GL_DEPTH_COMPONENT16, "GL_DEPTH_COMPONENT16"},
-      {GL_DEPTH_COMPONENT24, "GL_DEPTH_COMPONENT24"}, {GL_DEPTH_COMPONENT32, "GL_DEPTH_COMPONENT32"},
-      {GL_DEPTH_COMPONENT32F, "GL_DEPTH_COMPONENT32F"}, {GL_RGBA8, "GL_RGBA8"}, {GL_RGBA, "GL_RGBA"},
-      {GL_RGBA32F, "GL_RGBA32F"}, {GL_R32F, "GL_R32F"}, {GL_RG32F, "GL_RG32F"},
-      {GL_INVALID_ENUM, "GL_INVALID_ENUM"}, {GL_INVALID_VALUE, "GL_INVALID_VALUE"},
-      {GL_INVALID_OPERATION, "GL_INVALID_OPERATION"}, {GL_INVALID_FRAMEBUFFER_OPERATION, "GL_INVALID_FRAMEBUFFER_OPERATION"},
-      {GL_OUT_OF_MEMORY, "GL_OUT_OF_MEMORY"}};
-  const auto found = names.find(value);
-  if (found != names.end()) return found->second;
-  char hex[16];
-  std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(value));
-  return hex;
-}
-
 nlohmann::json state_json(const TargetState& s) {
-  return {{"gl_error_after_create", enum_name(s.gl_error_after_create)}, {"is_framebuffer", s.is_framebuffer != 0},
-          {"is_texture", s.is_texture != 0}, {"size", s.size}, {"status", enum_name(s.status)},
-          {"depth_attachment_type", enum_name(s.depth_attachment_type)},
+  return {{"gl_error_after_create", gl_enum_name(s.gl_error_after_create)}, {"is_framebuffer", s.is_framebuffer != 0},
+          {"is_texture", s.is_texture != 0}, {"size", s.size}, {"status", gl_enum_name(s.status)},
+          {"depth_attachment_type", gl_enum_name(s.depth_attachment_type)},
           {"depth_attachment_is_the_texture", s.depth_attachment_name == s.texture && s.texture != 0},
-          {"colour_attachment_type", enum_name(s.colour_attachment_type)}, {"draw_buffer", enum_name(s.draw_buffer)},
-          {"read_buffer", enum_name(s.read_buffer)}, {"internal_format", enum_name(s.internal_format)},
+          {"colour_attachment_type", gl_enum_name(s.colour_attachment_type)}, {"draw_buffer", gl_enum_name(s.draw_buffer)},
+          {"read_buffer", gl_enum_name(s.read_buffer)}, {"internal_format", gl_enum_name(s.internal_format)},
           {"width", s.width}, {"height", s.height}, {"depth_bits", s.depth_bits},
-          {"min_filter", enum_name(s.min_filter)}, {"mag_filter", enum_name(s.mag_filter)},
-          {"wrap_s", enum_name(s.wrap_s)}, {"wrap_t", enum_name(s.wrap_t)},
+          {"min_filter", gl_enum_name(s.min_filter)}, {"mag_filter", gl_enum_name(s.mag_filter)},
+          {"wrap_s", gl_enum_name(s.wrap_s)}, {"wrap_t", gl_enum_name(s.wrap_t)},
           {"border", {s.border[0], s.border[1], s.border[2], s.border[3]}},
-          {"gl_error_after_begin", enum_name(s.gl_error_after_begin)},
+          {"gl_error_after_begin", gl_enum_name(s.gl_error_after_begin)},
           {"pass_binds_the_target", s.pass_framebuffer == s.framebuffer && s.framebuffer != 0},
           {"viewport", {s.viewport[0], s.viewport[1], s.viewport[2], s.viewport[3]}},
           {"depth_min", s.depth_min}, {"depth_max", s.depth_max},
@@ -194,7 +165,7 @@ std::string completeness_advice(const TargetState& s) {
       return "the framebuffer draws to or reads from a colour attachment it does not have: glDrawBuffer(GL_NONE) "
              "and glReadBuffer(GL_NONE) with it bound.";
     default:
-      return "glCheckFramebufferStatus says " + enum_name(s.status) + ": attach a depth texture and nothing else.";
+      return "glCheckFramebufferStatus says " + gl_enum_name(s.status) + ": attach a depth texture and nothing else.";
   }
 }
 
