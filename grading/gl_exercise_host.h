@@ -15,4 +15,8 @@ bool make_exercise_gl_context();
 // GLSL, never the student's); 0-named uniforms and a failed link show in the probe's reads.
 unsigned compile_exercise_program(const char* vertex, const char* fragment);
 
+// How the texture bound to GL_TEXTURE_2D is sampled, read back with glGetTexParameter*: its min and mag
+// filters, S and T wraps and border colour (the state the course's mistakes set wrong).
+void read_texture_sampling(int& min_filter, int& mag_filter, int& wrap_s, int& wrap_t, float* border);
+
 }  // namespace shadowlab

@@ -61,7 +61,8 @@ namespace moments_probe {
 inline constexpr float kNearDepth = 0.3f, kFarDepth = 0.7f;
 inline constexpr int kGlProbePoints = 5;
 inline constexpr float kProbeUv[kGlProbePoints][2] = {{0.25f, 0.25f}, {0.75f, 0.75f}, {1.1f, 0.25f}, {0.25f, 1.1f}, {0.5f, 0.25f}};
-inline constexpr float kReceiverDepth[kGlProbePoints] = {0.32f, 0.5f, 0.5f, 0.5f, 0.8f};
+inline constexpr float kReceiverDepth[] = {0.32f, 0.5f, 0.5f, 0.5f, 0.8f};
+static_assert(sizeof kReceiverDepth == kGlProbePoints * sizeof(float), "one receiver per probe point");
 // The probe's minimum variance (the lit pass's u_min_variance): the bound 0.02 behind the near occluder
 // is 1e-4 / (1e-4 + 0.02^2) = 0.2 where the map keeps the variance 0.
 inline constexpr float kProbeMinVariance = 1e-4f;

@@ -1,0 +1,28 @@
+// The grader's half of a lab's GL exercise (labs 0 and 3: the student's OpenGL calls in a gl_*.cpp file,
+// grading/cpp_exercise.h with `renders`): which file is graded and building it with the lab's host in the
+// sandbox. The lab's check then calls the program and turns the state it answers into criteria.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grading/check.h"
+#include "grading/cpp_exercise.h"
+
+namespace shadowlab {
+
+struct GlExerciseFiles {
+  std::string exercise;              // the student's file: "labs/03_vsm_setup/gl_moments_target.cpp"
+  std::string solution;              // the renderer's own file, the solution: "renderer/moments_target.cpp"
+  std::string host;                  // the lab folder's exercise host (labs/CMakeLists.txt): its name
+  std::vector<std::string> headers;  // the includes the file may use
+  std::string part;                  // as the advice names it: "lab 3's OpenGL part"
+};
+
+// The graded file (a submission's, else the solution's or the exercise on disk) built with its host;
+// nullptr after adding the failed criterion gl_setup.file_submitted (a submission without the file) or a
+// note (no sandbox or no EGL here). Throws ExerciseError as CppExercise does.
+std::unique_ptr<CppExercise> build_gl_exercise(const CheckContext& ctx, CheckResult& result, const GlExerciseFiles& files);
+
+}  // namespace shadowlab
