@@ -25,4 +25,18 @@ struct GlExerciseFiles {
 // note (no sandbox or no EGL here). Throws ExerciseError as CppExercise does.
 std::unique_ptr<CppExercise> build_gl_exercise(const CheckContext& ctx, CheckResult& result, const GlExerciseFiles& files);
 
+// What the start of every exercise's pass is graded on alike, read back by its host after the student's
+// `begin` function ran with the window's framebuffer bound and a window-sized viewport.
+struct GlPassState {
+  std::string create, begin, pass;  // the functions' names and the pass's: "create_shadow_target", ..., "depth pass"
+  int framebuffer = 0, pass_framebuffer = 0;  // target.framebuffer, GL_DRAW_FRAMEBUFFER_BINDING after `begin`
+  const int* viewport = nullptr;              // GL_VIEWPORT after `begin`
+  int size = 0, window_width = 0, window_height = 0;  // the map's size asked for, the window's viewport before
+  int error_after_create = 0, error_after_begin = 0;  // glGetError after each function
+};
+// gl_setup.pass_not_into_the_map and gl_setup.viewport_error, exact.
+void add_pass_binding_criteria(const GlPassState& s, std::vector<Criterion>& criteria);
+// gl_setup.gl_errors: the functions that left a GL error, none allowed.
+Criterion gl_errors_criterion(const GlPassState& s);
+
 }  // namespace shadowlab

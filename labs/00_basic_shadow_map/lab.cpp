@@ -202,17 +202,10 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "call glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) with the framebuffer bound: it has no colour "
                "buffer. Mesa reports it complete without them (it implements the rule of OpenGL 4.1, which dropped "
                "the check), an OpenGL 3.3 driver may not."});
-  const double bound = s.pass_framebuffer == s.framebuffer && s.framebuffer != 0 ? 0.0 : 1.0;
-  c.push_back({"gl_setup.pass_not_into_the_map", bound, Criterion::kAtMost, kNoDifference,
-               "GL_DRAW_FRAMEBUFFER_BINDING after begin_shadow_pass is target.framebuffer",
-               "begin_shadow_pass must bind target.framebuffer (glBindFramebuffer(GL_FRAMEBUFFER, ...)): otherwise the "
-               "depth pass draws into the window."});
-  const double viewport = std::abs(s.viewport[0]) + std::abs(s.viewport[1]) + std::abs(s.viewport[2] - kCall.size) +
-                          std::abs(s.viewport[3] - kCall.size);
-  c.push_back({"gl_setup.viewport_error", viewport, Criterion::kAtMost, kNoDifference,
-               "pixels between GL_VIEWPORT after begin_shadow_pass and (0, 0, 300, 300); it was the window's 1280 x 720",
-               "glViewport(0, 0, target.size, target.size) in begin_shadow_pass: the viewport is not part of the "
-               "framebuffer, and the window's leaves most of the scene outside the map (or the map's corner only)."});
+  const GlPassState pass{"create_shadow_target", "begin_shadow_pass", "depth pass", s.framebuffer, s.pass_framebuffer,
+                         s.viewport, kCall.size, kCall.window_width, kCall.window_height, s.gl_error_after_create,
+                         s.gl_error_after_begin};
+  add_pass_binding_criteria(pass, c);
   const double uncleared = s.depth_min < 0.0f ? 1.0 : 1.0 - s.depth_min;
   c.push_back({"gl_setup.depth_below_far_after_clear", uncleared, Criterion::kAtMost, kNoDifference,
                "1 - the smallest depth in the map after begin_shadow_pass; the map held 0.25 before it (a last frame's)",
@@ -233,11 +226,7 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "and just beyond the right and top edges beside the open quarters, 1; on the occluder's edge 0.3 or 1): "
                "the state criteria above say which setting shows (a repeating map reads the occluder beyond the edge, "
                "a linear filter a blend on its edge, an uncleared map or a window-sized viewport 0.25 or 0.3 in the open)."});
-  const double errors = (s.gl_error_after_create != GL_NO_ERROR) + (s.gl_error_after_begin != GL_NO_ERROR);
-  c.push_back({"gl_setup.gl_errors", errors, Criterion::kAtMost, kNoDifference,
-               "glGetError after create_shadow_target and after begin_shadow_pass",
-               "a call failed (see gl_error_after_create and _begin in the metrics): check each call's arguments "
-               "against the OpenGL 3.3 reference."});
+  c.push_back(gl_errors_criterion(pass));
 }
 
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the

@@ -279,18 +279,13 @@ void add_target_criteria(const MomentsState& s, std::vector<Criterion>& c) {
                "shadow from there appears where nothing casts one."});
 }
 
+GlPassState pass_state(const MomentsState& s) {
+  return {"create_moments_target", "begin_moments_pass", "moments pass", s.framebuffer, s.pass_framebuffer, s.viewport,
+          kCall.size, kCall.window_width, kCall.window_height, s.gl_error_after_create, s.gl_error_after_begin};
+}
+
 void add_pass_criteria(const MomentsState& s, std::vector<Criterion>& c) {
-  const double bound = s.pass_framebuffer == s.framebuffer && s.framebuffer != 0 ? 0.0 : 1.0;
-  c.push_back({"gl_setup.pass_not_into_the_map", bound, Criterion::kAtMost, kNoDifference,
-               "GL_DRAW_FRAMEBUFFER_BINDING after begin_moments_pass is target.framebuffer",
-               "begin_moments_pass must bind target.framebuffer (glBindFramebuffer(GL_FRAMEBUFFER, ...)): otherwise the "
-               "moments pass draws into the window."});
-  const double viewport = std::abs(s.viewport[0]) + std::abs(s.viewport[1]) + std::abs(s.viewport[2] - kCall.size) +
-                          std::abs(s.viewport[3] - kCall.size);
-  c.push_back({"gl_setup.viewport_error", viewport, Criterion::kAtMost, kNoDifference,
-               "pixels between GL_VIEWPORT after begin_moments_pass and (0, 0, 300, 300); it was the window's 1280 x 720",
-               "glViewport(0, 0, target.size, target.size) in begin_moments_pass: the viewport is not part of the "
-               "framebuffer, and the window's leaves most of the scene outside the map."});
+  add_pass_binding_criteria(pass_state(s), c);
   c.push_back({"gl_setup.moments_not_cleared", s.moments_off_clear < 0.0f ? 1.0 : s.moments_off_clear, Criterion::kAtMost,
                kNoDifference, "the largest |E[z] - 1| and |E[z^2] - 1| in the map after begin_moments_pass; it held (0.25, 0.0625) before",
                "clear the moments to (1, 1, 0, 0) in begin_moments_pass: glClearColor(1, 1, 0, 0) then glClear with "
@@ -325,11 +320,7 @@ void add_probe_criteria(const MomentsState& s, std::vector<Criterion>& c) {
                "criteria above say which setting shows (8-bit moments 0.02 behind, no depth buffer the far occluder "
                "over the near one, nearest filtering 0 or 1 on the edge, a repeating map or a clear to 0 a shadow in "
                "the open)."});
-  const double errors = (s.gl_error_after_create != GL_NO_ERROR) + (s.gl_error_after_begin != GL_NO_ERROR);
-  c.push_back({"gl_setup.gl_errors", errors, Criterion::kAtMost, kNoDifference,
-               "glGetError after create_moments_target and after begin_moments_pass",
-               "a call failed (see gl_error_after_create and _begin in the metrics): check each call's arguments "
-               "against the OpenGL 3.3 reference."});
+  c.push_back(gl_errors_criterion(pass_state(s)));
 }
 
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the
