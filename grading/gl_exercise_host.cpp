@@ -33,6 +33,14 @@ bool make_exercise_gl_context() {
   return glGetString(GL_VERSION) != nullptr;
 }
 
+void read_texture_sampling(int& min_filter, int& mag_filter, int& wrap_s, int& wrap_t, float* border) {
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min_filter);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag_filter);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &wrap_s);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &wrap_t);
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+}
+
 unsigned compile_exercise_program(const char* vertex, const char* fragment) {
   const GLuint program = glCreateProgram();
   for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, vertex}, std::pair{GL_FRAGMENT_SHADER, fragment}}) {

@@ -11,8 +11,12 @@ namespace shadowlab {
 // the system's OpenGL library before the host may no longer open files.
 bool make_exercise_gl_context();
 
-// A linked program of a vertex and a fragment shader's text, for a host's own draws (a compile error
-// shows as the draw's wrong result, which the host's tests would catch).
+// A program of a vertex and a fragment shader from their texts, for a host's probe draws (the host's own
+// GLSL, never the student's); 0-named uniforms and a failed link show in the probe's reads.
 unsigned compile_exercise_program(const char* vertex, const char* fragment);
+
+// How the texture bound to GL_TEXTURE_2D is sampled, read back with glGetTexParameter*: its min and mag
+// filters, S and T wraps and border colour (the state the course's mistakes set wrong).
+void read_texture_sampling(int& min_filter, int& mag_filter, int& wrap_s, int& wrap_t, float* border);
 
 }  // namespace shadowlab

@@ -5,14 +5,14 @@
 #include <stdexcept>
 
 #include "core/vsm_params.h"
+#include "renderer/moments_target.h"
 
 namespace shadowlab {
 
 namespace {
 
 GlTexture make_moments_texture(GLenum internal_format, int size) {
-  // Linear filtering is what VSM is for: the average of moments is still a pair of moments, while the
-  // average of depths compared with one depth means nothing.
+  // The blur's ping-pong texture B, made as A is (renderer/moments_target.cpp): linear, clamped.
   const bool four = internal_format == GL_RGBA32F || internal_format == GL_RGBA16F;
   return make_texture_2d(internal_format, size, size, four ? GL_RGBA : GL_RG, GL_FLOAT, GL_LINEAR);
 }
@@ -23,12 +23,11 @@ GLenum moments_format(const std::string& format, bool four) {
   return four ? GL_RGBA32F : GL_RG32F;
 }
 
-GlFramebuffer make_color_fbo(GLuint texture, GLuint depth_renderbuffer, const char* what) {
+// The blur's ping-pong target: the texture as colour attachment 0, no depth.
+GlFramebuffer make_color_fbo(GLuint texture, const char* what) {
   GlFramebuffer fbo = GlFramebuffer::create();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-  if (depth_renderbuffer)
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_renderbuffer);
   check_framebuffer(what);
   return fbo;
 }
@@ -87,11 +86,13 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
   bool changed = false;
   const bool four = warp_exponent_ != 0.0f;
   if (size != size_ || format != format_ || four != four_moments_) {
-    moments_texture_ = make_moments_texture(moments_format(format, four), size);
-    depth_ = GlRenderbuffer::create();
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
-    moments_fbo_ = make_color_fbo(moments_texture_.id(), depth_.id(), "moments");
+    // The course's VSM target, made by lab 3's GL solution (renderer/moments_target.h).
+    const MomentsTarget target = create_moments_target(size, moments_format(format, four));
+    moments_texture_ = GlTexture::adopt(target.moments_texture);
+    depth_ = GlRenderbuffer::adopt(target.depth_renderbuffer);
+    moments_fbo_ = GlFramebuffer::adopt(target.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, moments_fbo_.id());
+    check_framebuffer("moments");
     blur_texture_ = {};  // reallocated below at the new size if needed
     blur_fbo_ = {};
     size_ = size;
@@ -101,7 +102,7 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
   }
   if (blur && !blur_texture_) {
     blur_texture_ = make_moments_texture(moments_format(format_, four_moments_), size_);
-    blur_fbo_ = make_color_fbo(blur_texture_.id(), 0, "blur");
+    blur_fbo_ = make_color_fbo(blur_texture_.id(), "blur");
     changed = true;
   } else if (!blur && blur_texture_) {
     blur_texture_ = {};
@@ -117,14 +118,15 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
   if (moments_u_.generation != moments_.generation())
     moments_u_ = {moments_.generation(), Uniform(moments_.id(), "u_light_view_proj"),
                   Uniform(moments_.id(), "u_warp_exponent"), Uniform(moments_.id(), "u_warp_negative_exponent")};
-  bind_color_target(moments_fbo_.id(), size_, size_);
+  // Bound, the whole map in the viewport, cleared to (1, 1, 0, 0) and depth 1 (lab 3's GL solution); EVSM's
+  // warped moments clear the colour once more to their far plane's.
+  begin_moments_pass({moments_fbo_.id(), moments_texture_.id(), depth_.id(), size_});
+  if (warp_exponent_ != 0.0f) {
+    const std::array<float, 4> clear = moments_clear(warp_exponent_, negative_exponent_);
+    glClearBufferfv(GL_COLOR, 0, clear.data());
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  const std::array<float, 4> clear = moments_clear(warp_exponent_, negative_exponent_);
-  glClearBufferfv(GL_COLOR, 0, clear.data());
-  glClearDepth(1.0);
-  glClear(GL_DEPTH_BUFFER_BIT);
   set_shadow_culling(cull);
   glUseProgram(moments_.id());
   moments_u_.light_view_proj.set(light_view_proj);

@@ -76,7 +76,7 @@ TEST_F(GlVolumeStencil, SolutionLeavesTheCourseState) {
 }
 
 // A file run in the sandbox as lab 9's check runs it: z-pass, then z-fail.
-std::vector<VolumeState> run_in_sandbox(const fs::path& file) {
+std::vector<VolumeState> run_volume_sandbox(const fs::path& file) {
   CppExerciseSpec spec;
   spec.source = file;
   spec.display_name = "labs/09_shadow_volumes/gl_volume_stencil.cpp";
@@ -93,7 +93,7 @@ fs::path answer(const std::string& kind, const std::string& name) {
 
 TEST(GlVolumeSandbox, SolutionCountsTheVolumesAroundEachReceiver) {
   if (const std::string why = cpp_exercise_unavailable("09_shadow_volumes"); !why.empty()) GTEST_SKIP() << why;
-  const std::vector<VolumeState> states = run_in_sandbox(data_dir() / "renderer/volume_stencil.cpp");
+  const std::vector<VolumeState> states = run_volume_sandbox(data_dir() / "renderer/volume_stencil.cpp");
   const VolumeState &zpass = states[0], &zfail = states[1];
   for (int c = 0; c < kVolumeColumns; ++c) {
     EXPECT_EQ(zfail.counts[c], kInsideVolumes[c]) << "z-fail, column " << c;
@@ -112,17 +112,17 @@ TEST(GlVolumeSandbox, SolutionCountsTheVolumesAroundEachReceiver) {
 TEST(GlVolumeSandbox, WrongAnswersShowInTheCounts) {
   if (const std::string why = cpp_exercise_unavailable("09_shadow_volumes"); !why.empty()) GTEST_SKIP() << why;
   // GL_INCR / GL_DECR: a -1 drawn first sticks at 0 (z-pass column 1, z-fail column 4) and its +1 makes 1.
-  const std::vector<VolumeState> saturating = run_in_sandbox(answer("wrong", "incr_not_wrap"));
+  const std::vector<VolumeState> saturating = run_volume_sandbox(answer("wrong", "incr_not_wrap"));
   EXPECT_EQ(saturating[0].counts[1], 1);
   EXPECT_EQ(saturating[0].counts[2], 0) << "the other order comes out right";
   EXPECT_EQ(saturating[1].counts[4], 1);
   EXPECT_GT(saturating[0].non_wrapping_ops, 0);
   // No depth clamp: the far cap beyond the far plane is clipped, and its +1 with it.
-  const std::vector<VolumeState> unclamped = run_in_sandbox(answer("wrong", "no_depth_clamp"));
+  const std::vector<VolumeState> unclamped = run_volume_sandbox(answer("wrong", "no_depth_clamp"));
   EXPECT_EQ(unclamped[1].counts[3], 0);
   EXPECT_EQ(unclamped[1].counts[7], 1);
   // The negated counts (front and back swapped) are right: 0 stays 0, one volume reads 255.
-  const std::vector<VolumeState> negated = run_in_sandbox(answer("right", "negated_counts_lequal"));
+  const std::vector<VolumeState> negated = run_volume_sandbox(answer("right", "negated_counts_lequal"));
   EXPECT_EQ(negated[1].counts[3], 255);
   EXPECT_EQ(negated[1].counts[0], 0);
   EXPECT_EQ(negated[1].red[3], 64);

@@ -6,8 +6,6 @@
 // interior pixels within lab 1's bounds in every case.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +14,7 @@
 #include "labs/00_basic_shadow_map/gl_setup.h"
 #include "grading/check.h"
 #include "grading/gl_exercise_check.h"
+#include "grading/gl_names.h"
 #include "grading/lab.h"
 #include "grading/probe.h"
 
@@ -116,6 +115,8 @@ void probe_shadow_test(CheckContext& ctx, CheckResult& result) {
 // the solution: the renderer's renderer/shadow_target.cpp) is built with its host and run in the sandbox.
 constexpr const char* kGlExercise = SHADOWLAB_LAB_FOLDER "/gl_shadow_target.cpp";
 constexpr const char* kGlSolution = "renderer/shadow_target.cpp";
+// The lab folder's exercise host (labs/CMakeLists.txt): the folder's name.
+const std::string kHost = std::string(SHADOWLAB_LAB_FOLDER).substr(std::string("labs/").size());
 // A map size that is no power of two (a size written into the code is found out) in a window larger
 // than the map (a viewport left at the window's size is found out).
 constexpr TargetCall kCall{300, 1280, 720};
@@ -126,46 +127,18 @@ constexpr double kReadTolerance = 1.0 / 65535.0;
 // The fewest depth bits a depth format has (GL_DEPTH_COMPONENT16); a colour texture has 0.
 constexpr int kMinDepthBits = 16;
 
-std::string enum_name(int value) {
-  static const std::map<int, std::string> names = {
-      {GL_NONE, "GL_NONE"}, {GL_NEAREST, "GL_NEAREST"}, {GL_LINEAR, "GL_LINEAR"},
-      {GL_NEAREST_MIPMAP_NEAREST, "GL_NEAREST_MIPMAP_NEAREST"}, {GL_LINEAR_MIPMAP_LINEAR, "GL_LINEAR_MIPMAP_LINEAR"},
-      {GL_NEAREST_MIPMAP_LINEAR, "GL_NEAREST_MIPMAP_LINEAR"}, {GL_LINEAR_MIPMAP_NEAREST, "GL_LINEAR_MIPMAP_NEAREST"},
-      {GL_REPEAT, "GL_REPEAT"}, {GL_MIRRORED_REPEAT, "GL_MIRRORED_REPEAT"}, {GL_CLAMP_TO_EDGE, "GL_CLAMP_TO_EDGE"},
-      {GL_CLAMP_TO_BORDER, "GL_CLAMP_TO_BORDER"}, {GL_TEXTURE, "GL_TEXTURE"}, {GL_RENDERBUFFER, "GL_RENDERBUFFER"},
-      {GL_FRAMEBUFFER_COMPLETE, "GL_FRAMEBUFFER_COMPLETE"},
-      {GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"},
-      {GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"},
-      {GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER"},
-      {GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER"},
-      {GL_FRAMEBUFFER_UNSUPPORTED, "GL_FRAMEBUFFER_UNSUPPORTED"}, {GL_FRAMEBUFFER_UNDEFINED, "GL_FRAMEBUFFER_UNDEFINED"},
-      {GL_COLOR_ATTACHMENT0, "GL_COLOR_ATTACHMENT0"}, {GL_BACK, "GL_BACK"}, {GL_FRONT, "GL_FRONT"},
-      {GL_DEPTH_COMPONENT, "GL_DEPTH_COMPONENT"}, {GL_DEPTH_COMPONENT16, "GL_DEPTH_COMPONENT16"},
-      {GL_DEPTH_COMPONENT24, "GL_DEPTH_COMPONENT24"}, {GL_DEPTH_COMPONENT32, "GL_DEPTH_COMPONENT32"},
-      {GL_DEPTH_COMPONENT32F, "GL_DEPTH_COMPONENT32F"}, {GL_RGBA8, "GL_RGBA8"}, {GL_RGBA, "GL_RGBA"},
-      {GL_RGBA32F, "GL_RGBA32F"}, {GL_R32F, "GL_R32F"}, {GL_RG32F, "GL_RG32F"},
-      {GL_INVALID_ENUM, "GL_INVALID_ENUM"}, {GL_INVALID_VALUE, "GL_INVALID_VALUE"},
-      {GL_INVALID_OPERATION, "GL_INVALID_OPERATION"}, {GL_INVALID_FRAMEBUFFER_OPERATION, "GL_INVALID_FRAMEBUFFER_OPERATION"},
-      {GL_OUT_OF_MEMORY, "GL_OUT_OF_MEMORY"}};
-  const auto found = names.find(value);
-  if (found != names.end()) return found->second;
-  char hex[16];
-  std::snprintf(hex, sizeof hex, "0x%04x", static_cast<unsigned>(value));
-  return hex;
-}
-
 nlohmann::json state_json(const TargetState& s) {
-  return {{"gl_error_after_create", enum_name(s.gl_error_after_create)}, {"is_framebuffer", s.is_framebuffer != 0},
-          {"is_texture", s.is_texture != 0}, {"size", s.size}, {"status", enum_name(s.status)},
-          {"depth_attachment_type", enum_name(s.depth_attachment_type)},
+  return {{"gl_error_after_create", gl_enum_name(s.gl_error_after_create)}, {"is_framebuffer", s.is_framebuffer != 0},
+          {"is_texture", s.is_texture != 0}, {"size", s.size}, {"status", gl_enum_name(s.status)},
+          {"depth_attachment_type", gl_enum_name(s.depth_attachment_type)},
           {"depth_attachment_is_the_texture", s.depth_attachment_name == s.texture && s.texture != 0},
-          {"colour_attachment_type", enum_name(s.colour_attachment_type)}, {"draw_buffer", enum_name(s.draw_buffer)},
-          {"read_buffer", enum_name(s.read_buffer)}, {"internal_format", enum_name(s.internal_format)},
+          {"colour_attachment_type", gl_enum_name(s.colour_attachment_type)}, {"draw_buffer", gl_enum_name(s.draw_buffer)},
+          {"read_buffer", gl_enum_name(s.read_buffer)}, {"internal_format", gl_enum_name(s.internal_format)},
           {"width", s.width}, {"height", s.height}, {"depth_bits", s.depth_bits},
-          {"min_filter", enum_name(s.min_filter)}, {"mag_filter", enum_name(s.mag_filter)},
-          {"wrap_s", enum_name(s.wrap_s)}, {"wrap_t", enum_name(s.wrap_t)},
+          {"min_filter", gl_enum_name(s.min_filter)}, {"mag_filter", gl_enum_name(s.mag_filter)},
+          {"wrap_s", gl_enum_name(s.wrap_s)}, {"wrap_t", gl_enum_name(s.wrap_t)},
           {"border", {s.border[0], s.border[1], s.border[2], s.border[3]}},
-          {"gl_error_after_begin", enum_name(s.gl_error_after_begin)},
+          {"gl_error_after_begin", gl_enum_name(s.gl_error_after_begin)},
           {"pass_binds_the_target", s.pass_framebuffer == s.framebuffer && s.framebuffer != 0},
           {"viewport", {s.viewport[0], s.viewport[1], s.viewport[2], s.viewport[3]}},
           {"depth_min", s.depth_min}, {"depth_max", s.depth_max},
@@ -188,7 +161,7 @@ std::string completeness_advice(const TargetState& s) {
       return "the framebuffer draws to or reads from a colour attachment it does not have: glDrawBuffer(GL_NONE) "
              "and glReadBuffer(GL_NONE) with it bound.";
     default:
-      return "glCheckFramebufferStatus says " + enum_name(s.status) + ": attach a depth texture and nothing else.";
+      return "glCheckFramebufferStatus says " + gl_enum_name(s.status) + ": attach a depth texture and nothing else.";
   }
 }
 
@@ -229,17 +202,10 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "call glDrawBuffer(GL_NONE) and glReadBuffer(GL_NONE) with the framebuffer bound: it has no colour "
                "buffer. Mesa reports it complete without them (it implements the rule of OpenGL 4.1, which dropped "
                "the check), an OpenGL 3.3 driver may not."});
-  const double bound = s.pass_framebuffer == s.framebuffer && s.framebuffer != 0 ? 0.0 : 1.0;
-  c.push_back({"gl_setup.pass_not_into_the_map", bound, Criterion::kAtMost, kNoDifference,
-               "GL_DRAW_FRAMEBUFFER_BINDING after begin_shadow_pass is target.framebuffer",
-               "begin_shadow_pass must bind target.framebuffer (glBindFramebuffer(GL_FRAMEBUFFER, ...)): otherwise the "
-               "depth pass draws into the window."});
-  const double viewport = std::abs(s.viewport[0]) + std::abs(s.viewport[1]) + std::abs(s.viewport[2] - kCall.size) +
-                          std::abs(s.viewport[3] - kCall.size);
-  c.push_back({"gl_setup.viewport_error", viewport, Criterion::kAtMost, kNoDifference,
-               "pixels between GL_VIEWPORT after begin_shadow_pass and (0, 0, 300, 300); it was the window's 1280 x 720",
-               "glViewport(0, 0, target.size, target.size) in begin_shadow_pass: the viewport is not part of the "
-               "framebuffer, and the window's leaves most of the scene outside the map (or the map's corner only)."});
+  const GlPassState pass{"create_shadow_target", "begin_shadow_pass", "depth pass", s.framebuffer, s.pass_framebuffer,
+                         s.viewport, kCall.size, kCall.window_width, kCall.window_height, s.gl_error_after_create,
+                         s.gl_error_after_begin};
+  add_pass_binding_criteria(pass, c);
   const double uncleared = s.depth_min < 0.0f ? 1.0 : 1.0 - s.depth_min;
   c.push_back({"gl_setup.depth_below_far_after_clear", uncleared, Criterion::kAtMost, kNoDifference,
                "1 - the smallest depth in the map after begin_shadow_pass; the map held 0.25 before it (a last frame's)",
@@ -260,18 +226,16 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "and just beyond the right and top edges beside the open quarters, 1; on the occluder's edge 0.3 or 1): "
                "the state criteria above say which setting shows (a repeating map reads the occluder beyond the edge, "
                "a linear filter a blend on its edge, an uncleared map or a window-sized viewport 0.25 or 0.3 in the open)."});
-  const double errors = (s.gl_error_after_create != GL_NO_ERROR) + (s.gl_error_after_begin != GL_NO_ERROR);
-  c.push_back({"gl_setup.gl_errors", errors, Criterion::kAtMost, kNoDifference,
-               "glGetError after create_shadow_target and after begin_shadow_pass",
-               "a call failed (see gl_error_after_create and _begin in the metrics): check each call's arguments "
-               "against the OpenGL 3.3 reference."});
+  c.push_back(gl_errors_criterion(pass));
 }
 
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the
 // state it left turned into the gl_setup.* criteria.
 void check_gl_setup(CheckContext& ctx, CheckResult& result) {
-  const auto program = start_gl_exercise(ctx, result, {kGlExercise, kGlSolution, "gl_setup", "lab 0's OpenGL part",
-      {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/shadow_target.h", "renderer/gl.h"}});
+  const auto program = build_gl_exercise(
+      ctx, result,
+      {kGlExercise, kGlSolution, kHost, {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/shadow_target.h", "renderer/gl.h"},
+       "lab 0's OpenGL part"});
   if (!program) return;
   const TargetState state = program->call<TargetState>(kCall);
   result.metrics["gl_setup"] = state_json(state);

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "labs/03_vsm_setup/gl_setup.h"
 #include "grading/check.h"
+#include "grading/gl_exercise_check.h"
+#include "grading/gl_names.h"
 #include "grading/probe.h"
 #include "renderer/moments_pass.h"
 #include "core/vsm_params.h"
@@ -169,7 +172,174 @@ void probe_chebyshev(CheckContext& ctx, CheckResult& result) {
                              "to 0 or below in floating point."});
 }
 
+// Lab 3's GL exercise (gl_setup.h): the graded gl_moments_target.cpp (the file on disk, a submission's, or
+// the solution: the renderer's renderer/moments_target.cpp) is built with its host and run in the sandbox.
+constexpr const char* kGlExercise = SHADOWLAB_LAB_FOLDER "/gl_moments_target.cpp";
+constexpr const char* kGlSolution = "renderer/moments_target.cpp";
+// The lab folder's exercise host (labs/CMakeLists.txt): the folder's name.
+const std::string kHost = std::string(SHADOWLAB_LAB_FOLDER).substr(std::string("labs/").size());
+// A map size that is no power of two (a size written into the code is found out) in a window larger
+// than the map (a viewport left at the window's size is found out).
+constexpr MomentsCall kCall{300, 1280, 720};
+// State is exact: no texel, pixel, wrong parameter or error is allowed.
+constexpr double kNoDifference = 0;
+// The fewest bits a moment may have: the course's RG32F (32-bit floats; an 8-bit or half-float moment
+// loses the variance, gl_setup.probe_bounds_wrong shows how much).
+constexpr int kMomentBits = 32;
+// The fewest depth bits a depth format has (GL_DEPTH_COMPONENT16): the depth test needs no more here.
+constexpr int kMinDepthBits = 16;
+
+nlohmann::json state_json(const MomentsState& s) {
+  nlohmann::json moments = nlohmann::json::array(), bounds = nlohmann::json::array();
+  for (int i = 0; i < moments_probe::kGlProbePoints; ++i) {
+    moments.push_back({s.probe_moments[i][0], s.probe_moments[i][1]});
+    bounds.push_back(s.probe_bounds[i]);
+  }
+  return {{"gl_error_after_create", gl_enum_name(s.gl_error_after_create)}, {"is_framebuffer", s.is_framebuffer != 0},
+          {"is_texture", s.is_texture != 0}, {"is_renderbuffer", s.is_renderbuffer != 0}, {"size", s.size},
+          {"status", gl_enum_name(s.status)}, {"colour_attachment_type", gl_enum_name(s.colour_attachment_type)},
+          {"colour_attachment_is_the_moments", s.colour_attachment_name == s.texture && s.texture != 0},
+          {"depth_attachment_type", gl_enum_name(s.depth_attachment_type)},
+          {"depth_attachment_is_the_renderbuffer", s.depth_attachment_name == s.renderbuffer && s.renderbuffer != 0},
+          {"depth_bits", s.depth_bits}, {"renderbuffer_format", gl_enum_name(s.renderbuffer_format)},
+          {"internal_format", gl_enum_name(s.internal_format)}, {"width", s.width}, {"height", s.height},
+          {"red_bits", s.red_bits}, {"green_bits", s.green_bits}, {"red_type", gl_enum_name(s.red_type)},
+          {"min_filter", gl_enum_name(s.min_filter)}, {"mag_filter", gl_enum_name(s.mag_filter)},
+          {"wrap_s", gl_enum_name(s.wrap_s)}, {"wrap_t", gl_enum_name(s.wrap_t)},
+          {"border", {s.border[0], s.border[1], s.border[2], s.border[3]}},
+          {"gl_error_after_begin", gl_enum_name(s.gl_error_after_begin)},
+          {"pass_binds_the_target", s.pass_framebuffer == s.framebuffer && s.framebuffer != 0},
+          {"viewport", {s.viewport[0], s.viewport[1], s.viewport[2], s.viewport[3]}},
+          {"moments_off_clear", s.moments_off_clear}, {"depth_min", s.depth_min},
+          {"probe_moments", moments}, {"probe_bounds", bounds}};
+}
+
+std::string completeness_advice(const MomentsState& s) {
+  if (!s.is_framebuffer)
+    return "target.framebuffer is no framebuffer: make one with glGenFramebuffers and bind it (glBindFramebuffer) "
+           "before attaching to it.";
+  switch (s.status) {
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+      return "the framebuffer has no image: attach the moments with glFramebufferTexture2D(GL_FRAMEBUFFER, "
+             "GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0).";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+      return "an attachment cannot be drawn into: the moments texture needs storage in a colour format (glTexImage2D "
+             "with GL_RG32F) and the renderbuffer storage in a depth format (glRenderbufferStorage with "
+             "GL_DEPTH_COMPONENT24), each size x size.";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+      return "the framebuffer draws to a colour attachment it does not have: attach the moments to GL_COLOR_ATTACHMENT0.";
+    default:
+      return "glCheckFramebufferStatus says " + gl_enum_name(s.status) +
+             ": attach the moments texture to GL_COLOR_ATTACHMENT0 and the depth renderbuffer to GL_DEPTH_ATTACHMENT.";
+  }
+}
+
+// Outside [0, 1] the edge's moments, or a border that is the clear value's (E[z] = E[z^2] = 1: lit).
+bool clamps(int wrap, const float* border) {
+  return wrap == GL_CLAMP_TO_EDGE || (wrap == GL_CLAMP_TO_BORDER && border[0] >= 1.0f && border[1] >= 1.0f);
+}
+
+void add_target_criteria(const MomentsState& s, std::vector<Criterion>& c) {
+  const std::string read = "read back after create_moments_target(300) with glGet* (an OpenGL state, not a tolerance)";
+  c.push_back({"gl_setup.framebuffer_complete", s.status == GL_FRAMEBUFFER_COMPLETE ? 1.0 : 0.0, Criterion::kAtLeast, 1.0,
+               "glCheckFramebufferStatus with target.framebuffer bound: GL_FRAMEBUFFER_COMPLETE", completeness_advice(s)});
+  const bool colour = s.colour_attachment_type == GL_TEXTURE && s.colour_attachment_name == s.texture && s.texture != 0;
+  c.push_back({"gl_setup.colour_attachment_is_the_moments", colour ? 1.0 : 0.0, Criterion::kAtLeast, 1.0,
+               "GL_COLOR_ATTACHMENT0's object is target.moments_texture (glGetFramebufferAttachmentParameteriv)",
+               "attach target.moments_texture to GL_COLOR_ATTACHMENT0, not to GL_DEPTH_ATTACHMENT: the moments pass "
+               "writes (z, z^2) as a colour, and the lit pass reads them through target.moments_texture."});
+  const double short_moments = (s.red_bits < kMomentBits) + (s.green_bits < kMomentBits) + (s.red_type != GL_FLOAT);
+  c.push_back({"gl_setup.moments_not_float32", short_moments, Criterion::kAtMost, kNoDifference,
+               "GL_TEXTURE_RED_SIZE and _GREEN_SIZE of the moments' level 0 below 32, and GL_TEXTURE_RED_TYPE not GL_FLOAT",
+               "store the moments in 32-bit floats: glTexImage2D with the internal format moments_format (GL_RG32F). In "
+               "8 bits (GL_RGBA8) or half floats E[z^2] - E[z]^2 loses the variance: a receiver just behind a surface "
+               "gets another bound (gl_setup.probe_bounds_wrong)."});
+  const bool depth = s.depth_attachment_type == GL_RENDERBUFFER && s.depth_attachment_name == s.renderbuffer && s.renderbuffer != 0;
+  c.push_back({"gl_setup.depth_attachment_is_the_renderbuffer", depth ? 1.0 : 0.0, Criterion::kAtLeast, 1.0,
+               "GL_DEPTH_ATTACHMENT's object is target.depth_renderbuffer, a renderbuffer",
+               "attach target.depth_renderbuffer to GL_DEPTH_ATTACHMENT (glFramebufferRenderbuffer): without a depth "
+               "buffer the moments pass has no depth test, and a far surface drawn after a near one overwrites it."});
+  c.push_back({"gl_setup.depth_bits", static_cast<double>(s.depth_bits), Criterion::kAtLeast, kMinDepthBits,
+               "GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE of the depth attachment; 16 bits is the smallest depth format",
+               "give the renderbuffer depth storage: glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size)."});
+  const double size_error = std::abs(s.width - kCall.size) + std::abs(s.height - kCall.size) + std::abs(s.size - kCall.size);
+  c.push_back({"gl_setup.map_size_error", size_error, Criterion::kAtMost, kNoDifference,
+               "texels between the moments' width, height, target.size and the size asked for (300)",
+               "make the texture and the renderbuffer size x size, with the size the function is given, and return "
+               "it in target.size."});
+  const double filters = (s.min_filter != GL_LINEAR) + (s.mag_filter != GL_LINEAR);
+  c.push_back({"gl_setup.filters_not_linear", filters, Criterion::kAtMost, kNoDifference, read,
+               "GL_TEXTURE_MIN_FILTER and GL_TEXTURE_MAG_FILTER must both be GL_LINEAR: the mean of two texels' moments "
+               "is the moments of both surfaces, which is what VSM filters (nearest reads one texel, a hard edge; the "
+               "default minification filter uses mipmaps the map does not have, and reads nothing)."});
+  const double wraps = !clamps(s.wrap_s, s.border) + !clamps(s.wrap_t, s.border);
+  c.push_back({"gl_setup.wraps_not_clamped", wraps, Criterion::kAtMost, kNoDifference, read,
+               "GL_TEXTURE_WRAP_S and _T must be GL_CLAMP_TO_EDGE, or GL_CLAMP_TO_BORDER with a border of (1, 1, 0, 0): "
+               "with GL_REPEAT (the default) a point beyond the map's edge reads the other side of the map, and a "
+               "shadow from there appears where nothing casts one."});
+}
+
+GlPassState pass_state(const MomentsState& s) {
+  return {"create_moments_target", "begin_moments_pass", "moments pass", s.framebuffer, s.pass_framebuffer, s.viewport,
+          kCall.size, kCall.window_width, kCall.window_height, s.gl_error_after_create, s.gl_error_after_begin};
+}
+
+void add_pass_criteria(const MomentsState& s, std::vector<Criterion>& c) {
+  add_pass_binding_criteria(pass_state(s), c);
+  c.push_back({"gl_setup.moments_not_cleared", s.moments_off_clear < 0.0f ? 1.0 : s.moments_off_clear, Criterion::kAtMost,
+               kNoDifference, "the largest |E[z] - 1| and |E[z^2] - 1| in the map after begin_moments_pass; it held (0.25, 0.0625) before",
+               "clear the moments to (1, 1, 0, 0) in begin_moments_pass: glClearColor(1, 1, 0, 0) then glClear with "
+               "GL_COLOR_BUFFER_BIT, with the target bound. Empty texels then hold the far plane's moments and light "
+               "every point; cleared to 0 they read as an occluder at depth 0 and shadow everything."});
+  const double uncleared = s.depth_min < 0.0f ? 1.0 : 1.0 - s.depth_min;
+  c.push_back({"gl_setup.depth_below_far_after_clear", uncleared, Criterion::kAtMost, kNoDifference,
+               "1 - the smallest depth in the depth buffer after begin_moments_pass; it held 0.25 before (a last frame's)",
+               "clear the depth too (GL_DEPTH_BUFFER_BIT in the same glClear, clear depth 1): otherwise last frame's "
+               "depths fail this frame's surfaces in the depth test, and their moments are never written."});
+}
+
+void add_probe_criteria(const MomentsState& s, std::vector<Criterion>& c) {
+  // The moments each probe point must read (gl_setup.h): the near occluder's, the clear value's, the clear
+  // value's beyond the right edge, the far occluder's beyond the top, the mean of the near occluder's and
+  // the clear value's on its edge; the bound for its receiver, as the lab's Chebyshev probe computes it.
+  using namespace moments_probe;
+  const double near = kNearDepth, far = kFarDepth;
+  const double right_moments[kGlProbePoints][2] = {{near, near * near}, {1, 1}, {1, 1}, {far, far * far},
+                                                   {(near + 1) / 2, (near * near + 1) / 2}};
+  double wrong = 0;
+  for (int i = 0; i < kGlProbePoints; ++i) {
+    const ChebyshevCase expected{right_moments[i][0], right_moments[i][1], kReceiverDepth[i], ChebyshevCase::kBound};
+    wrong += !(std::abs(s.probe_bounds[i] - chebyshev_reference(expected, kProbeMinVariance)) <= kBoundTolerance);
+  }
+  c.push_back({"gl_setup.probe_bounds_wrong", wrong, Criterion::kAtMost, kNoDifference,
+               "the moments of an occluder at depth 0.3 over the map's lower left quarter and of one at 0.7 over its left "
+               "half, drawn through begin_moments_pass's state; then Chebyshev's bound read with texture() at 5 points, "
+               "within 1e-5 of the CPU's (probe_moments, probe_bounds in the metrics)",
+               "what the lit pass would compute is wrong at some of the 5 points (0.02 behind the near occluder 0.2; in "
+               "the open and beyond the right and top edges 1; on the near occluder's edge 0.845, filtered): the "
+               "criteria above say which setting shows (8-bit moments 0.02 behind, no depth buffer the far occluder "
+               "over the near one, nearest filtering 0 or 1 on the edge, a repeating map or a clear to 0 a shadow in "
+               "the open)."});
+  c.push_back(gl_errors_criterion(pass_state(s)));
+}
+
+// The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the
+// state it left turned into the gl_setup.* criteria.
+void check_gl_setup(CheckContext& ctx, CheckResult& result) {
+  const auto program = build_gl_exercise(
+      ctx, result,
+      {kGlExercise, kGlSolution, kHost, {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/moments_target.h", "renderer/gl.h"},
+       "lab 3's OpenGL part"});
+  if (!program) return;
+  const MomentsState state = program->call<MomentsState>(kCall);
+  result.metrics["gl_setup"] = state_json(state);
+  add_target_criteria(state, result.criteria);
+  add_pass_criteria(state, result.criteria);
+  add_probe_criteria(state, result.criteria);
+}
+
 void check_vsm_setup(CheckContext& ctx, CheckResult& result) {
+  check_gl_setup(ctx, result);
   probe_chebyshev(ctx, result);
   ParamSet params = ctx.params();
   params.set("view.debug_quad", 0.0);
@@ -242,6 +412,8 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.summary = "Store the moments (z, z^2) in a filterable RG32F map and light with Chebyshev's bound.";
   lab.exercise_files = {kExerciseMoments, kExerciseChebyshev};
   lab.solution_files = {"shaders/vsm/moments.glsl", "shaders/vsm/chebyshev.glsl"};
+  lab.gl_exercise_files = {kGlExercise};
+  lab.gl_solution_files = {kGlSolution};
   lab.params = specs_of(param::vsm_format, param::vsm_min_variance);
   lab.presets = {
       {"no minimum variance",

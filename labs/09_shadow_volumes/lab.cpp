@@ -284,8 +284,11 @@ void add_lit_criteria(const VolumeState& s, CheckResult& result) {
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context,
 // z-pass then z-fail, the state and picture it left turned into the gl_stencil.* criteria.
 void check_gl_stencil(CheckContext& ctx, CheckResult& result) {
-  const auto program = start_gl_exercise(ctx, result, {kGlExercise, kGlSolution, "gl_stencil", "lab 9's OpenGL part",
-      {SHADOWLAB_LAB_FOLDER "/gl_volume_setup.h", "renderer/volume_stencil.h", "renderer/gl.h"}});
+  const auto program = build_gl_exercise(
+      ctx, result,
+      {kGlExercise, kGlSolution, "09_shadow_volumes",
+       {SHADOWLAB_LAB_FOLDER "/gl_volume_setup.h", "renderer/volume_stencil.h", "renderer/gl.h"}, "lab 9's OpenGL part",
+       "gl_stencil"});
   if (!program) return;
   const std::vector<VolumeState> states = program->call_many<VolumeState>(std::vector<VolumeCall>{{0}, {1}});
   result.metrics["gl_stencil"] = {{"zpass", pass_json(states[0])}, {"zfail", pass_json(states[1])},

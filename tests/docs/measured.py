@@ -30,6 +30,9 @@ import tempfile
 
 SEED = 1
 
+# Lab 3's GL exercise: the corpus's wrong answers whose probe reads the lab's texts quote.
+LAB3_GL_ANSWERS = ("rgba8_moments", "half_float_moments", "nearest_filter", "no_depth_buffer", "clear_black", "repeat_wrap")
+
 # Runs beyond each lab's solution and stock exercise: (lab, name, subcommand, extra arguments).
 VARIANTS = [
     # Lab 1: a constant bias alone, swept with the stock exercise's formula at the check's light.
@@ -47,6 +50,8 @@ VARIANTS = [
     *[(3, f"solution_min_variance_{v}", "check", ["--impl", "solution", "--set", f"vsm.min_variance={v}"])
       for v in ("1e-7", "1e-5", "1e-4", "1e-3")],
     (3, "solution_rg16f", "check", ["--impl", "solution", "--set", "vsm.format=RG16F"]),
+    # Lab 3: the GL exercise's wrong answers the text quotes (LAB3_GL_ANSWERS, below).
+    *[(3, f"gl_{answer}", "submission", [f"vsm_gl_{answer}"]) for answer in LAB3_GL_ANSWERS],
     # Lab 13: each exponent swept (the solution), and the positive warp's bound alone (two-moment EVSM).
     *[(13, f"solution_exponent_{c}", "check", ["--impl", "solution", "--set", f"vsm.evsm_exponent={c}"])
       for c in ("5", "10", "20")],
@@ -98,6 +103,16 @@ for _answer in ("no_range_check", "range_check_inverted", "unscaled_radius", "sa
         f"tests/answers/17_ssao/wrong/{_answer}__exercise.glsl",
         "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {",
         "float ssao_open(vec3 p, vec3 n, vec3 noise, float radius, float bias, bool range_check) {")}
+# Lab 3's GL exercise: the corpus's answers whose mistakes the text describes in the probe's reads, as they
+# are (their line `target.size = size;` kept), with the solution's shaders in the two GLSL slots.
+for _answer in LAB3_GL_ANSWERS:
+    SUBMISSIONS[f"vsm_gl_{_answer}"] = {
+        "labs/03_vsm_setup/gl_moments_target.cpp": (f"tests/answers/03_vsm_setup/wrong/{_answer}__gl_moments_target.cpp",
+                                                    "  target.size = size;", "  target.size = size;"),
+        "labs/03_vsm_setup/exercise_moments.glsl": ("shaders/vsm/moments.glsl", "const float SLOPE_VARIANCE_FACTOR",
+                                                    "const float SLOPE_VARIANCE_FACTOR"),
+        "labs/03_vsm_setup/exercise_chebyshev.glsl": ("shaders/vsm/chebyshev.glsl", "// Chebyshev's one-sided",
+                                                      "// Chebyshev's one-sided")}
 # The corpus's copy of the lecture's formula, taken as it is (its culling line kept).
 SUBMISSIONS["lecture_formula"] = {"labs/01_bias_tuning/exercise.glsl": (
     "tests/answers/01_bias_tuning/wrong/learnopengl_literal__exercise.glsl", "#define SHADOW_PASS_CULL NONE",
