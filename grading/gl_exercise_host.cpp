@@ -1,6 +1,7 @@
 #include "grading/gl_exercise_host.h"
 
 #include <cstdio>
+#include <utility>
 
 #include "renderer/gl.h"
 // EGL straight from libEGL after epoxy, as renderer/context.cpp includes it.
@@ -30,6 +31,19 @@ bool make_exercise_gl_context() {
     return false;
   }
   return glGetString(GL_VERSION) != nullptr;
+}
+
+unsigned compile_exercise_program(const char* vertex, const char* fragment) {
+  const GLuint program = glCreateProgram();
+  for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, vertex}, std::pair{GL_FRAGMENT_SHADER, fragment}}) {
+    const GLuint shader = glCreateShader(type);
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    glAttachShader(program, shader);
+    glDeleteShader(shader);
+  }
+  glLinkProgram(program);
+  return program;
 }
 
 }  // namespace shadowlab

@@ -11,4 +11,8 @@ namespace shadowlab {
 // the system's OpenGL library before the host may no longer open files.
 bool make_exercise_gl_context();
 
+// A program of a vertex and a fragment shader, compiled and linked in the host's context (the probes the
+// hosts draw with); no error check: a host's own shaders are fixed text.
+unsigned compile_exercise_program(const char* vertex, const char* fragment);
+
 }  // namespace shadowlab

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/blur_passes.h"
 #include "core/vsm_params.h"
 
 namespace shadowlab {
@@ -100,8 +101,12 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
     changed = true;
   }
   if (blur && !blur_texture_) {
-    blur_texture_ = make_moments_texture(moments_format(format_, four_moments_), size_);
-    blur_fbo_ = make_color_fbo(blur_texture_.id(), 0, "blur");
+    // Lab 5's GL solution makes it (renderer/blur_passes.h): the moments' format and size, linear, clamped.
+    const BlurTarget target = create_blur_target(size_, moments_format(format_, four_moments_));
+    blur_texture_ = GlTexture::adopt(target.texture);
+    blur_fbo_ = GlFramebuffer::adopt(target.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, blur_fbo_.id());
+    check_framebuffer("blur");
     changed = true;
   } else if (!blur && blur_texture_) {
     blur_texture_ = {};
@@ -203,11 +208,13 @@ void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod
     ctx.stats.blur_passes += 1;
     return;
   }
-  for (int direction : {0, 1})
-    ctx.timed(direction == 0 ? "blur_x" : "blur_y", [&] {
-      method == BlurMethod::Fast ? blur_fast(direction, radius, sigma, ctx.empty_vao)
-                                 : blur(direction, radius, sigma, ctx.empty_vao);
-    });
+  if (method == BlurMethod::Fast) {
+    for (int direction : {0, 1})
+      ctx.timed(direction == 0 ? "blur_x" : "blur_y", [&] { blur_fast(direction, radius, sigma, ctx.empty_vao); });
+  } else {
+    blur(radius, sigma, ctx.empty_vao,
+         [&](int pass, const std::function<void()>& draw) { ctx.timed(pass == 0 ? "blur_x" : "blur_y", draw); });
+  }
   ctx.stats.blur_passes += 2;
 }
 

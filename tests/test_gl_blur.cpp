@@ -157,8 +157,7 @@ TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
       const float sigma = 0.5f * static_cast<float>(radius);
       const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, sigma);
       upload();
-      m.blur(0, radius, sigma, vao.id());
-      m.blur(1, radius, sigma, vao.id());
+      m.blur(radius, sigma, vao.id());  // X then Y
       const std::vector<float> taught = m.read_moments();
       for (auto path : {MomentsPass::FastPath::Compute, MomentsPass::FastPath::Fragment}) {
         m.set_fast_path(path);
@@ -221,8 +220,7 @@ TEST_F(BlurTest, FourMomentsAreBlurredPairByPair) {
     glBindTexture(GL_TEXTURE_2D, m.texture());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, rgba.data());
-    m.blur(0, radius, sigma, vao.id());
-    m.blur(1, radius, sigma, vao.id());
+    m.blur(radius, sigma, vao.id());  // X then Y
     const std::vector<float> out = read_pixels(m.framebuffer(), GL_COLOR_ATTACHMENT0, n, n, GL_RGBA, 4);
     std::vector<float> got[2] = {std::vector<float>(out.size() / 2), std::vector<float>(out.size() / 2)};
     for (std::size_t i = 0; i < out.size() / 4; ++i)

@@ -3,7 +3,6 @@
 // begin_shadow_pass left (labs/00_basic_shadow_map/gl_setup.h). Not part of the shadowlab binary.
 #include <algorithm>
 #include <iterator>
-#include <utility>
 #include <vector>
 
 #include "labs/00_basic_shadow_map/gl_setup.h"
@@ -50,19 +49,6 @@ void read_framebuffer(GLuint framebuffer, TargetState& s) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-GLuint compile_program(const char* vertex, const char* fragment) {
-  const GLuint program = glCreateProgram();
-  for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, vertex}, std::pair{GL_FRAGMENT_SHADER, fragment}}) {
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    glAttachShader(program, shader);
-    glDeleteShader(shader);
-  }
-  glLinkProgram(program);
-  return program;
-}
-
 // The depth pass and a lit pass through the student's state: an occluder drawn at kOccluderDepth over
 // the lower left quarter of NDC with the binding and viewport begin_shadow_pass left, then the map read
 // with texture() at kProbeUv, one pixel each.
@@ -70,7 +56,7 @@ void probe(GLuint depth_texture, TargetState& s) {
   GLuint vao = 0, colour = 0, framebuffer = 0;
   glGenVertexArrays(1, &vao);
   glBindVertexArray(vao);
-  const GLuint occluder = compile_program(
+  const GLuint occluder = compile_exercise_program(
       "#version 330 core\nuniform float u_z;\n"
       "void main() { gl_Position = vec4(vec2(gl_VertexID & 1, gl_VertexID >> 1) - 1.0, u_z, 1.0); }\n",
       "#version 330 core\nvoid main() {}\n");
@@ -89,7 +75,7 @@ void probe(GLuint depth_texture, TargetState& s) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
   glViewport(0, 0, kPoints, 1);
   glDisable(GL_DEPTH_TEST);
-  const GLuint reader = compile_program(
+  const GLuint reader = compile_exercise_program(
       "#version 330 core\nvoid main() { gl_Position = vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0); }\n",
       "#version 330 core\nuniform sampler2D u_map;\nuniform vec2 u_uv[5];\nout vec4 read;\n"
       "void main() { read = vec4(texture(u_map, u_uv[int(gl_FragCoord.x)]).r); }\n");
