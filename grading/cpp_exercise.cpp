@@ -412,4 +412,28 @@ std::vector<std::string> CheckContext::grade_edited_cpp_files() {
   return notes;
 }
 
+std::optional<CppExerciseSpec> gl_exercise_spec(const CheckContext& ctx, CheckResult& result, const std::string& exercise,
+                                                const std::string& solution, const std::string& host,
+                                                const std::string& prefix, const std::string& part) {
+  namespace fs = std::filesystem;
+  const bool submitted = !ctx.submission.empty();
+  const fs::path file = submitted ? fs::absolute(ctx.submission / exercise)
+                                  : data_dir() / (ctx.impl == Impl::Solution ? solution : exercise);
+  if (submitted && !fs::is_regular_file(file)) {
+    result.criteria.push_back({prefix + ".file_submitted", 0.0, Criterion::kAtLeast, 1.0, exercise + " in the submission",
+                               "hand in " + exercise + " too: " + part + "."});
+    return std::nullopt;
+  }
+  if (const std::string why = cpp_exercise_unavailable(host); !why.empty()) {
+    result.notes.push_back(exercise + " is not graded here: " + why);
+    return std::nullopt;
+  }
+  CppExerciseSpec spec;
+  spec.source = file;
+  spec.display_name = ctx.impl == Impl::Solution && !submitted ? solution : exercise;
+  spec.host = host;
+  spec.renders = true;
+  return spec;
+}
+
 }  // namespace shadowlab

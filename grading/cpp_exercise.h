@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -73,6 +74,18 @@ struct CppExerciseSpec {
 // Empty where a C++ exercise of the lab host `host` ("00_basic_shadow_map") can be built and run here;
 // otherwise the one sentence saying why not (no sandbox; a GL exercise's host needs a build with EGL).
 std::string cpp_exercise_unavailable(const std::string& host);
+
+struct CheckResult;
+class CheckContext;
+
+// A lab's OpenGL exercise (lab 0's gl_shadow_target.cpp, lab 5's gl_blur_passes.cpp): the spec that builds
+// the graded file (a submission's; with --impl solution the solution, the renderer's own file; else the
+// file on disk) with the lab folder's host `host`, rendering, and the headers it may include. Empty after
+// adding what stops it: the criterion `<prefix>.file_submitted` (a submission without the file, `part`
+// naming it for the student) or a note (no host here).
+std::optional<CppExerciseSpec> gl_exercise_spec(const CheckContext& ctx, CheckResult& result, const std::string& exercise,
+                                                const std::string& solution, const std::string& host,
+                                                const std::string& prefix, const std::string& part);
 
 class CppExercise {
  public:

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +19,6 @@
 #include "grading/cpp_exercise.h"
 #include "grading/lab.h"
 #include "grading/probe.h"
-#include "renderer/shader.h"  // data_dir
 
 namespace shadowlab {
 
@@ -116,8 +115,6 @@ void probe_shadow_test(CheckContext& ctx, CheckResult& result) {
 
 // Lab 0's GL exercise (gl_setup.h): the graded gl_shadow_target.cpp (the file on disk, a submission's, or
 // the solution: the renderer's renderer/shadow_target.cpp) is built with its host and run in the sandbox.
-namespace fs = std::filesystem;
-
 constexpr const char* kGlExercise = SHADOWLAB_LAB_FOLDER "/gl_shadow_target.cpp";
 constexpr const char* kGlSolution = "renderer/shadow_target.cpp";
 // The lab folder's exercise host (labs/CMakeLists.txt): the folder's name.
@@ -273,32 +270,14 @@ void add_criteria(const TargetState& s, CheckResult& result) {
                "against the OpenGL 3.3 reference."});
 }
 
-fs::path graded_file(const CheckContext& ctx) {
-  if (!ctx.submission.empty()) return fs::absolute(ctx.submission / kGlExercise);
-  return data_dir() / (ctx.impl == Impl::Solution ? kGlSolution : kGlExercise);
-}
-
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the
 // state it left turned into the gl_setup.* criteria.
 void check_gl_setup(CheckContext& ctx, CheckResult& result) {
-  const fs::path file = graded_file(ctx);
-  if (!ctx.submission.empty() && !fs::is_regular_file(file)) {
-    result.criteria.push_back({"gl_setup.file_submitted", 0.0, Criterion::kAtLeast, 1.0,
-                               std::string(kGlExercise) + " in the submission",
-                               std::string("hand in ") + kGlExercise + " too: lab 0's OpenGL part."});
-    return;
-  }
-  if (const std::string why = cpp_exercise_unavailable(kHost); !why.empty()) {
-    result.notes.push_back(std::string(kGlExercise) + " is not graded here: " + why);
-    return;
-  }
-  CppExerciseSpec spec;
-  spec.source = file;
-  spec.display_name = ctx.impl == Impl::Solution && ctx.submission.empty() ? kGlSolution : kGlExercise;
-  spec.host = kHost;
-  spec.headers = {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/shadow_target.h", "renderer/gl.h"};
-  spec.renders = true;
-  CppExercise program(spec);
+  std::optional<CppExerciseSpec> spec =
+      gl_exercise_spec(ctx, result, kGlExercise, kGlSolution, kHost, "gl_setup", "lab 0's OpenGL part");
+  if (!spec) return;
+  spec->headers = {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/shadow_target.h", "renderer/gl.h"};
+  CppExercise program(*spec);
   const TargetState state = program.call<TargetState>(kCall);
   result.metrics["gl_setup"] = state_json(state);
   add_criteria(state, result);

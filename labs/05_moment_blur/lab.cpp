@@ -5,13 +5,15 @@
 // 1, 2, 4, 8, 16 at sigma = r / 2 and three held-out (radius, sigma) pairs; reported: at radius 0 no
 // blur pass runs and no blur target exists (the renderer's doing, tested in BlurTest); per-pass time and the
 // oracle's edge error by radius are reported.
+// The OpenGL part (gl_blur_passes.cpp: the ping-pong target and the two passes, solution
+// renderer/blur_passes.cpp) is built and run in the sandbox first: the gl_blur.* criteria.
 #include "grading/lab.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <map>
+#include <optional>
 #include <random>
 
 #include "labs/05_moment_blur/gl_setup.h"
@@ -21,7 +23,6 @@
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "core/vsm_params.h"
-#include "renderer/shader.h"  // data_dir
 
 namespace shadowlab {
 
@@ -119,15 +120,15 @@ double max_texel_error(const std::vector<float>& gpu, const std::vector<double>&
 
 // Lab 5's GL exercise (gl_setup.h): the graded gl_blur_passes.cpp (the file on disk, a submission's, or
 // the solution: the renderer's renderer/blur_passes.cpp) is built with its host and run in the sandbox.
-namespace fs = std::filesystem;
-
 constexpr const char* kGlExercise = SHADOWLAB_LAB_FOLDER "/gl_blur_passes.cpp";
 constexpr const char* kGlSolution = "renderer/blur_passes.cpp";
 // The lab folder's exercise host (labs/CMakeLists.txt): the folder's name.
 const std::string kHost = std::string(SHADOWLAB_LAB_FOLDER).substr(std::string("labs/").size());
-// A map of 24 texels (no power of two) in a window larger than it (a viewport left at the window's size
-// is found out), blurred with radius 3 and sigma 1.5 (lab 5's sigma = r / 2).
-constexpr BlurCall kGlCall{24, 1280, 720, 3, 1.5f};
+// A map of 24 texels (no power of two) and a window smaller than it, as a 1280 x 720 window is than a
+// 2048 map: a viewport left at the window's size leaves the map's far side unblurred (a larger window
+// would not show in the texels: the full-screen triangle covers the map and the shaders read
+// gl_FragCoord). Blurred with radius 3 and sigma 1.5 (lab 5's sigma = r / 2).
+constexpr BlurCall kGlCall{24, 15, 9, 3, 1.5f};
 static_assert(kGlCall.size <= kBlurMaxSize, "the host's replies hold every texel");
 // State is exact: no wrong binding, parameter, pass or error is allowed.
 constexpr double kNoDifference = 0;
@@ -247,9 +248,9 @@ void add_pass_criteria(const BlurState& s, CheckResult& result) {
                "u_texel_size is one texel in texture coordinates, 1 / size (not 1 / (size - 1), not 1: the taps are "
                "texel + i * direction, and coordinates run from 0 to 1 over size texels)."});
   c.push_back({"gl_blur.viewport_error", viewport, Criterion::kAtMost, kNoDifference,
-               at_draw + ": pixels between GL_VIEWPORT and (0, 0, 24, 24); it was the window's 1280 x 720",
+               at_draw + ": pixels between GL_VIEWPORT and (0, 0, 24, 24); it was the window's 15 x 9",
                "glViewport(0, 0, size, size) before the passes: the viewport is not part of the framebuffer, and the "
-               "window's maps the full-screen triangle onto 1280 x 720 pixels, of which the map holds 24 x 24."});
+               "window's covers only its lower left 15 x 9 texels of the map's 24 x 24, and the rest keeps unblurred moments."});
   c.push_back({"gl_blur.depth_test_on", depth, Criterion::kAtMost, kNoDifference, at_draw + ": glIsEnabled(GL_DEPTH_TEST)",
                "glDisable(GL_DEPTH_TEST) before the passes: the moments framebuffer keeps the moments pass's depth "
                "buffer, and the full-screen triangle at depth 0.5 is discarded wherever a caster is nearer (the "
@@ -297,32 +298,14 @@ void add_result_criteria(const BlurState& s, CheckResult& result) {
                "the OpenGL 3.3 reference."});
 }
 
-fs::path graded_gl_file(const CheckContext& ctx) {
-  if (!ctx.submission.empty()) return fs::absolute(ctx.submission / kGlExercise);
-  return data_dir() / (ctx.impl == Impl::Solution ? kGlSolution : kGlExercise);
-}
-
 // The GL exercise graded: the file built and run in the sandbox with its own headless OpenGL context, the
 // state it left and the texels it produced turned into the gl_blur.* criteria.
 void check_gl_blur(CheckContext& ctx, CheckResult& result) {
-  const fs::path file = graded_gl_file(ctx);
-  if (!ctx.submission.empty() && !fs::is_regular_file(file)) {
-    result.criteria.push_back({"gl_blur.file_submitted", 0.0, Criterion::kAtLeast, 1.0,
-                               std::string(kGlExercise) + " in the submission",
-                               std::string("hand in ") + kGlExercise + " too: lab 5's OpenGL part."});
-    return;
-  }
-  if (const std::string why = cpp_exercise_unavailable(kHost); !why.empty()) {
-    result.notes.push_back(std::string(kGlExercise) + " is not graded here: " + why);
-    return;
-  }
-  CppExerciseSpec spec;
-  spec.source = file;
-  spec.display_name = ctx.impl == Impl::Solution && ctx.submission.empty() ? kGlSolution : kGlExercise;
-  spec.host = kHost;
-  spec.headers = {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/blur_passes.h", "renderer/gl.h"};
-  spec.renders = true;
-  CppExercise program(spec);
+  std::optional<CppExerciseSpec> spec =
+      gl_exercise_spec(ctx, result, kGlExercise, kGlSolution, kHost, "gl_blur", "lab 5's OpenGL part");
+  if (!spec) return;
+  spec->headers = {SHADOWLAB_LAB_FOLDER "/gl_setup.h", "renderer/blur_passes.h", "renderer/gl.h"};
+  CppExercise program(*spec);
   const BlurState state = program.call<BlurState>(kGlCall);
   result.metrics["gl_blur"] = gl_state_json(state);
   add_target_criteria(state, result);
