@@ -8,6 +8,8 @@
 
 #include "renderer/moments_pass.h"
 
+#include "renderer/blur_passes.h"
+
 namespace shadowlab {
 
 namespace {
@@ -165,39 +167,43 @@ std::vector<double> cpu_gaussian_blur(const std::vector<float>& rg, int n, int r
   return out;
 }
 
-void MomentsPass::blur(int direction, int radius, float sigma, GLuint empty_vao) {
+void MomentsPass::blur(int radius, float sigma, GLuint empty_vao, const PassWrapper& around) {
   if (!blur_texture_) throw std::logic_error("MomentsPass::blur without a blur target");
-  ReloadableProgram& program = direction == 0 ? blur_x_ : blur_y_;
-  BlurUniforms& u = direction == 0 ? blur_x_u_ : blur_y_u_;
-  if (u.generation != program.generation()) {
-    const GLuint id = program.id();
-    u = {program.generation(), Uniform(id, "u_moments"), Uniform(id, "u_blur_radius"), Uniform(id, "u_blur_sigma")};
+  for (auto [program, u] : {std::pair{&blur_x_, &blur_x_u_}, std::pair{&blur_y_, &blur_y_u_}}) {
+    if (u->generation != program->generation()) {
+      const GLuint id = program->id();
+      *u = {program->generation(), Uniform(id, "u_moments"), Uniform(id, "u_blur_radius"), Uniform(id, "u_blur_sigma")};
+    }
+    glUseProgram(program->id());
+    u->radius.set(radius);
+    u->sigma.set(sigma);
   }
-  // X reads A and writes B, Y reads B and writes A: a texture is never read and written at once.
-  bind_color_target(direction == 0 ? blur_fbo_.id() : moments_fbo_.id(), size_, size_);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(program.id());
-  glActiveTexture(GL_TEXTURE0);
-  const GLuint source = direction == 0 ? moments_texture_.id() : blur_texture_.id();
-  glBindTexture(GL_TEXTURE_2D, source);
-  u.moments.set(0);
-  u.radius.set(radius);
-  u.sigma.set(sigma);
-  glBindVertexArray(empty_vao);
-  if (!four_moments_) {
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  } else {
-    // The shader blurs .rg and writes it to both pairs (shaders/vsm/blur.frag): the first pair as is, then
-    // the second, read through a swizzle (B, A) and written through the mask (B, A) only.
-    const GLint identity[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA}, second[4] = {GL_BLUE, GL_ALPHA, GL_BLUE, GL_ALPHA};
-    glColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, second);
-    glColorMask(GL_FALSE, GL_FALSE, GL_TRUE, GL_TRUE);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, identity);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  }
+  // The course's two passes, X then Y through the ping-pong texture: lab 5's GL solution
+  // (renderer/blur_passes.cpp) binds, sets the viewport and the uniforms; this draws.
+  BlurJob job{moments_texture_.id(), moments_fbo_.id(), size_, {blur_fbo_.id(), blur_texture_.id(), size_},
+              blur_x_.id(), blur_y_.id(), {}};
+  job.draw = [&](int pass) {
+    const auto draw = [&] {
+      glBindVertexArray(empty_vao);
+      if (!four_moments_) {
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        return;
+      }
+      // The shader blurs .rg and writes it to both pairs (shaders/vsm/blur.frag): the first pair as is,
+      // then the second, read through a swizzle (B, A) of the bound source and written through the mask
+      // (B, A) only.
+      const GLint identity[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA}, second[4] = {GL_BLUE, GL_ALPHA, GL_BLUE, GL_ALPHA};
+      glColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, second);
+      glColorMask(GL_FALSE, GL_FALSE, GL_TRUE, GL_TRUE);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, identity);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    };
+    around ? around(pass, draw) : draw();
+  };
+  run_blur_passes(job);
   glEnable(GL_DEPTH_TEST);
 }
 

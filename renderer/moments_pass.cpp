@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/blur_passes.h"
 #include "core/vsm_params.h"
 #include "renderer/moments_target.h"
 
@@ -11,25 +12,10 @@ namespace shadowlab {
 
 namespace {
 
-GlTexture make_moments_texture(GLenum internal_format, int size) {
-  // The blur's ping-pong texture B, made as A is (renderer/moments_target.cpp): linear, clamped.
-  const bool four = internal_format == GL_RGBA32F || internal_format == GL_RGBA16F;
-  return make_texture_2d(internal_format, size, size, four ? GL_RGBA : GL_RG, GL_FLOAT, GL_LINEAR);
-}
-
 // The moments' internal format: vsm.format, or its RGBA variant for four moments (EVSM).
 GLenum moments_format(const std::string& format, bool four) {
   if (format == "RG16F") return four ? GL_RGBA16F : GL_RG16F;
   return four ? GL_RGBA32F : GL_RG32F;
-}
-
-// The blur's ping-pong target: the texture as colour attachment 0, no depth.
-GlFramebuffer make_color_fbo(GLuint texture, const char* what) {
-  GlFramebuffer fbo = GlFramebuffer::create();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-  check_framebuffer(what);
-  return fbo;
 }
 
 ProgramDesc blur_desc(const char* direction) {
@@ -101,8 +87,12 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
     changed = true;
   }
   if (blur && !blur_texture_) {
-    blur_texture_ = make_moments_texture(moments_format(format_, four_moments_), size_);
-    blur_fbo_ = make_color_fbo(blur_texture_.id(), "blur");
+    // Lab 5's GL solution makes it (renderer/blur_passes.h): the moments' format and size, linear, clamped.
+    const BlurTarget target = create_blur_target(size_, moments_format(format_, four_moments_));
+    blur_texture_ = GlTexture::adopt(target.texture);
+    blur_fbo_ = GlFramebuffer::adopt(target.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, blur_fbo_.id());
+    check_framebuffer("blur");
     changed = true;
   } else if (!blur && blur_texture_) {
     blur_texture_ = {};
@@ -205,11 +195,13 @@ void MomentsPass::blur_map(PassContext& ctx, int radius, float sigma, BlurMethod
     ctx.stats.blur_passes += 1;
     return;
   }
-  for (int direction : {0, 1})
-    ctx.timed(direction == 0 ? "blur_x" : "blur_y", [&] {
-      method == BlurMethod::Fast ? blur_fast(direction, radius, sigma, ctx.empty_vao)
-                                 : blur(direction, radius, sigma, ctx.empty_vao);
-    });
+  if (method == BlurMethod::Fast) {
+    for (int direction : {0, 1})
+      ctx.timed(direction == 0 ? "blur_x" : "blur_y", [&] { blur_fast(direction, radius, sigma, ctx.empty_vao); });
+  } else {
+    blur(radius, sigma, ctx.empty_vao,
+         [&](int pass, const std::function<void()>& draw) { ctx.timed(pass == 0 ? "blur_x" : "blur_y", draw); });
+  }
   ctx.stats.blur_passes += 2;
 }
 

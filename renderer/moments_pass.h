@@ -23,6 +23,7 @@
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <glm/glm.hpp>
 #include <map>
 #include <string>
@@ -130,10 +131,13 @@ class MomentsPass final : public ShadowPass {
     negative_exponent_ = negative;
   }
   float warp_exponent() const { return warp_exponent_; }
-  // 2. One blur direction (0: X, A -> B; 1: Y, B -> A) with the taught shader ("lab/blur.glsl").
-  // Needs ensure_targets(..., blur = true). Four moments (EVSM): two draws, the first pair and then the
-  // second (the source swizzled so that .rg reads B and A, the target written through B and A only).
-  void blur(int direction, int radius, float sigma, GLuint empty_vao);
+  // 2. The blur with the taught shader ("lab/blur.glsl"): X (A -> B) then Y (B -> A), run by lab 5's GL
+  // solution (run_blur_passes, renderer/blur_passes.h). Needs ensure_targets(..., blur = true). Four
+  // moments (EVSM): two draws per pass, the first pair and then the second (the source swizzled so that
+  // .rg reads B and A, the target written through B and A only). `around` (optional) runs each pass's
+  // draw, e.g. timed: around(pass, draw).
+  using PassWrapper = std::function<void(int pass, const std::function<void()>& draw)>;
+  void blur(int radius, float sigma, GLuint empty_vao, const PassWrapper& around = {});
   // The same direction with the fast blur: the same output within float rounding. Call it for 0 then
   // 1: at small radii direction 0 does both (fused) and direction 1 swaps A and B.
   void blur_fast(int direction, int radius, float sigma, GLuint empty_vao);

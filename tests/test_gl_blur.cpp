@@ -8,8 +8,10 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "app/bench_figures.h"
+#include "renderer/blur_passes.h"
 #include "renderer/gl_objects.h"
 #include "renderer/moments_pass.h"
 #include "renderer/renderer.h"
@@ -157,8 +159,7 @@ TEST_F(BlurTest, FastBlurPathsMatchOnStepsAtTheBorders) {
       const float sigma = 0.5f * static_cast<float>(radius);
       const std::vector<double> cpu = cpu_gaussian_blur(raw, n, radius, sigma);
       upload();
-      m.blur(0, radius, sigma, vao.id());
-      m.blur(1, radius, sigma, vao.id());
+      m.blur(radius, sigma, vao.id());  // X then Y
       const std::vector<float> taught = m.read_moments();
       for (auto path : {MomentsPass::FastPath::Compute, MomentsPass::FastPath::Fragment}) {
         m.set_fast_path(path);
@@ -221,8 +222,7 @@ TEST_F(BlurTest, FourMomentsAreBlurredPairByPair) {
     glBindTexture(GL_TEXTURE_2D, m.texture());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, rgba.data());
-    m.blur(0, radius, sigma, vao.id());
-    m.blur(1, radius, sigma, vao.id());
+    m.blur(radius, sigma, vao.id());  // X then Y
     const std::vector<float> out = read_pixels(m.framebuffer(), GL_COLOR_ATTACHMENT0, n, n, GL_RGBA, 4);
     std::vector<float> got[2] = {std::vector<float>(out.size() / 2), std::vector<float>(out.size() / 2)};
     for (std::size_t i = 0; i < out.size() / 4; ++i)
@@ -311,6 +311,63 @@ TEST_F(BlurTest, BenchmarkReturnsEveryMethodAndRadiusWithinBounds) {
       EXPECT_EQ(t.max_abs_diff_vs_separable, 0.0);
     }
   }
+}
+
+// Lab 5's GL solution is the renderer's code (renderer/blur_passes.cpp): the ping-pong target it makes
+// and the state each of its two passes draws with, read back as the lab's host reads them.
+TEST_F(BlurTest, BlurPassesSolutionTargetAndPassState) {
+  constexpr int n = 24;
+  const BlurTarget target = create_blur_target(n, GL_RG32F);
+  GLint format = 0, min_filter = 0, mag_filter = 0, wrap_s = 0, wrap_t = 0;
+  glBindTexture(GL_TEXTURE_2D, target.texture);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &min_filter);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &mag_filter);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &wrap_s);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, &wrap_t);
+  EXPECT_EQ(format, GL_RG32F);
+  EXPECT_EQ(min_filter, GL_LINEAR);
+  EXPECT_EQ(mag_filter, GL_LINEAR);
+  EXPECT_EQ(wrap_s, GL_CLAMP_TO_EDGE);
+  EXPECT_EQ(wrap_t, GL_CLAMP_TO_EDGE);
+  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  MomentsPass m;
+  m.ensure_targets(n, "RG32F", false);
+  struct Seen {
+    GLint framebuffer, texture, depth_test, viewport[4];
+  };
+  std::vector<Seen> seen;
+  BlurJob job{m.texture(), m.framebuffer(), n, target, 0, 0, {}};
+  job.draw = [&](int) {
+    Seen s{};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &s.framebuffer);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &s.texture);
+    s.depth_test = glIsEnabled(GL_DEPTH_TEST);
+    glGetIntegerv(GL_VIEWPORT, s.viewport);
+    seen.push_back(s);
+  };
+  glEnable(GL_DEPTH_TEST);
+  glViewport(0, 0, 640, 480);
+  run_blur_passes(job);
+  while (glGetError() != GL_NO_ERROR) {  // glGetUniformLocation on program 0
+  }
+  ASSERT_EQ(seen.size(), 2u) << "two passes";
+  EXPECT_EQ(seen[0].framebuffer, static_cast<GLint>(target.framebuffer)) << "X draws into the target";
+  EXPECT_EQ(seen[0].texture, static_cast<GLint>(m.texture())) << "X reads the moments";
+  EXPECT_EQ(seen[1].framebuffer, static_cast<GLint>(m.framebuffer())) << "Y draws into the moments";
+  EXPECT_EQ(seen[1].texture, static_cast<GLint>(target.texture)) << "Y reads the target";
+  for (const Seen& s : seen) {
+    EXPECT_EQ(s.depth_test, GL_FALSE);
+    EXPECT_EQ(s.viewport[2], n);
+    EXPECT_EQ(s.viewport[3], n);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDeleteFramebuffers(1, &target.framebuffer);
+  glDeleteTextures(1, &target.texture);
 }
 
 }  // namespace
