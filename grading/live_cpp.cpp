@@ -47,7 +47,7 @@ void LiveCppExercise::poll(const Lab& lab, Impl impl) {
     impl_ = impl;
   }
   if (impl != Impl::Exercise || building_) return;
-  if (!lab.gl_exercise_files.empty()) {  // (no lab has both kinds yet; a CPU build's hooks would drop the GL code)
+  if (!lab.gl_exercise_files.empty() && live_gl_exercise_supported(lab.gl_exercise_files.front())) {  // (no lab has both kinds yet; a CPU build's hooks would drop the GL code)
     poll_gl(lab, impl);
     if (building_) return;
   }

@@ -51,6 +51,10 @@ std::string read_log(const fs::path& log, const fs::path& dir) {
 
 }  // namespace
 
+bool live_gl_exercise_supported(const std::string& file) {
+  return fs::path(file).filename() == "gl_shadow_target.cpp";
+}
+
 ShadowTargetCode build_live_gl_exercise(const fs::path& dir, const std::string& file, const std::string& text) {
   // The student's text at its place in the project, inside `dir`: its includes of the lab's headers are
   // found in the data folder (-iquote), and the messages name labs/NN_lab/gl_*.cpp.

@@ -13,6 +13,10 @@ namespace shadowlab {
 // empty folder `dir` with the exercises' compiler and flags into a shared library, loads it for good and
 // returns its two functions. Throws with the compiler's words (file:line:col) when it does not build, or
 // the loader's when it cannot be loaded. Linux only (platform::load_library_symbol).
+// Whether the window runs this GL exercise file live: lab 0's gl_shadow_target.cpp. Labs 3, 5 and 9's
+// are graded by Check from the file on disk, but the window draws with the renderer's own functions.
+bool live_gl_exercise_supported(const std::string& file);
+
 ShadowTargetCode build_live_gl_exercise(const std::filesystem::path& dir, const std::string& file,
                                         const std::string& text);
 
