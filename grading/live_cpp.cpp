@@ -154,7 +154,7 @@ void LiveCppExercise::start_gl_build(const Lab& lab, Impl impl, const std::strin
     std::string error;
     try {
       Features features = lab.hooks(impl);
-      features.shadow_target = build_live_gl_exercise(dir, lab.gl_exercise_files.front(), text);
+      features.gl_host = build_live_gl_exercise(dir, lab.gl_exercise_files.front(), text, features.gl_host);
       hooks = std::move(features);
     } catch (const std::exception& e) {
       error = e.what();

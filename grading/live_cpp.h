@@ -46,7 +46,7 @@ class LiveCppExercise {
 
  private:
   void start_build(const Lab& lab, Impl impl, std::size_t slot, const std::string& text);
-  // Lab 0's GL exercise (Lab::gl_exercise_files): on the student's machine its file is built into a
+  // A lab's GL exercise (Lab::gl_exercise_files: labs 0, 3, 5, 9): on the student's machine its file is built into a
   // shared library loaded into the window, whose renderer calls its functions (grading/live_gl.h) from
   // the next frame: from the first poll on, since the program's own are the solution's.
   void poll_gl(const Lab& lab, Impl impl);
@@ -63,7 +63,7 @@ class LiveCppExercise {
   std::optional<std::pair<std::string, Features>> last_;
   std::string tried_text_;  // the text last tried, built or not (not tried again until it changes)
   std::string failed_text_;  // a text whose hooks failed while drawing (not tried again until it changes)
-  // The same for the GL exercise's file (its built code is in the hooks' Features::shadow_target).
+  // The same for the GL exercise's file (its built code is in the hooks' Features::gl_host).
   std::string gl_built_text_, gl_tried_text_;
   std::optional<std::pair<std::string, Features>> gl_last_;
   std::filesystem::path folder_;  // private, made on first use: one subfolder per build

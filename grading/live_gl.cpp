@@ -1,12 +1,13 @@
-// Lab 0's GL exercise in the window (grading/live_cpp.h): the student's gl_shadow_target.cpp built into a
-// shared library and loaded into the window's process, whose renderer then calls its two functions
-// (renderer/shadow_target.h, ShadowTargetCode). On the student's own machine only: grading runs the same
-// file in the sandbox instead (labs/00_basic_shadow_map/lab.cpp).
+// The labs' GL exercises in the window (grading/live_cpp.h): the student's gl_*.cpp built into a shared
+// library and loaded into the window's process, whose renderer then calls its functions
+// (renderer/gl_host_code.h). On the student's own machine only: grading runs the same file in the
+// sandbox instead (the labs' checks, grading/gl_exercise_check.h).
 #include "grading/live_gl.h"
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "core/untrusted.h"
 #include "grading/cpp_exercise.h"
@@ -19,17 +20,63 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kEntry = "shadowlab_live_shadow_target_code";
+constexpr const char* kEntry = "shadowlab_live_gl_code";
 
-// Built with the student's file: hands out the two functions it defines (linked with -Bsymbolic, so the
-// library's own, never the window's).
-constexpr const char* kShim =
-    "#include \"renderer/shadow_target.h\"\n"
-    "extern \"C\" __attribute__((visibility(\"default\"))) void shadowlab_live_shadow_target_code(\n"
-    "    shadowlab::ShadowTargetCode* out) {\n"
-    "  out->create = &shadowlab::create_shadow_target;\n"
-    "  out->begin = &shadowlab::begin_shadow_pass;\n"
-    "}\n";
+// What each GL exercise file defines, and where the window's renderer takes it (GlHostCode's fields).
+struct LiveFile {
+  const char* name;     // the file's name in its lab folder
+  const char* header;   // the renderer's header that declares its functions
+  std::vector<const char*> functions;  // in the order the library hands them out
+  void (*take)(GlHostCode& code, void* const* functions);
+};
+
+template <typename F>
+F as(void* p) {
+  return reinterpret_cast<F>(p);
+}
+
+const std::vector<LiveFile>& live_files() {
+  static const std::vector<LiveFile> files = {
+      {"gl_shadow_target.cpp", "renderer/shadow_target.h", {"create_shadow_target", "begin_shadow_pass"},
+       [](GlHostCode& c, void* const* f) {
+         c.create_shadow_target = as<decltype(c.create_shadow_target)>(f[0]);
+         c.begin_shadow_pass = as<decltype(c.begin_shadow_pass)>(f[1]);
+       }},
+      {"gl_moments_target.cpp", "renderer/moments_target.h", {"create_moments_target", "begin_moments_pass"},
+       [](GlHostCode& c, void* const* f) {
+         c.create_moments_target = as<decltype(c.create_moments_target)>(f[0]);
+         c.begin_moments_pass = as<decltype(c.begin_moments_pass)>(f[1]);
+       }},
+      {"gl_blur_passes.cpp", "renderer/blur_passes.h", {"create_blur_target", "run_blur_passes"},
+       [](GlHostCode& c, void* const* f) {
+         c.create_blur_target = as<decltype(c.create_blur_target)>(f[0]);
+         c.run_blur_passes = as<decltype(c.run_blur_passes)>(f[1]);
+       }},
+      {"gl_volume_stencil.cpp", "renderer/volume_stencil.h", {"stencil_pass", "begin_additive_lit_pass"},
+       [](GlHostCode& c, void* const* f) {
+         c.stencil_pass = as<decltype(c.stencil_pass)>(f[0]);
+         c.begin_additive_lit_pass = as<decltype(c.begin_additive_lit_pass)>(f[1]);
+       }},
+  };
+  return files;
+}
+
+const LiveFile* live_file(const std::string& file) {
+  const std::string name = fs::path(file).filename().string();
+  for (const LiveFile& f : live_files())
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+// Built with the student's file: hands out the functions it defines (linked with -Bsymbolic, so the
+// library's own, never the window's), and nothing else of ours (-z defs: a function left out is named).
+std::string shim(const LiveFile& f) {
+  std::string text = std::string("#include \"") + f.header + "\"\nextern \"C\" __attribute__((visibility(\"default\"))) void " +
+                     kEntry + "(void** out) {\n";
+  for (std::size_t i = 0; i < f.functions.size(); ++i)
+    text += "  out[" + std::to_string(i) + "] = reinterpret_cast<void*>(&shadowlab::" + f.functions[i] + ");\n";
+  return text + "}\n";
+}
 
 void write_file(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
@@ -51,19 +98,19 @@ std::string read_log(const fs::path& log, const fs::path& dir) {
 
 }  // namespace
 
-bool live_gl_exercise_supported(const std::string& file) {
-  return fs::path(file).filename() == "gl_shadow_target.cpp";
-}
+bool live_gl_exercise_supported(const std::string& file) { return live_file(file) != nullptr; }
 
-ShadowTargetCode build_live_gl_exercise(const fs::path& dir, const std::string& file, const std::string& text) {
+GlHostCode build_live_gl_exercise(const fs::path& dir, const std::string& file, const std::string& text, GlHostCode code) {
+  const LiveFile* live = live_file(file);
+  if (!live) throw std::runtime_error(file + ": the window runs no such GL exercise");
   // The student's text at its place in the project, inside `dir`: its includes of the lab's headers are
   // found in the data folder (-iquote), and the messages name labs/NN_lab/gl_*.cpp.
   write_file(dir / file, text);
-  write_file(dir / "live_shim.cpp", kShim);
+  write_file(dir / "live_shim.cpp", shim(*live));
   const fs::path library = dir / "libexercise.so";
   std::vector<std::string> argv = exercise_compiler_command();
   for (const char* a : {"-fno-diagnostics-color", "-fmax-errors=10", "-fPIC", "-shared", "-Wl,-Bsymbolic",
-                               "-Wl,-z,defs", "-iquote"})
+                        "-Wl,-z,defs", "-iquote"})
     argv.push_back(a);
   argv.push_back(data_dir().string());
   for (const fs::path& f : {dir / file, dir / "live_shim.cpp", fs::path("-o"), library}) argv.push_back(f.string());
@@ -80,8 +127,9 @@ ShadowTargetCode build_live_gl_exercise(const fs::path& dir, const std::string& 
   std::string error;
   void* entry = platform::load_library_symbol(library, kEntry, error);
   if (!entry) throw std::runtime_error(file + ": its library cannot be loaded: " + error);
-  ShadowTargetCode code;
-  reinterpret_cast<void (*)(ShadowTargetCode*)>(entry)(&code);
+  std::vector<void*> functions(live->functions.size(), nullptr);
+  reinterpret_cast<void (*)(void**)>(entry)(functions.data());
+  live->take(code, functions.data());
   return code;
 }
 

@@ -1,6 +1,5 @@
 #include "renderer/depth_map_pass.h"
 
-#include <cstdio>
 #include <stdexcept>
 
 #include "renderer/billboards.h"
@@ -43,8 +42,8 @@ void DepthMapPass::for_each_program(const std::function<void(ReloadableProgram&)
   mask_.for_each_program(f);
 }
 
-void DepthMapPass::set_target_code(const ShadowTargetCode& code) {
-  if (code == code_) return;
+void DepthMapPass::set_host_code(const GlHostCode& code) {
+  if (code.create_shadow_target == code_.create_shadow_target && code.begin_shadow_pass == code_.begin_shadow_pass) return;
   code_ = code;
   size_ = 0;  // made again, by the new code, before the next map
 }
@@ -55,17 +54,13 @@ bool DepthMapPass::ensure_targets(const ParamSet& params) {
   if (size == size_ && format == format_) return false;
   // The course's depth framebuffer, made by lab 0's GL solution (renderer/shadow_target.h) or, in the
   // window, by the student's own file.
-  const ShadowTarget target = code_.create(size, depth_internal_format(format));
+  const ShadowTarget target = code_.create_shadow_target(size, depth_internal_format(format));
   // Adopted only when they are what they say (a student's may hand back 0 or a name it never made).
   depth_texture_ = glIsTexture(target.depth_texture) ? GlTexture::adopt(target.depth_texture) : GlTexture();
   fbo_ = glIsFramebuffer(target.framebuffer) ? GlFramebuffer::adopt(target.framebuffer) : GlFramebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  if (code_.own()) {
-    check_framebuffer("shadow map");
-  } else if (const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER); status != GL_FRAMEBUFFER_COMPLETE) {
-    std::fprintf(stderr, "shadowlab: the shadow map's framebuffer your create_shadow_target made is incomplete "
-                 "(glCheckFramebufferStatus 0x%x): the depth pass draws nothing into the map\n", status);
-  }
+  if (code_.own_shadow_target()) check_framebuffer("shadow map");
+  else say_incomplete_target("shadow map", "create_shadow_target");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   size_ = size;
   format_ = format;
@@ -84,7 +79,7 @@ void DepthMapPass::draw_map(PassContext& ctx) {
 void DepthMapPass::draw_depth(PassContext& ctx) {
   if (depth_u_.generation != depth_.generation())
     depth_u_ = {depth_.generation(), Uniform(depth_.id(), "u_light_view_proj")};
-  code_.begin({fbo_.id(), depth_texture_.id(), size_});
+  code_.begin_shadow_pass({fbo_.id(), depth_texture_.id(), size_});
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glUseProgram(depth_.id());

@@ -22,7 +22,7 @@ class DepthMapPass final : public ShadowPass {
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet& params) override;
-  void set_target_code(const ShadowTargetCode& code) override;
+  void set_host_code(const GlHostCode& code) override;
   void draw_map(PassContext& ctx) override;
   void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
@@ -47,7 +47,7 @@ class DepthMapPass final : public ShadowPass {
   const char* pass_name_;
   int size_ = 0;
   std::string format_;
-  ShadowTargetCode code_;  // who makes and begins the target (the renderer, or a student's loaded file)
+  GlHostCode code_;  // who makes and begins the target (the renderer, or a student's loaded file)
   GlTexture depth_texture_;
   GlFramebuffer fbo_;
   // GL_COMPARE_REF_TO_TEXTURE with linear filtering, made when a shadow test reads a sampler2DShadow.

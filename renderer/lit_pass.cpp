@@ -327,7 +327,7 @@ void LitPass::bind_material(const ReloadableProgram& program, const PassContext&
   glUniform1f(at[k], ctx.gpu_scene.bounds().min.y);
 }
 
-void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) {
+void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) const {
   const GLenum window[] = {GL_BACK};
   const GLenum all[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
   glEnable(GL_DEPTH_TEST);
@@ -349,7 +349,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) 
       // Colour and visibility only; positions and normals stay as the ambient pass wrote them.
       const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_NONE, GL_NONE};
       glDrawBuffers(gbuffer ? 4 : 1, default_framebuffer ? window : buffers);
-      begin_additive_lit_pass();  // stencil == 0, depth equal, added (lab 9's GL exercise)
+      code_.begin_additive_lit_pass();  // stencil == 0, depth equal, added (lab 9's GL exercise)
       break;
     }
     case LitVariant::RemapView:

@@ -50,6 +50,8 @@ class LitPass {
   // The constants the next draws compile in (empty, or with specialise off: the generic programs).
   void use_constants(const LitConstants& constants) { constants_ = constants; }
   void set_specialise(bool on) { specialise_ = on; }
+  // Whose begin_additive_lit_pass sets the shadow volumes' additive pass (Features::gl_host).
+  void set_host_code(const GlHostCode& code) { code_ = code; }
   // Draws the scene with a variant's program, binding what the frame's lit inputs name
   // (ctx.lit_inputs: the shadow pass's map and the shadow test's uniforms).
   void draw(PassContext& ctx, LitVariant variant);
@@ -68,6 +70,7 @@ class LitPass {
   void present(GLuint framebuffer, int width, int height) const;
 
  private:
+  GlHostCode code_;
   struct Program {
     ReloadableProgram program;
     LitUniforms u;
@@ -82,7 +85,7 @@ class LitPass {
   };
   using Key = std::pair<LitVariant, bool>;  // variant, G-buffer
   Program& program_for(Slot& slot);
-  static void begin(LitVariant variant, bool gbuffer, bool default_framebuffer);
+  void begin(LitVariant variant, bool gbuffer, bool default_framebuffer) const;
   static void end();
   void set_uniforms(const PassContext& ctx, const Program& p) const;
 

@@ -203,7 +203,7 @@ void MomentsPass::blur(int radius, float sigma, GLuint empty_vao, const PassWrap
     };
     around ? around(pass, draw) : draw();
   };
-  run_blur_passes(job);
+  code_.run_blur_passes(job);
   glEnable(GL_DEPTH_TEST);
 }
 

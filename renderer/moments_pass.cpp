@@ -68,17 +68,26 @@ bool MomentsPass::set_includes(const IncludeMap& includes, const IncludeRules& r
   return mask_.follow(moments_.desc()) && ok;
 }
 
+void MomentsPass::set_host_code(const GlHostCode& code) {
+  if (code.create_moments_target == code_.create_moments_target && code.begin_moments_pass == code_.begin_moments_pass &&
+      code.create_blur_target == code_.create_blur_target && code.run_blur_passes == code_.run_blur_passes)
+    return;
+  code_ = code;
+  size_ = 0;  // made again, by the new code, before the next map
+}
+
 bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur) {
   bool changed = false;
   const bool four = warp_exponent_ != 0.0f;
   if (size != size_ || format != format_ || four != four_moments_) {
     // The course's VSM target, made by lab 3's GL solution (renderer/moments_target.h).
-    const MomentsTarget target = create_moments_target(size, moments_format(format, four));
+    const MomentsTarget target = code_.create_moments_target(size, moments_format(format, four));
     moments_texture_ = GlTexture::adopt(target.moments_texture);
     depth_ = GlRenderbuffer::adopt(target.depth_renderbuffer);
     moments_fbo_ = GlFramebuffer::adopt(target.framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, moments_fbo_.id());
-    check_framebuffer("moments");
+    if (code_.own_moments_target()) check_framebuffer("moments");
+    else say_incomplete_target("moments", "create_moments_target");
     blur_texture_ = {};  // reallocated below at the new size if needed
     blur_fbo_ = {};
     size_ = size;
@@ -88,11 +97,12 @@ bool MomentsPass::ensure_targets(int size, const std::string& format, bool blur)
   }
   if (blur && !blur_texture_) {
     // Lab 5's GL solution makes it (renderer/blur_passes.h): the moments' format and size, linear, clamped.
-    const BlurTarget target = create_blur_target(size_, moments_format(format_, four_moments_));
+    const BlurTarget target = code_.create_blur_target(size_, moments_format(format_, four_moments_));
     blur_texture_ = GlTexture::adopt(target.texture);
     blur_fbo_ = GlFramebuffer::adopt(target.framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, blur_fbo_.id());
-    check_framebuffer("blur");
+    if (code_.own_moments_target()) check_framebuffer("blur");
+    else say_incomplete_target("blur", "create_blur_target");
     changed = true;
   } else if (!blur && blur_texture_) {
     blur_texture_ = {};
@@ -110,7 +120,7 @@ void MomentsPass::draw_moments(const GpuScene& scene, const glm::mat4& light_vie
                   Uniform(moments_.id(), "u_warp_exponent"), Uniform(moments_.id(), "u_warp_negative_exponent")};
   // Bound, the whole map in the viewport, cleared to (1, 1, 0, 0) and depth 1 (lab 3's GL solution); EVSM's
   // warped moments clear the colour once more to their far plane's.
-  begin_moments_pass({moments_fbo_.id(), moments_texture_.id(), depth_.id(), size_});
+  code_.begin_moments_pass({moments_fbo_.id(), moments_texture_.id(), depth_.id(), size_});
   if (warp_exponent_ != 0.0f) {
     const std::array<float, 4> clear = moments_clear(warp_exponent_, negative_exponent_);
     glClearBufferfv(GL_COLOR, 0, clear.data());

@@ -100,6 +100,7 @@ class MomentsPass final : public ShadowPass {
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   // vsm.format, and the ping-pong texture while vsm.blur_radius > 0.
   bool ensure_targets(const ParamSet& params) override;
+  void set_host_code(const GlHostCode& code) override;
   void frame_inputs(PassContext& ctx, std::vector<float>& out) override;
   // The moments, then the blur (vsm.blur_radius, vsm.blur_sigma, vsm.blur_method); with RG16F the
   // share of texels whose variance cancelled (FrameStats::moments_negative_variance).
@@ -202,6 +203,7 @@ class MomentsPass final : public ShadowPass {
   void blur_map(PassContext& ctx, int radius, float sigma, BlurMethod method);
 
   int size_ = 0;
+  GlHostCode code_;  // who makes the targets, begins the pass and runs the blur (the renderer, or a student's file)
   float warp_exponent_ = 0.0f, negative_exponent_ = 0.0f;
   std::string format_;
   bool four_moments_ = false;  // RGBA targets (EVSM's two warps)

@@ -205,7 +205,8 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     return false;
   }
   failed_build_error_.clear();
-  pass.set_target_code(features.shadow_target);
+  pass.set_host_code(features.gl_host);
+  lit_->set_host_code(features.gl_host);
   billboards_ = std::move(billboards);
   ssao_ = std::move(ssao);
   lights_ = std::move(lights);

@@ -29,7 +29,7 @@
 #include "oracle/oracle.h"
 #include "core/params.h"
 #include "renderer/pass_timer.h"
-#include "renderer/shadow_target.h"
+#include "renderer/gl_host_code.h"
 #include "core/placement.h"
 #include "core/scene.h"
 #include "core/shadowed_light_spec.h"
@@ -114,9 +114,9 @@ struct Features {
   // Screen-space ambient occlusion (renderer/ssao_pass.h) after the lit pass: "lab/ssao.glsl" (default
   // shaders/ssao/ssao_core.glsl) and the ssao.* parameters. Off: no SSAO pass exists at all.
   bool ssao = false;
-  // The GL host code of lab 0's exercise (renderer/shadow_target.h): the renderer's own functions, or, in
-  // the window on the student's machine, those of their edited gl_shadow_target.cpp (grading/live_cpp.h).
-  ShadowTargetCode shadow_target;
+  // The GL host code of the labs' OpenGL exercises (renderer/gl_host_code.h): the renderer's own functions,
+  // or, in the window on the student's machine, those of their edited gl_*.cpp (grading/live_cpp.h).
+  GlHostCode gl_host;
 };
 
 // The define Features::own_shadow_coords compiles the lit pass's and the probes' programs with.

@@ -35,7 +35,7 @@
 #include "renderer/gpu_mesh.h"
 #include "renderer/pass_timer.h"
 #include "renderer/shader.h"
-#include "renderer/shadow_target.h"
+#include "renderer/gl_host_code.h"
 #include "renderer/shadow_test.h"
 
 namespace shadowlab {
@@ -204,9 +204,9 @@ class ShadowPass {
 
   // 1. Targets for these parameters; true when they were (re)allocated and the map must be drawn again.
   virtual bool ensure_targets(const ParamSet& params) = 0;
-  // The GL host code a lab's exercise may replace (Features::shadow_target: lab 0's depth framebuffer);
-  // a pass that uses it makes its targets again with new code. Others ignore it.
-  virtual void set_target_code(const ShadowTargetCode&) {}
+  // The GL host code a lab's exercise may replace (Features::gl_host, renderer/gl_host_code.h); a pass
+  // that uses it makes its targets again with new code. Others ignore it.
+  virtual void set_host_code(const GlHostCode&) {}
   // What the map depends on besides the parameters, the light, the scene, the targets and the programs,
   // computed every frame before the map is (perhaps) drawn: a change redraws it. Cascades: their
   // matrices, which follow the camera. Filled in place (`out` keeps its capacity from frame to frame).

@@ -23,15 +23,4 @@ ShadowTarget create_shadow_target(int size, GLenum depth_format = GL_DEPTH_COMPO
 // Binds the target, sets the viewport to the whole map and clears its depth to 1 (the far plane).
 void begin_shadow_pass(const ShadowTarget& target);
 
-// The two functions DepthMapPass calls: the renderer's own (these defaults), or those of a student's
-// gl_shadow_target.cpp built into a shared library and loaded into the window (grading/live_cpp.h, on
-// the student's own machine). With a student's, an incomplete framebuffer is said on stderr instead of
-// stopping the frame: the picture then shows what the mistake does.
-struct ShadowTargetCode {
-  ShadowTarget (*create)(int size, GLenum depth_format) = &create_shadow_target;
-  void (*begin)(const ShadowTarget& target) = &begin_shadow_pass;
-  bool own() const { return create == &create_shadow_target && begin == &begin_shadow_pass; }
-  bool operator==(const ShadowTargetCode&) const = default;
-};
-
 }  // namespace shadowlab

@@ -71,6 +71,7 @@ class ShadowVolumePass final : public ShadowPass {
   bool set_includes(const IncludeMap& includes, const IncludeRules& rules = {}) override;
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) override;
   bool ensure_targets(const ParamSet&) override { return false; }
+  void set_host_code(const GlHostCode& code) override { code_ = code; }
   // The volumes into the stencil buffer (volume.method: z-fail or z-pass), after the ambient pass
   // (shape().lit_first) laid the depth down.
   void draw_view_passes(PassContext& ctx, const ViewTarget& view) override;
@@ -96,6 +97,7 @@ class ShadowVolumePass final : public ShadowPass {
   void draw_wireframe(const glm::mat4& view_proj, const glm::vec4& light, bool caps, long& draws);
 
  private:
+  GlHostCode code_;  // whose stencil_pass sets the counting pass's state (the renderer's, or a student's file)
   void draw_volumes(const glm::mat4& view_proj, const glm::vec4& light, bool caps, const glm::vec4& color, long& draws);
   void use_program(const glm::mat4& view_proj, const glm::vec4& light, bool caps, const glm::vec4& color);
   void draw_adjacency(long& draws);
