@@ -350,7 +350,7 @@ void run_loop(WindowApp& app, const WindowOptions& options, InputScript& script)
     try {
       render_counted_view(app, cost, width, height, glfwGetTime() - frame_start);
     } catch (const ExerciseError& e) {  // the edited C++ exercise's program crashed or timed out on a call
-      app.apply_hooks();  // the compiled copy again
+      app.apply_hooks(false);  // the compiled copy again (not the failed build once more)
       app.live_cpp.failed(e.what());
     }
     ImGui::Render();

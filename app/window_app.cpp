@@ -72,9 +72,15 @@ const Preset* WindowApp::preset_shown() const {
   return &lab->presets[*shown_preset];
 }
 
-void WindowApp::apply_hooks() {
+void WindowApp::apply_hooks(bool poll_live) {
   if (!renderer->set_features(lab->hooks(impl))) status = "shader error: the previous program keeps running";
   live_cpp.reset();  // the renderer runs the compiled copy again: the next poll hands out an edited file's hooks
+  // At once, not at the next twice-a-second poll: a lab's GL exercise is built before the next frame (its
+  // first build waits), so that no frame draws the solution's host code for the student's.
+  if (poll_live) {
+    live_cpp.poll(*lab, impl);
+    if (std::optional<Features> hooks = live_cpp.take_hooks()) use_live_hooks(*hooks);
+  }
   rebuild_split();
 }
 

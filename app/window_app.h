@@ -131,7 +131,9 @@ struct WindowApp {
   void show_solution_beside();
   // The chosen preset, while every value it set still holds.
   const Preset* preset_shown() const;
-  void apply_hooks();
+  // The lab's hooks for the implementation shown; with `poll_live`, then at once those of its edited C++
+  // or GL exercise file where they are ready (a GL exercise's first build waits for them).
+  void apply_hooks(bool poll_live = true);
   // Hooks a live C++ build made, set on the renderer (the split view's exercise side follows).
   void use_live_hooks(const Features& hooks);
   void rebuild_split();

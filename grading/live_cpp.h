@@ -50,7 +50,7 @@ class LiveCppExercise {
   // shared library loaded into the window, whose renderer calls its functions (grading/live_gl.h) from
   // the next frame: from the first poll on, since the program's own are the solution's.
   void poll_gl(const Lab& lab, Impl impl);
-  void start_gl_build(const Lab& lab, Impl impl, const std::string& text);
+  void start_gl_build(const Lab& lab, Impl impl, const std::string& text, bool wait);
   // Runs `job` on the worker (started on first use).
   void run_on_worker(std::function<void()> job);
   // A build's end, on the worker: its hooks handed out and remembered with `text`, or its error said.
