@@ -67,14 +67,7 @@ void LiveCppExercise::poll(const Lab& lab, Impl impl) {
     const std::string& current = built_text_.empty() ? compiled : built_text_;
     if (text == current || text == tried_text_ || text == failed_text_) continue;
     tried_text_ = text;
-    if (last_ && text == last_->first) {  // built before (the renderer was reset since): no new build
-      const std::lock_guard lock(mutex_);
-      built_text_ = text;
-      ready_ = last_->second;
-      message_.clear();
-      in_use_ = true;
-      return;
-    }
+    if (reuse(last_, text, built_text_)) return;
     if (text == compiled) {  // edited back to the compiled copy: the program's own hooks again
       const std::lock_guard lock(mutex_);
       built_text_.clear();
@@ -91,6 +84,17 @@ void LiveCppExercise::poll(const Lab& lab, Impl impl) {
     start_build(lab, impl, slot, text);
     return;  // one file at a time
   }
+}
+
+bool LiveCppExercise::reuse(const std::optional<std::pair<std::string, Features>>& last, const std::string& text,
+                             std::string& built_text) {
+  if (!last || text != last->first) return false;
+  const std::lock_guard lock(mutex_);
+  built_text = text;
+  ready_ = last->second;
+  message_.clear();
+  in_use_ = true;
+  return true;
 }
 
 void LiveCppExercise::start_build(const Lab& lab, Impl impl, std::size_t slot, const std::string& text) {
@@ -127,14 +131,7 @@ void LiveCppExercise::poll_gl(const Lab& lab, Impl impl) {
   }
   if (text == gl_built_text_ || text == gl_tried_text_ || text == failed_text_) return;
   gl_tried_text_ = text;
-  if (gl_last_ && text == gl_last_->first) {  // built before (the renderer was reset since): no new build
-    const std::lock_guard lock(mutex_);
-    gl_built_text_ = text;
-    ready_ = gl_last_->second;
-    message_.clear();
-    in_use_ = true;
-    return;
-  }
+  if (reuse(gl_last_, text, gl_built_text_)) return;
   if (const std::string& why = platform::grading_unavailable(); !why.empty()) {
     const std::lock_guard lock(mutex_);
     message_ = file + ": the window draws with the program's own (the solution's) functions: building yours "

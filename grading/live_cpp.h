@@ -51,6 +51,9 @@ class LiveCppExercise {
   // the next frame: from the first poll on, since the program's own are the solution's.
   void poll_gl(const Lab& lab, Impl impl);
   void start_gl_build(const Lab& lab, Impl impl, const std::string& text, bool wait);
+  // Hands out `last`'s hooks again when they were built from `text` (the renderer was reset since): no
+  // new build. `built_text` is the slot's record of what the hooks in use were built from.
+  bool reuse(const std::optional<std::pair<std::string, Features>>& last, const std::string& text, std::string& built_text);
   // Runs `job` on the worker (started on first use).
   void run_on_worker(std::function<void()> job);
   // A build's end, on the worker: its hooks handed out and remembered with `text`, or its error said.
