@@ -439,7 +439,7 @@ void start_session(WindowApp& app, const WindowOptions& options, const Lab& lab,
   } else {
     app.settings.give_one_off_camera(v.camera);
   }
-  app.open_lab(lab);
+  app.open_lab(lab, true);  // the first frame draws the student's GL exercise (built before it)
   const ParamSet saved = app.params;
   apply_preset_option(app.params, lab, options.preset);
   for (const auto& a : options.assignments) apply_set_option(app.params, a);

@@ -12,7 +12,7 @@
 
 namespace shadowlab {
 
-void WindowApp::open_lab(const Lab& next) {
+void WindowApp::open_lab(const Lab& next, bool wait) {
   if (lab) settings.leave_lab(lab->number, params);
   lab = &next;
   check_result.reset();  // a check still running for the previous lab is dropped when it ends
@@ -23,7 +23,7 @@ void WindowApp::open_lab(const Lab& next) {
   story_step = -1;
   shown_preset.reset();
   if (compare.with == CompareWith::OtherImpl && next.exercise_files.empty()) compare.with = CompareWith::Defaults;
-  apply_hooks();
+  apply_hooks(true, wait);
 }
 
 // Preset i of the lab (its key, its button, a step of the story), and its caption.
@@ -72,13 +72,13 @@ const Preset* WindowApp::preset_shown() const {
   return &lab->presets[*shown_preset];
 }
 
-void WindowApp::apply_hooks(bool poll_live) {
+void WindowApp::apply_hooks(bool poll_live, bool wait) {
   if (!renderer->set_features(lab->hooks(impl))) status = "shader error: the previous program keeps running";
   live_cpp.reset();  // the renderer runs the compiled copy again: the next poll hands out an edited file's hooks
-  // At once, not at the next twice-a-second poll: a lab's GL exercise is built before the next frame (its
-  // first build waits), so that no frame draws the solution's host code for the student's.
+  // At once, not at the next twice-a-second poll; with `wait` a lab's GL exercise is built before the next
+  // frame, so that no frame draws the solution's host code for the student's.
   if (poll_live) {
-    live_cpp.poll(*lab, impl);
+    live_cpp.poll(*lab, impl, wait);
     if (std::optional<Features> hooks = live_cpp.take_hooks()) use_live_hooks(*hooks);
   }
   rebuild_split();

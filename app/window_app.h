@@ -122,7 +122,9 @@ struct WindowApp {
   std::vector<std::pair<std::string, double>> preset_values;  // the values it set, as set
   float panel_right = 0.0f;                  // the panel's right edge last frame: the caption centres right of it
 
-  void open_lab(const Lab& next);
+  // `wait`: a GL exercise's first build is waited for (at start-up; a lab opened by a key builds in the
+  // background: a wait there would split the two digits of a lab's number).
+  void open_lab(const Lab& next, bool wait = false);
   // Preset i of the lab (its key, its button, a step of the story), and its caption.
   void choose_preset(std::size_t i);
   // One step of the lab's story, forward (+1) or back (-1); it stops at either end.
@@ -133,7 +135,7 @@ struct WindowApp {
   const Preset* preset_shown() const;
   // The lab's hooks for the implementation shown; with `poll_live`, then at once those of its edited C++
   // or GL exercise file where they are ready (a GL exercise's first build waits for them).
-  void apply_hooks(bool poll_live = true);
+  void apply_hooks(bool poll_live = true, bool wait = false);
   // Hooks a live C++ build made, set on the renderer (the split view's exercise side follows).
   void use_live_hooks(const Features& hooks);
   void rebuild_split();

@@ -34,7 +34,7 @@ void LiveCppExercise::reset() {
   in_use_ = false;
 }
 
-void LiveCppExercise::poll(const Lab& lab, Impl impl) {
+void LiveCppExercise::poll(const Lab& lab, Impl impl, bool wait) {
   if (&lab != lab_ || impl != impl_) {
     reset();
     const std::lock_guard lock(mutex_);
@@ -48,7 +48,7 @@ void LiveCppExercise::poll(const Lab& lab, Impl impl) {
   }
   if (impl != Impl::Exercise || building_) return;
   if (!lab.gl_exercise_files.empty() && live_gl_exercise_supported(lab.gl_exercise_files.front())) {  // (no lab has both kinds yet; a CPU build's hooks would drop the GL code)
-    poll_gl(lab, impl);
+    poll_gl(lab, impl, wait);
     if (building_) return;
   }
   const std::vector<std::string>& files = lab.exercise_files;
@@ -119,7 +119,7 @@ void LiveCppExercise::start_build(const Lab& lab, Impl impl, std::size_t slot, c
   });
 }
 
-void LiveCppExercise::poll_gl(const Lab& lab, Impl impl) {
+void LiveCppExercise::poll_gl(const Lab& lab, Impl impl, bool wait) {
   const std::string& file = lab.gl_exercise_files.front();
   std::string text;
   try {
@@ -139,9 +139,9 @@ void LiveCppExercise::poll_gl(const Lab& lab, Impl impl) {
                "` grades your file";
     return;
   }
-  // The first build for this lab waits (0.4 s measured): the window's first frame then draws the student's
-  // file, not the solution's for a moment; a build after a save runs in the background.
-  start_gl_build(lab, impl, text, gl_built_text_.empty());
+  // Asked to, the first build for this lab waits (0.4 s measured): the window's first frame then draws the
+  // student's file, not the solution's for a moment; a build after a save runs in the background.
+  start_gl_build(lab, impl, text, wait && gl_built_text_.empty());
 }
 
 void LiveCppExercise::start_gl_build(const Lab& lab, Impl impl, const std::string& text, bool wait) {

@@ -31,7 +31,9 @@ class LiveCppExercise {
   // Reads the lab's C++ exercise files (the window calls it twice a second); when one differs from what
   // the hooks were last built from (at first: the copy compiled into the program), starts building hooks
   // from it. Nothing for the solution, or for a lab with no C++ exercise.
-  void poll(const Lab& lab, Impl impl);
+  // `wait`: a GL exercise's first build for this lab is made on this thread (0.4 s here), not in the
+  // background.
+  void poll(const Lab& lab, Impl impl, bool wait = false);
   // Hooks built from the edited file since the last call, for the window to set on its renderer.
   std::optional<Features> take_hooks();
   // Forgets what was built (another lab or implementation opened): the next poll starts over.
@@ -49,7 +51,7 @@ class LiveCppExercise {
   // A lab's GL exercise (Lab::gl_exercise_files: labs 0, 3, 5, 9): on the student's machine its file is built into a
   // shared library loaded into the window, whose renderer calls its functions (grading/live_gl.h) from
   // the next frame: from the first poll on, since the program's own are the solution's.
-  void poll_gl(const Lab& lab, Impl impl);
+  void poll_gl(const Lab& lab, Impl impl, bool wait);
   void start_gl_build(const Lab& lab, Impl impl, const std::string& text, bool wait);
   // Hands out `last`'s hooks again when they were built from `text` (the renderer was reset since): no
   // new build. `built_text` is the slot's record of what the hooks in use were built from.
