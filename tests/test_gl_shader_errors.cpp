@@ -367,6 +367,23 @@ TEST(LiveCppExercise, AFifoOrAHugeFileIsRefusedNotRead) {
     EXPECT_NE(live.message().find("exercise.cpp"), std::string::npos) << live.message();
     EXPECT_FALSE(live.take_hooks());
   }
+  // Lab 0's GL exercise, which the window builds into itself: the same refusal, even when asked to wait
+  // for the first build (start-up), and nothing is compiled or loaded.
+  const Lab& gl_lab = *find_lab(0);
+  ASSERT_EQ(gl_lab.gl_exercise_files.size(), 1u);
+  const fs::path gl_file = data / gl_lab.gl_exercise_files[0];
+  fs::create_directories(gl_file.parent_path());
+  ASSERT_EQ(::mkfifo(gl_file.c_str(), 0600), 0);
+  {
+    LiveCppExercise live;
+    const auto start = std::chrono::steady_clock::now();
+    live.poll(gl_lab, Impl::Exercise, true);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_FALSE(live.building());
+    EXPECT_NE(live.message().find("gl_shadow_target.cpp"), std::string::npos) << live.message();
+    EXPECT_NE(live.message().find("not a regular file"), std::string::npos) << live.message();
+    EXPECT_FALSE(live.take_hooks());
+  }
   if (old) ::setenv("SHADOWLAB_DATA_DIR", saved.c_str(), 1); else ::unsetenv("SHADOWLAB_DATA_DIR");
   fs::remove_all(data);
 }
