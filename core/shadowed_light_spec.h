@@ -1,8 +1,9 @@
 // A shadowed light beside the frame's own light (the sun), as a feature asks for it: one entry of
-// Features::lights (renderer/renderer.h). The renderer gives each entry a ShadowedLight of its own
-// (renderer/shadowed_light.h: a perspective depth map, its inputs, its lit uniforms), so a further light is
-// one more entry here and no new member anywhere. Today every entry is a spot (lab 15's flashlight,
-// core/flashlight.h's flashlight_spec()); the frame's own light stays the primary light outside the list.
+// Features::lights (renderer/renderer.h). The renderer holds every shadowed light in one list of
+// ShadowedLight (renderer/shadowed_light.h): entry 0 the frame's own light, placed from the parameters and
+// drawn by the features' technique, then one entry per spec here, each with its own perspective depth map,
+// inputs and lit uniforms; a further light is one more spec and no new member anywhere. Today every spec is
+// a spot (lab 15's flashlight, core/flashlight.h's flashlight_spec()).
 #pragma once
 
 #include <functional>

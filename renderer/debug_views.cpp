@@ -53,7 +53,7 @@ void DebugViews::draw(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
   if (params.get(param::view_light_volume) && ctx.light.type != LightType::Point)
     ctx.timed("light_volume_view", [&] { light_volume(ctx, lit); });
   if (shadow.shape().has_map && params.get(param::view_debug_quad))
-    ctx.timed("debug_quad", [&] { debug_quads(ctx, shadow, lit); });
+    ctx.timed("debug_quad", [&] { debug_quads(ctx, lit); });
 }
 
 void DebugViews::flat_normals(PassContext& ctx, LitPass& lit) {
@@ -172,24 +172,23 @@ void DebugQuadArea::place(int x, int y, int quad_width, int quad_height, const s
   if (labels) labels->push_back({x, y, quad_width, quad_height, light.empty() ? label : light + ": " + label});
 }
 
-void DebugViews::debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit) {
+void DebugViews::debug_quads(PassContext& ctx, LitPass& lit) {
   bind_color_target(lit.framebuffer(), lit.width(), lit.height());  // the quads must not overwrite the G-buffer
   glDisable(GL_DEPTH_TEST);
   // Squares along the bottom right (clear of an overlay on the left), view.debug_quad_size of the frame height.
   const int side =
       std::max(8, static_cast<int>(static_cast<float>(lit.height()) * ctx.params.get(param::view_debug_quad_size)));
   std::vector<DebugQuadLabel>* labels = ctx.annotations ? &ctx.annotations->quads : nullptr;
-  // Beside the other shadowed lights' maps, the frame light's says whose it is too.
-  const bool more_lights = ctx.lights && !ctx.lights->empty();
-  shadow.draw_debug_quads({lit.width(), lit.height(), side, ctx.params.get(param::view_debug_channel), ctx.empty_vao,
-                           more_lights ? "sun" : "", labels});
-  // Each shadowed light's map left of the one before, named after its light.
-  if (more_lights) {
-    int right = lit.width();
-    for (ShadowedLight& light : *ctx.lights) {
-      right -= side + 8;
-      light.pass().draw_debug_quads({right, lit.height(), side, "depth", ctx.empty_vao, light.name(), labels});
-    }
+  // Each light's map, the frame light's at the right (the view.debug_channel of its technique), each further
+  // one's depth left of the one before; beside other lights' maps, each says whose it is.
+  const std::size_t count = ctx.lights ? ctx.lights->size() : 0;
+  int right = lit.width();
+  for (std::size_t i = 0; i < count; ++i) {
+    ShadowedLight& light = (*ctx.lights)[i];
+    const bool frame = i == 0;
+    light.pass().draw_debug_quads({right, lit.height(), side, frame ? ctx.params.get(param::view_debug_channel) : "depth",
+                                   ctx.empty_vao, count > 1 ? light.name() : "", labels});
+    right -= side + 8;
   }
   glEnable(GL_DEPTH_TEST);
   glViewport(0, 0, lit.width(), lit.height());

@@ -37,7 +37,7 @@ class DebugViews {
   void normals(PassContext& ctx, LitPass& lit);
   void volumes_wireframe(PassContext& ctx, ShadowPass& shadow, LitPass& lit);
   void light_volume(PassContext& ctx, LitPass& lit);
-  void debug_quads(PassContext& ctx, ShadowPass& shadow, LitPass& lit);
+  void debug_quads(PassContext& ctx, LitPass& lit);
 
   ReloadableProgram flat_normals_, normals_, lines_;
   struct FlatNormalsUniforms {

@@ -395,13 +395,16 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
   u.texel_angle.set(light.texel_angle(std::max(inputs.map_size, 1)));
-  if (ctx.lights && !ctx.lights->empty()) {  // each uniform set when present: an answer may leave some unused
+  if (!ctx.lights || ctx.lights->empty()) throw std::logic_error("the lit pass draws a frame with no light");
+  const std::vector<ShadowedLight>& lights = *ctx.lights;
+  if (lights.size() > 1) {  // each uniform set when present: an answer may leave some unused
     u.lights.sun_intensity.set(static_cast<float>(params.get(param::sun_intensity)));
-    for (std::size_t i = 0; i < ctx.lights->size(); ++i)
-      (*ctx.lights)[i].bind_lit_inputs(params, u.lights.entry[i], kShadowedLightUnits[i]);
+    for (std::size_t i = 1; i < lights.size(); ++i)
+      lights[i].bind_lit_inputs(params, u.lights.entry[i - 1], kShadowedLightUnits[i - 1]);
     glActiveTexture(GL_TEXTURE0);
   }
-  inputs.bind_map(params, u);
+  // The frame light's map and its technique's uniforms, through its pass (leaves unit 0 active).
+  lights.front().pass().bind_lit_inputs(params, u);
   // The shadow test's own uniforms (only the selected test's: renderer/shadow_test.h).
   if (p.test_bind) p.test_bind(ShadowTestFrame{params, light, inputs.matched_radius, ctx.annotations});
   u.shadow_map.set(0);

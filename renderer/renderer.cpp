@@ -20,19 +20,6 @@ namespace shadowlab {
 // include kInvalidatesShadowMap (a new parameter needs only to declare the bit); the rest is what the
 // pass reads besides parameters: the light, the casters, the targets, the programs and the culling a
 // feature may decide.
-struct Renderer::ShadowMapInputs {
-  std::vector<std::pair<std::string, double>> params;
-  glm::mat4 light_view{1.0f}, light_projection{1.0f};
-  glm::vec3 light_position{0.0f};
-  LightType light_type = LightType::Directional;
-  int cull = 0;
-  glm::vec3 billboard_eye{0.0f};  // the camera, with billboards: a wrong shadow pass may turn them to it
-  long scene = 0, targets = 0;
-  std::vector<int> programs;  // the pass's program generations (a rebuilt shader changes the map)
-  std::vector<float> pass_inputs;  // what else the pass says its map depends on (ShadowPass::frame_inputs)
-  bool operator==(const ShadowMapInputs&) const = default;
-};
-
 namespace {
 // The surfaces' material when a feature gives none: the vertex colour.
 constexpr const char* kMaterialInclude = "lab/material.glsl";
@@ -50,6 +37,7 @@ Renderer::Renderer()
       views_(std::make_unique<DebugViews>()),
       timer_(std::make_unique<PassTimer>()),
       empty_vao_(GlVertexArray::create()) {
+  lights_.push_back(ShadowedLight::frame_light(kFrameLightName));
   // Room for every pass of a frame, so that a still frame allocates nothing: timed_passes first fills
   // when the query ring's results come back, which under load can be many frames after the first.
   constexpr std::size_t kPassesPerFrame = 32;
@@ -121,14 +109,14 @@ void Renderer::upload_scene() {
   local_scene_ = shadowlab::local_scene(scene_, placement_);
   gpu_scene_ = std::make_unique<GpuScene>(local_scene_);
   ++scene_generation_;
-  shadow_->set_scene(local_scene_);
+  for (ShadowedLight& light : lights_) light.pass().set_scene(local_scene_);
   views_->set_scene();
 }
 
 bool Renderer::set_features(const Features& features) {
   const LightType light = features.light ? *features.light : programs_light_;
   const bool ok = build_programs(features, light);
-  shadow_inputs_valid_ = false;
+  frame_light().invalidate();
   stats_.moments_negative_variance = -1.0;
   return ok;
 }
@@ -173,7 +161,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
     fresh = entry.make();
     if (gpu_scene_) fresh->set_scene(local_scene_);
   }
-  ShadowPass& pass = fresh ? *fresh : *shadow_;
+  ShadowPass& pass = fresh ? *fresh : frame_light().pass();
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
   bool ok = lit_->build(includes, features.include_rules, light, variants, static_cast<int>(features.lights.size()),
                         features.own_shadow_coords);
@@ -209,11 +197,12 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   lit_->set_host_code(features.gl_host);
   billboards_ = std::move(billboards);
   ssao_ = std::move(ssao);
-  lights_ = std::move(lights);
   if (fresh) {
-    shadow_ = std::move(fresh);
+    frame_light().set_pass(std::move(fresh));
     shadow_entry_ = &entry;
   }
+  lights_.erase(lights_.begin() + 1, lights_.end());  // the frame light stays: its pass keeps its targets
+  for (ShadowedLight& further : lights) lights_.push_back(std::move(further));
   lit_->keep_only(variants);
   lit_->set_material(features.material_textures, features.material_params);
   views_->set_includes(includes, features.include_rules);
@@ -226,10 +215,9 @@ bool Renderer::build_programs(const Features& features, LightType light) {
 void Renderer::for_each_program(const std::function<void(ReloadableProgram&)>& f) const {
   lit_->for_each_program(f);
   views_->for_each_program(f);
-  if (shadow_) shadow_->for_each_program(f);
+  for (const ShadowedLight& light : lights_) light.for_each_program(f);
   if (billboards_) billboards_->for_each_program(f);
   if (ssao_) ssao_->for_each_program(f);
-  for (const ShadowedLight& light : lights_) light.for_each_program(f);
 }
 
 bool Renderer::poll_shader_files() {
@@ -253,7 +241,6 @@ std::string Renderer::shader_warnings() const {
 }
 
 void Renderer::invalidate_shadow_map() {
-  shadow_inputs_valid_ = false;
   for (ShadowedLight& light : lights_) light.invalidate();
 }
 
@@ -281,39 +268,38 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     placement_ = placement;
     upload_scene();
   }
-  light_.update(params, local_scene_.bounds(), features_.light, features_.light_fit, placement_);
-  if (light_.type != programs_light_) build_programs(features_, light_.type);  // on failure the error shows
-  ShadowPass& shadow = *shadow_;
+  FrameLight& light = frame_light().light();
+  light.update(params, local_scene_.bounds(), features_.light, features_.light_fit, placement_);
+  if (light.type != programs_light_) build_programs(features_, light.type);  // on failure the error shows
+  ShadowPass& shadow = frame_light().pass();
   const ShadowPass::Shape& shape = shadow.shape();
-  const int matched_radius = matched_filter_radius(params, light_, placement_.scale);
+  const int matched_radius = matched_filter_radius(params, light, placement_.scale);
   shadow.set_matched_radius(matched_radius);
-  if (shadow.ensure_targets(params)) ++targets_generation_;
+  frame_light().ensure_targets(params);
   lit_->ensure_targets(request.width, request.height, request.gbuffer, shape.view_stencil, request.to_window,
                        request.window_framebuffer);
   PassContext ctx = frame_context(params, request, shape.view_stencil);
   annotations_.clear();
   ctx.annotations = &annotations_;
-  if (billboards_ && shadow_entry_ == &shadow_pass_entry(ShadowTechnique::Depth, light_.type)) {
+  if (billboards_ && shadow_entry_ == &shadow_pass_entry(ShadowTechnique::Depth, light.type)) {
     billboards_->set_points(features_.billboards, placement_);
     ctx.billboards = billboards_.get();
   }
-  // What the lit pass binds: the pass's map and the selected shadow test's uniforms (a lambda holding one
-  // reference: no allocation).
-  const LitInputs lit_inputs{shadow.size(), [&shadow](const ParamSet& p, const LitUniforms& u) { shadow.bind_lit_inputs(p, u); },
-                             shadow_test_, matched_radius};
+  // What the lit pass reads besides the lights: the frame light's map size and the selected shadow test.
+  const LitInputs lit_inputs{shadow.size(), shadow_test_, matched_radius};
   ctx.lit_inputs = &lit_inputs;
   // The lit program compiled for what these parameters use (the technique's and the shadow test's few
   // settings as constants).
   shadow.lit_constants(params, lit_constants_);
   if (shadow_test_ && shadow_test_->constants)
-    shadow_test_->constants(ShadowTestFrame{params, light_, matched_radius, nullptr}, lit_constants_);
+    shadow_test_->constants(ShadowTestFrame{params, light, matched_radius, nullptr}, lit_constants_);
   lit_->use_constants(lit_constants_);
 
   // 2. Shadow pass(es): the map only when something it is drawn from changed; then what the camera's
   // view needs before it is lit (shadow volumes: the ambient and stencil passes).
-  if (shape.has_map) update_shadow_map(ctx);
+  if (shape.has_map) frame_light().draw_map_if_changed(ctx, scene_generation_);
   // 2b. Each further shadowed light's own map, with its own inputs: moving one leaves the others' alone.
-  for (ShadowedLight& light : lights_) light.update(ctx, placement_, scene_generation_);
+  for (std::size_t i = 1; i < lights_.size(); ++i) lights_[i].update(ctx, placement_, scene_generation_);
   ctx.lights = &lights_;
   if (shape.lit_first) ctx.timed(shape.lit_first->name, [&] { lit_->draw(ctx, shape.lit_first->variant); });
   shadow.draw_view_passes(ctx, ViewTarget{lit_->framebuffer(), lit_->width(), lit_->height()});
@@ -354,7 +340,7 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
   return {local_scene_,
           *gpu_scene_,
           params,
-          light_,
+          frame_light().light(),
           stats_,
           *timer_,
           empty_vao_.id(),
@@ -369,43 +355,13 @@ PassContext Renderer::frame_context(const ParamSet& params, const FrameRequest& 
           &features_.cascade_fit};
 }
 
-void Renderer::update_shadow_map(PassContext& ctx) {
-  // Compared in place, in storage kept from frame to frame: a still frame allocates nothing.
-  if (!inputs_scratch_) inputs_scratch_ = std::make_unique<ShadowMapInputs>();
-  if (!shadow_inputs_) shadow_inputs_ = std::make_unique<ShadowMapInputs>();
-  shadow_map_inputs(ctx, *inputs_scratch_);
-  shadow_->frame_inputs(ctx, inputs_scratch_->pass_inputs);
-  if (shadow_inputs_valid_ && *shadow_inputs_ == *inputs_scratch_) return;
-  shadow_->draw_map(ctx);
-  ++stats_.shadow_passes;
-  // Programs a pass builds on first use (a blur method's) count from now on.
-  shadow_map_inputs(ctx, *shadow_inputs_);
-  shadow_inputs_->pass_inputs = inputs_scratch_->pass_inputs;  // into the capacity it already has
-  shadow_inputs_valid_ = true;
-}
-
 const ShadowedLight& Renderer::shadowed_light(const std::string& name) const {
   for (const ShadowedLight& light : lights_)
     if (light.name() == name) return light;
   throw std::logic_error("the features have no shadowed light named \"" + name + "\"");
 }
 
-void Renderer::shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const {
-  ctx.params.values_invalidating(kInvalidatesShadowMap, in.params);
-  in.light_view = light_.view.view;
-  in.light_projection = light_.view.projection;
-  in.light_position = light_.position;
-  in.light_type = light_.type;
-  in.cull = ctx.cull;
-  in.billboard_eye = ctx.billboards ? glm::vec3(glm::inverse(ctx.camera_view)[3]) : glm::vec3(0.0f);
-  in.scene = scene_generation_;
-  in.targets = targets_generation_;
-  in.programs.clear();
-  shadow_->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
-  if (ctx.billboards) ctx.billboards->for_each_program([&](ReloadableProgram& p) { in.programs.push_back(p.generation()); });
-}
-
-int Renderer::shadow_map_size() const { return shadow_->size(); }
+int Renderer::shadow_map_size() const { return frame_light().pass().size(); }
 
 void Renderer::present(GLuint framebuffer, int width, int height) const { lit_->present(framebuffer, width, height); }
 std::vector<std::uint8_t> Renderer::read_color() const { return lit_->read_color(); }
@@ -420,39 +376,39 @@ std::vector<float> Renderer::read_ao(bool blurred) const {
   if (!ssao_) throw std::logic_error("read_ao needs the features' SSAO (Features::ssao)");
   return ssao_->read_open(blurred);
 }
-std::vector<float> Renderer::read_shadow_depth(int* size) const { return shadow_->read_depth(size); }
-std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const { return shadow_->image(size); }
+std::vector<float> Renderer::read_shadow_depth(int* size) const { return frame_light().pass().read_depth(size); }
+std::vector<std::uint8_t> Renderer::shadow_map_image(int* size) const { return frame_light().pass().image(size); }
 
 std::vector<float> Renderer::read_cube_face(int face, int* size) const {
-  const auto* cube = dynamic_cast<const CubeShadowPass*>(shadow_.get());
+  const auto* cube = dynamic_cast<const CubeShadowPass*>(&frame_light().pass());
   if (!cube || face < 0 || face > 5) throw std::logic_error("read_cube_face needs a point light's cube shadow map");
   *size = cube->size();
   return cube->read_face(face);
 }
 
 std::vector<float> Renderer::read_moments(int* size) const {
-  const auto* moments = dynamic_cast<const MomentsPass*>(shadow_.get());
+  const auto* moments = dynamic_cast<const MomentsPass*>(&frame_light().pass());
   if (!moments) throw std::logic_error("read_moments needs the moments technique");
   *size = moments->size();
   return moments->read_moments();
 }
 
 MomentsTargetInfo Renderer::moments_targets() const {
-  const auto* moments = dynamic_cast<const MomentsPass*>(shadow_.get());
+  const auto* moments = dynamic_cast<const MomentsPass*>(&frame_light().pass());
   return moments ? moments->query_targets() : MomentsTargetInfo{};
 }
 
 VolumeTriangles Renderer::count_volume_triangles(bool caps) {
-  auto* volumes = dynamic_cast<ShadowVolumePass*>(shadow_.get());
+  auto* volumes = dynamic_cast<ShadowVolumePass*>(&frame_light().pass());
   if (!volumes || !lit_) throw std::logic_error("count_volume_triangles needs the shadow-volume technique and a frame");
   glBindFramebuffer(GL_FRAMEBUFFER, lit_->framebuffer());
-  const VolumeTriangles count = volumes->count_triangles(light_.vector4(), caps, local_scene_.bounds());
+  const VolumeTriangles count = volumes->count_triangles(frame_light().light().vector4(), caps, local_scene_.bounds());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return count;
 }
 
 std::vector<VolumeMeshReport> Renderer::volume_report() const {
-  if (const auto* volumes = dynamic_cast<const ShadowVolumePass*>(shadow_.get())) return volumes->report();
+  if (const auto* volumes = dynamic_cast<const ShadowVolumePass*>(&frame_light().pass())) return volumes->report();
   return views_->volume_report();
 }
 

@@ -5,8 +5,10 @@
 // per feature set and light type (renderer/shadow_passes.cpp): the depth map (renderer/depth_map_pass.h),
 // a point light's cube of distances (renderer/cube_shadow_pass.h), the moments with their blur
 // (renderer/moments_pass.h), or stencil shadow volumes with no map at all
-// (renderer/shadow_volume_pass.h). The lit pass (renderer/lit_pass.h) and the debug views
-// (renderer/debug_views.h) are passes of their own.
+// (renderer/shadow_volume_pass.h). That pass is the frame light's, the first entry of the renderer's
+// list of shadowed lights (renderer/shadowed_light.h); the further lights a feature asks for follow it,
+// each with its own depth map. The lit pass (renderer/lit_pass.h) reads every light's map through that
+// list, and the debug views (renderer/debug_views.h) show them.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -94,7 +97,8 @@ struct Features {
   std::vector<glm::vec3> billboards;
   // Shadowed lights beside the frame's own (at most kMaxShadowedLights), e.g. lab 15's flashlight
   // (core/flashlight.h's flashlight_spec(): a spot on a node circling the scene or on the camera). Each
-  // gets a ShadowedLight (renderer/shadowed_light.h): its own perspective depth map, redrawn only when it,
+  // gets a ShadowedLight (renderer/shadowed_light.h) in the renderer's list after the frame light's (entry
+  // 0, Renderer::lights()): its own perspective depth map, redrawn only when it,
   // its casters or its map's settings change. The lit pass combines the frame light's term with the first
   // entry's in "lab/combine.glsl" (default shaders/shadow/combine_lights.glsl), then each further entry's
   // with the light so far (shaders/lit.frag). With the techniques that have a map (not shadow volumes);
@@ -212,8 +216,8 @@ class Renderer {
   // The moments texture as (E[z], E[z^2]) pairs, bottom row first (after the blur, if one ran); throws
   // unless the moments technique is on.
   std::vector<float> read_moments(int* size) const;
-  // The current technique's pass (null before the first set_features), for what only it can read back.
-  const ShadowPass* shadow_pass() const { return shadow_.get(); }
+  // The current technique's pass (the frame light's), for what only it can read back.
+  const ShadowPass* shadow_pass() const { return lights_.front().has_pass() ? &lights_.front().pass() : nullptr; }
   // The moments targets' format, filtering and attachments as GL reports them.
   MomentsTargetInfo moments_targets() const;
   // The shadow map as a picture (what the debug quad shows), RGBA8 top row first. A point light's six
@@ -221,9 +225,9 @@ class Renderer {
   std::vector<std::uint8_t> shadow_map_image(int* size) const;
 
   // The matrices below are the ones the GPU uses: in the local frame (world - placement().origin()).
-  const LightView& light_view() const { return light_.view; }
+  const LightView& light_view() const { return light().view; }
   int shadow_map_size() const;  // texels per side of the current shadow (or moments) map
-  glm::vec3 to_light() const { return light_.to_light; }
+  glm::vec3 to_light() const { return light().to_light; }
   glm::mat4 camera_view() const { return camera_view_; }
   glm::mat4 camera_projection() const { return camera_projection_; }
   int width() const { return width_; }
@@ -233,22 +237,26 @@ class Renderer {
   // (renderer/debug_annotations.h); the app draws them (app/view_annotations.h).
   const DebugAnnotations& annotations() const { return annotations_; }
 
-  // The shadowed lights beside the frame's own (Features::lights, in order): each with its last frame's
-  // light, its map and its map's updates (renderer/shadowed_light.h). shadowed_light(name) throws when the
-  // features have no entry of that name.
-  const std::vector<ShadowedLight>& shadowed_lights() const { return lights_; }
+  // Every shadowed light of the last frame (renderer/shadowed_light.h): entry 0 the frame's own light
+  // (named kFrameLightName), then one per Features::lights spec, in order; each with its light, its map and
+  // its map's updates. shadowed_lights() the entries beside the frame light; shadowed_light(name) throws
+  // when there is no entry of that name.
+  const std::vector<ShadowedLight>& lights() const { return lights_; }
+  std::span<const ShadowedLight> shadowed_lights() const { return std::span(lights_).subspan(1); }
   const ShadowedLight& shadowed_light(const std::string& name) const;
+  static constexpr const char* kFrameLightName = "sun";
 
   // The light of the last frame. For spot and point lights to_light() points from the scene's centre
   // toward the light (for display); the lit pass uses the position.
-  LightType light_type() const { return light_.type; }
-  glm::vec3 light_position() const { return light_.scene_position; }  // the scene's frame
-  glm::vec3 spot_direction() const { return light_.spot_direction; }
-  float spot_cone_deg() const { return light_.spot_cone_deg; }
+  const FrameLight& light() const { return lights_.front().light(); }
+  LightType light_type() const { return light().type; }
+  glm::vec3 light_position() const { return light().scene_position; }  // the scene's frame
+  glm::vec3 spot_direction() const { return light().spot_direction; }
+  float spot_cone_deg() const { return light().spot_cone_deg; }
   // light.size of the last frame in evaluate_soft's units (radians for a directional light, the scene
   // frame's units for a spot or point light's radius); 0 for a hard light.
-  float light_size() const { return light_.soft_truth_size(); }
-  const CubeLightViews& cube_views() const { return light_.cube; }
+  float light_size() const { return light().soft_truth_size(); }
+  const CubeLightViews& cube_views() const { return light().cube; }
   // The shadow volumes' adjacency report per shadow-casting mesh (empty unless shadow volumes or their
   // wireframe view were drawn).
   std::vector<VolumeMeshReport> volume_report() const;
@@ -263,12 +271,10 @@ class Renderer {
                                                              LightType light = LightType::Directional);
 
  private:
-  struct ShadowMapInputs;
+  ShadowedLight& frame_light() { return lights_.front(); }
+  const ShadowedLight& frame_light() const { return lights_.front(); }
   bool build_programs(const Features& features, LightType light);
   PassContext frame_context(const ParamSet& params, const FrameRequest& request, bool infinite_far_plane);
-  // Draws the shadow map unless everything it was last drawn from is unchanged.
-  void update_shadow_map(PassContext& ctx);
-  void shadow_map_inputs(const PassContext& ctx, ShadowMapInputs& in) const;
   // Every program of the current features (the programs live behind pointers, so this is const).
   void for_each_program(const std::function<void(ReloadableProgram&)>& f) const;
 
@@ -290,24 +296,18 @@ class Renderer {
   // The errors of the last set_features that failed: its programs may belong to a pass that was not kept.
   std::string failed_build_error_;
   LightType programs_light_ = LightType::Directional;  // the light type the programs were built for
-  const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique shadow_ is
+  const ShadowPassEntry* shadow_entry_ = nullptr;      // which technique the frame light's pass is
   const ShadowTest* shadow_test_ = nullptr;             // the features' shadow test (null: none selected)
-  std::unique_ptr<ShadowPass> shadow_;
   std::unique_ptr<LitPass> lit_;
   std::unique_ptr<DebugViews> views_;
   std::unique_ptr<BillboardPass> billboards_;  // only while the features have billboards
   std::unique_ptr<SsaoPass> ssao_;              // only while the features switch SSAO on
-  std::vector<ShadowedLight> lights_;           // one per Features::lights entry
+  // The frame light (always entry 0, its pass the features' technique), then one per Features::lights entry.
+  std::vector<ShadowedLight> lights_;
   std::unique_ptr<PassTimer> timer_;
   GlVertexArray empty_vao_;  // core profile needs a VAO bound even for attribute-less full-screen draws
-  long targets_generation_ = 0;  // bumps whenever the shadow pass reallocates its targets
-  // What the current shadow map was drawn from (unless not valid: draw it on the next frame).
-  std::unique_ptr<ShadowMapInputs> shadow_inputs_;
-  bool shadow_inputs_valid_ = false;
-  std::unique_ptr<ShadowMapInputs> inputs_scratch_;  // this frame's, compared with shadow_inputs_
 
   LitConstants lit_constants_;  // this frame's, filled in place
-  FrameLight light_;
   glm::mat4 camera_view_{1.0f}, camera_projection_{1.0f};
   int width_ = 0, height_ = 0;
   FrameStats stats_;

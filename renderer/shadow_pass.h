@@ -69,17 +69,16 @@ struct LitUniforms {
   } csm;
 };
 
-// What the lit pass binds besides its own uniforms, handed to it with the frame (PassContext::lit_inputs)
-// by the renderer: the lit pass knows no shadow pass and no shadow test by itself. LitConstants
+// What the lit pass reads besides its own uniforms and the lights (PassContext::lights: each light binds its
+// own map), handed to it with the frame (PassContext::lit_inputs) by the renderer: the lit pass knows no
+// shadow test by itself. LitConstants
 // (renderer/shadow_test.h), the uniforms a lit program may be compiled with as constants, are what a
 // technique's few settings decide per pixel (loop counts, branches), so that the lit pass runs no dead
 // branch and no uniform-bounded loop for what a lab uses: the pass's (ShadowPass::lit_constants) and
 // the selected test's (ShadowTest::constants), which the renderer collects each frame before the lit
 // pass draws.
 struct LitInputs {
-  int map_size = 0;  // texels per side of the light's map (a texel's depth and angle)
-  // The shadow pass's textures and uniforms (ShadowPass::bind_lit_inputs; leaves unit 0 active).
-  std::function<void(const ParamSet&, const LitUniforms&)> bind_map;
+  int map_size = 0;  // texels per side of the frame light's map (a texel's depth and angle)
   const ShadowTest* test = nullptr;  // the shadow test whose own uniforms are set (null: none)
   int matched_radius = -1;           // ShadowTestFrame::matched_radius
 };
@@ -122,8 +121,9 @@ struct PassContext {
   const CascadeFitFn* cascade_fit = nullptr;
   // The features' billboards (null: none), which the depth map's pass draws after the casters.
   BillboardPass* billboards = nullptr;
-  // The shadowed lights beside the frame's light (Features::lights, renderer/shadowed_light.h), each with
-  // its light and its map (null or empty: none). The lit pass reads entry i's map on kShadowedLightUnits[i].
+  // Every shadowed light (renderer/shadowed_light.h): entry 0 the frame's own light, whose technique pass
+  // binds its map for the lit pass (ShadowPass::bind_lit_inputs), then the further lights (Features::lights),
+  // entry i's map on kShadowedLightUnits[i - 1]. Set before the first lit draw.
   std::vector<ShadowedLight>* lights = nullptr;
   // The frame's words (debug quads' labels, false-colour legends), filled as the passes draw (null: none).
   DebugAnnotations* annotations = nullptr;
