@@ -166,7 +166,8 @@ nlohmann::json lit_json(const VolumeState& s) {
           {"blend", s.blend != 0}, {"blend_src_rgb", gl_name(s.blend_src_rgb)}, {"blend_dst_rgb", gl_name(s.blend_dst_rgb)}};
 }
 
-// Whether the stencil test (func, ref, mask) passes a stored value, as OpenGL 3.3 section 4.1.5 defines it.
+// Whether the stencil test (func, ref, mask) passes a stored value, as the OpenGL 3.3 core profile
+// specification defines it (section 4.1.4, Stencil Test).
 bool stencil_passes(int func, int ref, int mask, int stored) {
   const int r = ref & mask, s = stored & mask;
   switch (func) {

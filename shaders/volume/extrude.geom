@@ -37,8 +37,8 @@ bool faces_light(vec3 a, vec3 b, vec3 c) {
 }
 
 // The point at infinity straight away from the light behind p: homogeneous w = 0 is a direction. The
-// camera's far plane is at infinity and the stencil pass clamps depth (GL_DEPTH_CLAMP), so it is drawn
-// at depth 1 instead of being clipped by rounding.
+// camera's far plane is at infinity and the z-fail stencil pass clamps depth (GL_DEPTH_CLAMP), so it is
+// drawn at depth 1 instead of being clipped by rounding (z-pass counts nothing that far back).
 vec4 at_infinity(vec3 p) { return vec4(-toward_light(p), 0.0); }
 
 // One vertex of the current triangle strip, in world space (w = 1 a point, w = 0 a point at infinity).
