@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include "core/image_io.h"
@@ -113,24 +114,49 @@ void CascadePass::draw_map(PassContext& ctx) {
   });
 }
 
-void CascadePass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  for (int i = 0; i < frame_.count; ++i) {
-    const auto c = static_cast<std::size_t>(i);
-    const LightView& v = frame_.views[c];
-    u.csm.tex[i].set(clip_to_texture() * v.view_projection());
-    u.csm.far[i].set(frame_.splits[c + 1]);
-    // One texel's world size in the depth units of the comparison ([0, 1] over the box's depth).
-    const float depth_range = 2.0f / std::abs(v.projection[2][2]);
-    u.csm.texel_depth[i].set(v.world_size.x / static_cast<float>(frame_.map_size) / depth_range);
+namespace {
+// The cascades' uniforms on a lit program (shaders/csm/visibility.glsl): per cascade, then shared.
+struct CascadeUniforms {
+  Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
+  Uniform near, count, camera_view, blend, maps;
+};
+CascadeUniforms cascade_uniforms(GLuint program) {
+  CascadeUniforms u;
+  for (int i = 0; i < kMaxCascades; ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    u.tex[i] = Uniform(program, ("u_csm_tex" + at).c_str());
+    u.far[i] = Uniform(program, ("u_csm_far" + at).c_str());
+    u.texel_depth[i] = Uniform(program, ("u_csm_texel_depth" + at).c_str());
   }
-  u.csm.near.set(frame_.splits.empty() ? 0.0f : frame_.splits.front());
-  u.csm.count.set(frame_.count);
-  u.csm.camera_view.set(frame_.camera_view);
-  u.csm.blend.set(params.get(param::csm_blend));
-  u.csm.maps.set(2);
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
-  glActiveTexture(GL_TEXTURE0);
+  u.near = Uniform(program, "u_csm_near");
+  u.count = Uniform(program, "u_csm_count");
+  u.camera_view = Uniform(program, "u_csm_camera_view");
+  u.blend = Uniform(program, "u_csm_blend");
+  u.maps = Uniform(program, "u_csm_maps");
+  return u;
+}
+}  // namespace
+
+LitBind CascadePass::lit_bind(GLuint program) const {
+  return [this, u = cascade_uniforms(program)](const ParamSet& params) {
+    for (int i = 0; i < frame_.count; ++i) {
+      const auto c = static_cast<std::size_t>(i);
+      const LightView& v = frame_.views[c];
+      u.tex[i].set(clip_to_texture() * v.view_projection());
+      u.far[i].set(frame_.splits[c + 1]);
+      // One texel's world size in the depth units of the comparison ([0, 1] over the box's depth).
+      const float depth_range = 2.0f / std::abs(v.projection[2][2]);
+      u.texel_depth[i].set(v.world_size.x / static_cast<float>(frame_.map_size) / depth_range);
+    }
+    u.near.set(frame_.splits.empty() ? 0.0f : frame_.splits.front());
+    u.count.set(frame_.count);
+    u.camera_view.set(frame_.camera_view);
+    u.blend.set(params.get(param::csm_blend));
+    u.maps.set(2);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
+    glActiveTexture(GL_TEXTURE0);
+  };
 }
 
 std::optional<LitView> CascadePass::lit_view(const ParamSet& params) const {

@@ -30,7 +30,7 @@ class CascadePass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   void frame_inputs(PassContext& ctx, std::vector<float>& out) override;
   void draw_map(PassContext& ctx) override;
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   std::optional<LitView> lit_view(const ParamSet& params) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   // Texels per side of one cascade's map.

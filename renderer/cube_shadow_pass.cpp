@@ -83,12 +83,14 @@ void CubeShadowPass::draw_map(PassContext& ctx) {
   });
 }
 
-void CubeShadowPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
-  u.shadow_faces.set(2);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, 0);
+LitBind CubeShadowPass::lit_bind(GLuint program) const {
+  return [this, faces = Uniform(program, "u_shadow_faces")](const ParamSet&) {
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, distance_.id());
+    faces.set(2);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  };
 }
 
 void CubeShadowPass::draw_debug_quads(const DebugQuadArea& area) {

@@ -34,7 +34,7 @@ class CubeShadowPass final : public ShadowPass {
   // The six faces (point.single_pass: in one draw through the layering geometry shader).
   void draw_map(PassContext& ctx) override;
   // The six faces, a six-layer array, on texture unit 2 (u_shadow_faces).
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   // The six faces in a 3 x 2 grid, top row +X -X +Y, bottom row -Y +Z -Z, together `side` high.
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }

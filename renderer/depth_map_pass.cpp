@@ -91,18 +91,20 @@ void DepthMapPass::draw_depth(PassContext& ctx) {
   }));
 }
 
-void DepthMapPass::bind_lit_inputs(const ParamSet&, const LitUniforms& u) const {
-  if (u.shadow_map_compare.present()) {
-    // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
-    // the four comparisons bilinearly); unit 0 keeps reading raw depths.
-    if (!compare_sampler_) compare_sampler_ = make_compare_sampler();
-    glActiveTexture(GL_TEXTURE1);
+LitBind DepthMapPass::lit_bind(GLuint program) const {
+  return [this, compare = Uniform(program, "u_shadow_map_compare")](const ParamSet&) {
+    if (compare.present()) {
+      // PCF in hardware: the same depth texture on unit 1 through a sampler that compares (and filters
+      // the four comparisons bilinearly); unit 0 keeps reading raw depths.
+      if (!compare_sampler_) compare_sampler_ = make_compare_sampler();
+      glActiveTexture(GL_TEXTURE1);
+      glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
+      glBindSampler(1, compare_sampler_.id());
+      compare.set(1);
+    }
+    glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
-    glBindSampler(1, compare_sampler_.id());
-    u.shadow_map_compare.set(1);
-  }
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, depth_texture_.id());
+  };
 }
 
 void DepthMapPass::draw_debug_quads(const DebugQuadArea& area) {

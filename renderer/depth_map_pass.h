@@ -24,7 +24,7 @@ class DepthMapPass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   void set_host_code(const GlHostCode& code) override;
   void draw_map(PassContext& ctx) override;
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   void draw_debug_quads(const DebugQuadArea& area) override;
   int size() const override { return size_; }
   GLuint texture() const { return depth_texture_.id(); }

@@ -74,37 +74,19 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
        Uniform(id, "u_texel_depth"),
        Uniform(id, "u_ambient"),
        Uniform(id, "u_shadow_map"),
-       Uniform(id, "u_min_variance"),
-       Uniform(id, "u_bleed_delta"),
-       Uniform(id, "u_warp_exponent"),
-       Uniform(id, "u_msm_moment_bias"),
        Uniform(id, "u_light_position"),
        Uniform(id, "u_spot_direction"),
        Uniform(id, "u_spot_cos_cone"),
        Uniform(id, "u_light_near"),
        Uniform(id, "u_light_far"),
        Uniform(id, "u_texel_angle"),
-       Uniform(id, "u_shadow_faces"),
-       Uniform(id, "u_shadow_map_compare"),
        Uniform(id, "u_light_view_proj"),
        Uniform(id, "u_base_color"),
        Uniform(id, "u_alpha_cutoff"),
-       {},    // lights: below, for the SHADOWED_LIGHTS variant
-       {}};  // csm: below, per cascade
-  for (int i = 0; i < kMaxCascades; ++i) {
-    const std::string at = "[" + std::to_string(i) + "]";
-    u.csm.tex[i] = Uniform(id, ("u_csm_tex" + at).c_str());
-    u.csm.far[i] = Uniform(id, ("u_csm_far" + at).c_str());
-    u.csm.texel_depth[i] = Uniform(id, ("u_csm_texel_depth" + at).c_str());
-  }
+       {}};  // lights: below, for the SHADOWED_LIGHTS variant
   // A lab test that maps into the shadow map itself gets no matrix that does it (set() on no location
   // does nothing): declaring the uniform gives it zeros.
   if (defines(program.desc(), kOwnShadowCoordsDefine)) u.light_tex_matrix = Uniform();
-  u.csm.near = Uniform(id, "u_csm_near");
-  u.csm.count = Uniform(id, "u_csm_count");
-  u.csm.camera_view = Uniform(id, "u_csm_camera_view");
-  u.csm.blend = Uniform(id, "u_csm_blend");
-  u.csm.maps = Uniform(id, "u_csm_maps");
   for (int i = 0; i < kMaxShadowedLights; ++i) {
     const std::string at = "[" + std::to_string(i) + "]", field = "u_lights" + at + ".";
     const auto f = [&](const char* name) { return Uniform(id, (field + name).c_str()); };
@@ -234,11 +216,15 @@ void LitPass::draw(PassContext& ctx, LitVariant variant) {
   const auto it = programs_.find({variant, writes_gbuffer(variant, ctx.gbuffer)});
   if (it == programs_.end()) throw std::logic_error("the lit pass has no program for this variant");
   Program& p = program_for(it->second);
-  if (p.u.generation != p.program.generation() || p.test != inputs.test) {
+  if (!ctx.lights || ctx.lights->empty()) throw std::logic_error("the lit pass draws a frame with no light");
+  const ShadowPass& technique = ctx.lights->front().pass();
+  if (p.u.generation != p.program.generation() || p.test != inputs.test || p.pass_serial != technique.serial()) {
     resolve(p.program, p.u);
-    // The shadow test's own uniforms, looked up by the test on this program.
+    // The shadow test's and the technique's own uniforms, each looked up by its owner on this program.
     p.test = inputs.test;
     p.test_bind = p.test && p.test->resolve ? p.test->resolve(p.program.id()) : ShadowTestBind();
+    p.pass_serial = technique.serial();
+    p.pass_bind = technique.lit_bind(p.program.id());
   }
   if (is_overlay(variant)) {
     bind_color_target(framebuffer(), width_, height_);  // a tint over the picture; the G-buffer stays as drawn
@@ -395,7 +381,6 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
   u.texel_angle.set(light.texel_angle(std::max(inputs.map_size, 1)));
-  if (!ctx.lights || ctx.lights->empty()) throw std::logic_error("the lit pass draws a frame with no light");
   const std::vector<ShadowedLight>& lights = *ctx.lights;
   if (lights.size() > 1) {  // each uniform set when present: an answer may leave some unused
     u.lights.sun_intensity.set(static_cast<float>(params.get(param::sun_intensity)));
@@ -403,8 +388,8 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
       lights[i].bind_lit_inputs(params, u.lights.entry[i - 1], kShadowedLightUnits[i - 1]);
     glActiveTexture(GL_TEXTURE0);
   }
-  // The frame light's map and its technique's uniforms, through its pass (leaves unit 0 active).
-  lights.front().pass().bind_lit_inputs(params, u);
+  // The frame light's map and its technique's uniforms, as its pass binds them (leaves unit 0 active).
+  p.pass_bind(params);
   // The shadow test's own uniforms (only the selected test's: renderer/shadow_test.h).
   if (p.test_bind) p.test_bind(ShadowTestFrame{params, light, inputs.matched_radius, ctx.annotations});
   u.shadow_map.set(0);

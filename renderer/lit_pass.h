@@ -76,6 +76,8 @@ class LitPass {
     LitUniforms u;
     const ShadowTest* test = nullptr;  // whose uniforms test_bind sets (looked up on this program)
     ShadowTestBind test_bind;
+    std::uint64_t pass_serial = 0;  // the technique pass whose pass_bind this is (ShadowPass::serial)
+    LitBind pass_bind;
   };
   struct Slot {
     Program generic;

@@ -231,20 +231,21 @@ std::array<float, 4> moments_clear(float warp_exponent, float negative_exponent)
           static_cast<float>(std::exp(-2.0 * cn))};
 }
 
-void MomentsPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  const glm::vec2 c = evsm_exponents(params);
-  u.warp_exponent.set(c.x);
-  GLint program = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-  if (program != lit_program_) {
-    lit_negative_exponent_ = Uniform(static_cast<GLuint>(program), "u_warp_negative_exponent");
-    lit_program_ = program;
-  }
-  lit_negative_exponent_.set(c.y);
-  u.min_variance.set(params.get(param::vsm_min_variance));
-  u.bleed_delta.set(params.get(param::vsm_bleed_delta));
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
+LitBind MomentsPass::lit_bind(GLuint program) const {
+  struct Uniforms {
+    Uniform warp_exponent, negative_exponent, min_variance, bleed_delta;
+  };
+  const Uniforms u{Uniform(program, "u_warp_exponent"), Uniform(program, "u_warp_negative_exponent"),
+                   Uniform(program, "u_min_variance"), Uniform(program, "u_bleed_delta")};
+  return [this, u](const ParamSet& params) {
+    const glm::vec2 c = evsm_exponents(params);
+    u.warp_exponent.set(c.x);
+    u.negative_exponent.set(c.y);
+    u.min_variance.set(params.get(param::vsm_min_variance));
+    u.bleed_delta.set(params.get(param::vsm_bleed_delta));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, moments_texture_.id());
+  };
 }
 
 std::optional<LitView> MomentsPass::lit_view(const ParamSet& params) const {

@@ -106,7 +106,7 @@ class MomentsPass final : public ShadowPass {
   // share of texels whose variance cancelled (FrameStats::moments_negative_variance).
   void draw_map(PassContext& ctx) override;
   // The moments on unit 0, vsm.min_variance and vsm.bleed_delta.
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   // vsm.show_remap: tints the pixels whose visibility the light-bleeding remap lowered.
   std::optional<LitView> lit_view(const ParamSet& params) const override;
   // view.debug_channel "all": E[z], E[z^2] and the variance left to right; else that one channel.
@@ -171,8 +171,6 @@ class MomentsPass final : public ShadowPass {
   } moments_u_;
   // The lit program's u_warp_negative_exponent (not among the shared LitUniforms): looked up again when
   // another program is bound.
-  mutable GLint lit_program_ = 0;
-  mutable Uniform lit_negative_exponent_;
   struct BlurUniforms {
     int generation = -1;
     Uniform moments, radius, sigma;

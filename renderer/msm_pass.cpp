@@ -69,10 +69,12 @@ void MsmPass::draw_map(PassContext& ctx) {
   ++ctx.stats.moments_passes;
 }
 
-void MsmPass::bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const {
-  u.msm_moment_bias.set(params.get(param::vsm_msm_moment_bias));
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, texture_.id());
+LitBind MsmPass::lit_bind(GLuint program) const {
+  return [this, moment_bias = Uniform(program, "u_msm_moment_bias")](const ParamSet& params) {
+    moment_bias.set(params.get(param::vsm_msm_moment_bias));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+  };
 }
 
 std::vector<float> MsmPass::read_depth(int* size) const {

@@ -34,7 +34,7 @@ class MsmPass final : public ShadowPass {
   bool ensure_targets(const ParamSet& params) override;
   void draw_map(PassContext& ctx) override;
   // The moments on unit 0 and vsm.msm_moment_bias.
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   int size() const override { return size_; }
   std::vector<float> read_depth(int* size) const override;
   std::vector<std::uint8_t> image(int* size) const override;

@@ -8,7 +8,7 @@
 //                        the scene, the targets, the pass's program generations)
 //      draw_view_passes  what the camera's view needs before the lit pass (shadow volumes' stencil),
 //                        after the lit draw the pass's shape asks for first (Shape::lit_first)
-//   3. bind_lit_inputs   what the lit pass reads: textures and the technique's uniforms
+//   3. lit_bind          what the lit pass reads: textures and the technique's own uniforms
 //   4. lit_view, draw_debug_quads   the false-colour view the technique asks the lit pass for, and its
 //                        map in the corner
 //
@@ -52,9 +52,7 @@ constexpr int kMaxShadowedLights = 4;
 struct LitUniforms {
   int generation = -1;
   Uniform view_proj, light_tex_matrix, to_light, bias_constant, bias_slope, texel_depth, ambient, shadow_map;
-  Uniform min_variance, bleed_delta, warp_exponent, msm_moment_bias;
-  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle, shadow_faces;
-  Uniform shadow_map_compare;  // the depth map through a comparison sampler (PCF's and PCSS's hardware taps)
+  Uniform light_position, spot_direction, spot_cos_cone, light_near, light_far, texel_angle;
   Uniform light_view_proj;  // without the bias matrix: for a shadow test that applies it itself
   Uniform base_color, alpha_cutoff;  // the material variant's (MATERIAL_TEXTURE)
   struct ShadowedLights {  // the SHADOWED_LIGHTS variant's (shaders/shadow/shadowed_lights.glsl), per entry
@@ -63,11 +61,11 @@ struct LitUniforms {
     } entry[kMaxShadowedLights];
     Uniform sun_intensity;  // the frame light's weight beside them
   } lights;
-  struct Cascades {  // cascaded shadow maps (shaders/csm/visibility.glsl): per cascade, then shared
-    Uniform tex[kMaxCascades], far[kMaxCascades], texel_depth[kMaxCascades];
-    Uniform near, count, camera_view, blend, maps;
-  } csm;
 };
+
+// What a technique sets on one lit program (ShadowPass::lit_bind): made once per program generation, where
+// it looks up the technique's own uniforms (none of which LitUniforms holds), then called every lit draw.
+using LitBind = std::function<void(const ParamSet&)>;
 
 // What the lit pass reads besides its own uniforms and the lights (PassContext::lights: each light binds its
 // own map), handed to it with the frame (PassContext::lit_inputs) by the renderer: the lit pass knows no
@@ -122,7 +120,7 @@ struct PassContext {
   // The features' billboards (null: none), which the depth map's pass draws after the casters.
   BillboardPass* billboards = nullptr;
   // Every shadowed light (renderer/shadowed_light.h): entry 0 the frame's own light, whose technique pass
-  // binds its map for the lit pass (ShadowPass::bind_lit_inputs), then the further lights (Features::lights),
+  // binds its map for the lit pass (ShadowPass::lit_bind), then the further lights (Features::lights),
   // entry i's map on kShadowedLightUnits[i - 1]. Set before the first lit draw.
   std::vector<ShadowedLight>* lights = nullptr;
   // The frame's words (debug quads' labels, false-colour legends), filled as the passes draw (null: none).
@@ -214,11 +212,15 @@ class ShadowPass {
   // 2. The shadow map, from the light.
   virtual void draw_map(PassContext&) {}
   virtual void draw_view_passes(PassContext&, const ViewTarget&) {}
-  // 3. Binds what the lit pass reads (texture unit 0 is u_shadow_map) and sets the technique's
-  // uniforms; leaves texture unit 0 active.
-  virtual void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const = 0;
+  // 3. What the lit pass reads from this technique, on the lit program `program`: a function that binds
+  // the pass's textures (its map on unit 0, u_shadow_map) and sets the technique's own uniforms, which it
+  // looks up here (the lit pass asks again when the program is rebuilt or the pass changes: serial());
+  // it leaves texture unit 0 active. It may hold `this`: the lit pass drops it with the pass.
+  virtual LitBind lit_bind(GLuint program) const = 0;
+  // Tells passes apart even when one is made where another was freed (the lit pass's cached binds).
+  std::uint64_t serial() const { return serial_; }
   // The uniforms among those that the lit program may take as constants, with these parameters' values
-  // (the same bind_lit_inputs sets; a shadow test's own come from the test, ShadowTest::constants);
+  // (the same lit_bind sets; a shadow test's own come from the test, ShadowTest::constants);
   // empty by default. Only parameters declaring kInvalidatesPrograms may decide them. Called every frame: fills `out` in place (no allocation once it holds them).
   virtual void lit_constants(const ParamSet&, LitConstants& out) const { out.clear(); }
   // 4. The technique's own false-colour view for these parameters, drawn by the renderer after the lit
@@ -240,6 +242,10 @@ class ShadowPass {
 
  protected:
   int matched_radius_ = -1;
+
+ private:
+  static std::uint64_t next_serial();
+  const std::uint64_t serial_ = next_serial();
 };
 
 // The ALPHA_MASK variant of a shadow pass's program. Alpha-tested (glTF MASK) casters drawn through it

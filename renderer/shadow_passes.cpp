@@ -1,6 +1,7 @@
 #include "renderer/shadow_passes.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 #include "renderer/cascade_pass.h"
@@ -40,6 +41,11 @@ const ShadowPassEntry& shadow_pass_entry(ShadowTechnique technique, LightType li
   for (const auto& entry : kEntries)
     if (entry.technique == technique && entry.serves(light)) return entry;
   throw std::logic_error(std::string("no shadow pass for this technique and the ") + light_type_name(light) + " light");
+}
+
+std::uint64_t ShadowPass::next_serial() {
+  static std::atomic<std::uint64_t> next{1};
+  return next++;
 }
 
 std::vector<float> ShadowPass::read_depth(int* size) const {

@@ -37,9 +37,11 @@ void ShadowVolumePass::draw_view_passes(PassContext& ctx, const ViewTarget& view
   ++ctx.stats.stencil_passes;
 }
 
-void ShadowVolumePass::bind_lit_inputs(const ParamSet&, const LitUniforms&) const {
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, 0);
+LitBind ShadowVolumePass::lit_bind(GLuint) const {
+  return [](const ParamSet&) {  // no map: the stencil says what is shadowed
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  };
 }
 
 std::vector<std::uint8_t> ShadowVolumePass::image(int* size) const {

@@ -75,7 +75,7 @@ class ShadowVolumePass final : public ShadowPass {
   // The volumes into the stencil buffer (volume.method: z-fail or z-pass), after the ambient pass
   // (shape().lit_first) laid the depth down.
   void draw_view_passes(PassContext& ctx, const ViewTarget& view) override;
-  void bind_lit_inputs(const ParamSet& params, const LitUniforms& u) const override;
+  LitBind lit_bind(GLuint program) const override;
   int size() const override { return 0; }
   // No shadow map: a 16 x 16 grey placeholder keeps the outputs' shape.
   std::vector<std::uint8_t> image(int* size) const override;

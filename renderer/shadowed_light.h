@@ -8,7 +8,7 @@
 // The two kinds differ only in what places them and how the lit pass reads them:
 //   - the frame light is placed by the renderer (FrameLight::update, from the parameters and the features'
 //     fit); its map also depends on the parameters declared kInvalidatesShadowMap and on the billboards; the
-//     lit pass reads it through its technique (ShadowPass::bind_lit_inputs, "lab/visibility.glsl");
+//     lit pass reads it through its technique (ShadowPass::lit_bind, "lab/visibility.glsl");
 //   - a further light is placed by its spec; the lit pass reads it through shaders/shadow/shadowed_lights.glsl
 //     (bind_lit_inputs below), combined with the frame light's term in "lab/combine.glsl".
 // Either map is redrawn only when what it was drawn from changes: moving one light leaves the others' maps
