@@ -25,7 +25,12 @@ std::map<std::string, std::string> CascadePass::default_includes(LightType) {
 }
 
 const ShadowPass::Shape& CascadePass::shape() const {
-  static const Shape cascades{true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::CascadeView}};
+  static const Shape cascades{true,
+                              false,
+                              LitVariant::Lit,
+                              {LitVariant::Lit, LitVariant::Overlay},
+                              std::nullopt,
+                              LitOverlay{"shaders/csm/cascade_view.frag", cascade_view_defines()}};
   return cascades;
 }
 
@@ -161,7 +166,7 @@ LitBind CascadePass::lit_bind(GLuint program) const {
 
 std::optional<LitView> CascadePass::lit_view(const ParamSet& params) const {
   if (!params.get(param::csm_show_cascades)) return std::nullopt;
-  return LitView{{LitVariant::CascadeView, "cascade_view"}, cascade_view_legend(count_)};
+  return LitView{{LitVariant::Overlay, "cascade_view"}, cascade_view_legend(count_)};
 }
 
 void CascadePass::draw_debug_quads(const DebugQuadArea& area) {

@@ -18,14 +18,10 @@ namespace {
 // The material's textures take units from here up (the shadow techniques use the ones below).
 constexpr int kMaterialFirstUnit = 8;
 
-// The variance debug view draws the same scene through the same vertex shader with its own fragment
-// shader; it is never written into the G-buffer.
-bool writes_gbuffer(LitVariant variant, bool gbuffer) {
-  return gbuffer && variant != LitVariant::RemapView && variant != LitVariant::CascadeView;
-}
-
-// The debug views over the lit image: their own fragment shader, blended, no G-buffer.
-bool is_overlay(LitVariant variant) { return variant == LitVariant::RemapView || variant == LitVariant::CascadeView; }
+// A technique's overlay (LitOverlay) draws the same scene through the same vertex shader with its own
+// fragment shader, blended over the lit image; it is never written into the G-buffer.
+bool is_overlay(LitVariant variant) { return variant == LitVariant::Overlay; }
+bool writes_gbuffer(LitVariant variant, bool gbuffer) { return gbuffer && !is_overlay(variant); }
 
 // The texture unit of the material variant's base-colour texture (the shadow techniques use the first few).
 constexpr int kBaseColorUnit = 6;
@@ -37,12 +33,10 @@ void set_material_define(ProgramDesc& d, bool on) {
 }
 
 ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool gbuffer, LightType light,
-                     LitVariant variant, bool materials, int lights, bool own_shadow_coords) {
+                     LitVariant variant, const LitOverlay* overlay, bool materials, int lights, bool own_shadow_coords) {
   const bool remap = is_overlay(variant);
-  const char* fragment = variant == LitVariant::RemapView     ? "shaders/vsm/remap_view.frag"
-                         : variant == LitVariant::CascadeView ? "shaders/csm/cascade_view.frag"
-                                                              : "shaders/lit.frag";
-  ProgramDesc d{"shaders/lit.vert", {}, fragment, {}, includes, rules};
+  if (remap && !overlay) throw std::logic_error("the lit pass's overlay variant needs the technique's shader");
+  ProgramDesc d{"shaders/lit.vert", {}, remap ? overlay->fragment : "shaders/lit.frag", {}, includes, rules};
   if (gbuffer) d.defines.emplace_back("WRITE_GBUFFER", "1");
   if (!remap && light == LightType::Spot) d.defines.emplace_back("LIGHT_SPOT", "1");
   if (!remap && light == LightType::Point) d.defines.emplace_back("LIGHT_POINT", "1");
@@ -50,11 +44,8 @@ ProgramDesc lit_desc(const IncludeMap& includes, const IncludeRules& rules, bool
   if (variant == LitVariant::VolumeAmbient) d.defines.emplace_back("SHADOW_VOLUME_AMBIENT", "1");
   if (variant == LitVariant::VolumeAdditive) d.defines.emplace_back("SHADOW_VOLUME_ADDITIVE", "1");
   if (own_shadow_coords && !remap) d.defines.emplace_back(kOwnShadowCoordsDefine, "1");
-  // The overlays' colours and their ranges, from the constants their legends read.
-  if (variant == LitVariant::CascadeView)
-    for (auto& define : cascade_view_defines()) d.defines.push_back(std::move(define));
-  if (variant == LitVariant::RemapView)
-    for (auto& define : remap_view_defines()) d.defines.push_back(std::move(define));
+  // The overlay's colours and their ranges, from the constants its legend reads.
+  if (remap) d.defines.insert(d.defines.end(), overlay->defines.begin(), overlay->defines.end());
   set_material_define(d, materials);
   return d;
 }
@@ -99,16 +90,17 @@ void resolve(const ReloadableProgram& program, LitUniforms& u) {
 }  // namespace
 
 bool LitPass::build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-                    const std::vector<LitVariant>& variants, int lights, bool own_shadow_coords) {
+                    const ShadowPass::Shape& shape, int lights, bool own_shadow_coords) {
   bool ok = true;
-  for (LitVariant variant : variants)
+  const LitOverlay* overlay = shape.overlay ? &*shape.overlay : nullptr;
+  for (LitVariant variant : shape.lit_variants)
     for (bool gbuffer : {false, true}) {
       if (gbuffer && !writes_gbuffer(variant, true)) continue;
       Slot& slot = programs_[{variant, gbuffer}];
       slot.specialised.clear();  // built from the old includes; made again when drawn
       slot.failed.clear();
       slot.generic.program.set_desc(
-          lit_desc(includes, rules, gbuffer, light, variant, materials_, lights, own_shadow_coords));
+          lit_desc(includes, rules, gbuffer, light, variant, overlay, materials_, lights, own_shadow_coords));
       ok = slot.generic.program.rebuild() && ok;
     }
   return ok;
@@ -338,8 +330,7 @@ void LitPass::begin(LitVariant variant, bool gbuffer, bool default_framebuffer) 
       code_.begin_additive_lit_pass();  // stencil == 0, depth equal, added (lab 9's GL exercise)
       break;
     }
-    case LitVariant::RemapView:
-    case LitVariant::CascadeView:
+    case LitVariant::Overlay:
       // The same vertices through the same vertex shader give the same depths: LEQUAL keeps exactly the
       // visible surfaces.
       glDepthFunc(GL_LEQUAL);

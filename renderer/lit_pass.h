@@ -24,13 +24,14 @@ namespace shadowlab {
 
 class LitPass {
  public:
-  // Builds these variants' programs (plain and G-buffer; with `lights` > 0 the lit one lit by that many
+  // Builds the variants a technique's shape asks for (plain and G-buffer; the overlay with the shape's
+  // shader; with `lights` > 0 the lit one lit by that many
   // shadowed lights too: the SHADOWED_LIGHTS define, Features::lights; with `own_shadow_coords`, those whose
   // shadow test is the lab's, without the renderer's mapping into the shadow map: see
   // Features::own_shadow_coords); false keeps the old programs (the error is in them). Programs of other
   // variants stay until keep_only().
-  bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light,
-             const std::vector<LitVariant>& variants, int lights = 0, bool own_shadow_coords = false);
+  bool build(const IncludeMap& includes, const IncludeRules& rules, LightType light, const ShadowPass::Shape& shape,
+             int lights = 0, bool own_shadow_coords = false);
   void keep_only(const std::vector<LitVariant>& variants);
   // Compiles the material variant (MATERIAL_TEXTURE: base-colour texture, alpha modes) or the plain
   // one into every program; draw() switches to what the scene needs, so a scene without textures or

@@ -250,7 +250,7 @@ LitBind MomentsPass::lit_bind(GLuint program) const {
 
 std::optional<LitView> MomentsPass::lit_view(const ParamSet& params) const {
   if (!params.get(param::vsm_show_remap)) return std::nullopt;
-  return LitView{{LitVariant::RemapView, "remap_view"}, remap_view_legend()};
+  return LitView{{LitVariant::Overlay, "remap_view"}, remap_view_legend()};
 }
 
 void MomentsPass::draw_debug_quads(const DebugQuadArea& area) {

@@ -90,7 +90,12 @@ class MomentsPass final : public ShadowPass {
 
   // The shadow technique: the vsm.* parameters apply (core/vsm_params.h).
   const Shape& shape() const override {
-    static const Shape moments{true, false, LitVariant::Lit, {LitVariant::Lit, LitVariant::RemapView}};
+    static const Shape moments{true,
+                               false,
+                               LitVariant::Lit,
+                               {LitVariant::Lit, LitVariant::Overlay},
+                               std::nullopt,
+                               LitOverlay{"shaders/vsm/remap_view.frag", remap_view_defines()}};
     return moments;
   }
   // Points the programs' virtual includes ("lab/moments.glsl", "lab/blur.glsl") at files and rebuilds

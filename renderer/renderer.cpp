@@ -163,7 +163,7 @@ bool Renderer::build_programs(const Features& features, LightType light) {
   }
   ShadowPass& pass = fresh ? *fresh : frame_light().pass();
   const std::vector<LitVariant> variants = pass.shape().lit_variants;
-  bool ok = lit_->build(includes, features.include_rules, light, variants, static_cast<int>(features.lights.size()),
+  bool ok = lit_->build(includes, features.include_rules, light, pass.shape(), static_cast<int>(features.lights.size()),
                         features.own_shadow_coords);
   std::vector<ShadowedLight> lights;
   for (const ShadowedLightSpec& spec : features.lights) {

@@ -86,8 +86,15 @@ enum class LitVariant {
   Lit,             // ambient + Lambert scaled by the shadow test's visibility
   VolumeAmbient,   // shadow volumes: ambient only, writing depth (and the G-buffer)
   VolumeAdditive,  // shadow volumes: the light's share, added where the stencil counted no volume
-  RemapView,       // variance shadow maps' debug view: tints where the light-bleeding remap acted
-  CascadeView,     // cascaded shadow maps' debug view: tints each pixel by its cascade
+  Overlay,         // the technique's false-colour view over the lit picture (Shape::overlay: its shader)
+};
+
+// A technique's false-colour view (the Overlay variant): the scene again through the lit pass's vertex
+// shader with the technique's own fragment shader, blended over the lit picture where the depth is equal,
+// never into the G-buffer (e.g. the moments' light-bleeding remap, the cascades' tints).
+struct LitOverlay {
+  const char* fragment = nullptr;  // e.g. "shaders/vsm/remap_view.frag"
+  std::vector<std::pair<std::string, std::string>> defines;  // its colours and ranges (what its legend reads)
 };
 
 class BillboardPass;
@@ -186,6 +193,8 @@ class ShadowPass {
     std::vector<LitVariant> lit_variants{LitVariant::Lit};
     // A lit draw before draw_view_passes (shadow volumes: the ambient pass that lays the depth down).
     std::optional<LitDraw> lit_first{};
+    // The Overlay variant's shader, when lit_variants has it.
+    std::optional<LitOverlay> overlay{};
   };
   // A constant of the technique, returned by reference: the frame asks for it twice and allocates nothing.
   virtual const Shape& shape() const {
