@@ -12,6 +12,7 @@
 #include "app/panel.h"
 #include "app/settings_panel.h"
 #include "app/stats_text.h"
+#include "grading/platform_process.h"
 #include "labs/registry.h"
 #include "renderer/shader.h"
 #include "core/untrusted.h"
@@ -97,9 +98,15 @@ void draw_task(PanelModel& m, PanelActions& a) {
     if (has_task) m.lab_text->task.draw(m.fonts);
     else ImGui::TextUnformatted("Make the Check pass by editing the file(s) below.");
     ImGui::Spacing();
-    bool cpp = false;  // C++ exercises need a rebuild; shaders reload when saved
+    // Shaders reload when saved; C++ exercises are built into the window when saved where grading runs
+    // (Linux: grading/live_cpp.h), and need a rebuild elsewhere.
+    bool cpp = false;
     for (const auto& file : m.lab->exercise_files) cpp |= file.ends_with(".cpp") || file.ends_with(".h");
-    ImGui::TextColored(kHint, cpp ? "Edit, rebuild (scripts/build) and start the lab again:" : "Edit (saving reloads it live):");
+    const char* hint = !cpp ? "Edit (saving reloads it live):"
+                       : platform::grading_unavailable().empty()
+                           ? "Edit and save: the window builds your file in the background and draws with it:"
+                           : "Edit, rebuild (scripts/build) and start the lab again:";
+    ImGui::TextColored(kHint, "%s", hint);
     for (const auto& file : m.lab->exercise_files) {
       ImGui::BulletText("%s", file.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", (data_dir() / file).string().c_str());

@@ -1,5 +1,7 @@
 // Lab 12 exercise: cascaded shadow maps. Write the split distances and each cascade's light box.
-// Edit these functions, rebuild (scripts/build), and run: shadowlab check --lab 12 --impl exercise
+// Edit these functions, save, and run: shadowlab check --lab 12 --impl exercise. On Linux Check builds your
+// saved file on its own and the window builds it and draws with it; on Windows and macOS rebuild first
+// (bash scripts/build).
 #include <algorithm>
 #include <cmath>
 

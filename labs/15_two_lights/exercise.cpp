@@ -1,5 +1,7 @@
 // Lab 15 exercise: the flashlight's shadow map follows the node that carries it.
-// Edit this function, rebuild (scripts/build), and run: shadowlab check --lab 15 --impl exercise
+// Edit this function, save, and run: shadowlab check --lab 15 --impl exercise. On Linux Check builds your
+// saved file on its own and the window builds it and draws with it; on Windows and macOS rebuild first
+// (bash scripts/build).
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "labs/15_two_lights/flashlight_fit.h"
