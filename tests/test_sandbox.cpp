@@ -118,7 +118,8 @@ class Sandbox : public ::testing::Test {
     return source;
   }
 
-  // Lab 2's exercise (or, with `host` "12_cascaded_shadow_maps", lab 12's) holding `source`.
+  // Lab 2's exercise (or, with `host` "12_cascaded_shadow_maps" or "15_two_lights", lab 12's or 15's) holding
+  // `source`.
   CppExerciseSpec spec(const std::string& source, bool screen, const std::string& host = "02_ortho_fit") {
     const std::string name = "labs/" + host + "/exercise.cpp";
     const fs::path file = root_ / "submission" / name;
@@ -128,8 +129,9 @@ class Sandbox : public ::testing::Test {
     s.source = file;
     s.display_name = name;
     s.host = host;
-    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "labs/12_cascaded_shadow_maps/cascades_lab.h", "core/light.h",
-                 "core/scene.h", "core/cascades.h", "core/params.h"};
+    s.headers = {"labs/02_ortho_fit/ortho_fit.h", "labs/12_cascaded_shadow_maps/cascades_lab.h",
+                 "labs/15_two_lights/flashlight_fit.h", "core/light.h", "core/scene.h", "core/cascades.h",
+                 "core/params.h"};
     s.offered = {"shadowlab::orthonormal_basis", "shadowlab::fixed_tutorial_ortho", "shadowlab::direction_from_angles"};
     s.screen = screen;
     s.compile_seconds = 20.0;
@@ -174,17 +176,28 @@ TEST_F(Sandbox, ARightAnswerBuildsAndAnswersInside) {
 // The program holds only the core functions it calls: not the solution (fit_light_ortho, in the same
 // file as the offered orthonormal_basis), which an answer could otherwise reach through a function
 // pointer at a known distance from an offered function's address.
-// Lab 12's likewise: practical_splits and fit_cascade_sphere (core/cascades.cpp).
+// Lab 12's likewise: practical_splits and fit_cascade_sphere (core/cascades.cpp); lab 15's: flashlight_view
+// (core/flashlight.cpp, the renderer's default), of which only the exercise's own flashlight_view_exercise
+// may be there.
 TEST_F(Sandbox, TheSolutionIsNotInTheProgram) {
-  const fs::path answers = fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers/12_cascaded_shadow_maps/right";
-  for (const auto& [host, source] : {std::pair<std::string, std::string>{"02_ortho_fit", right_answer()},
-                                     {"12_cascaded_shadow_maps", read_text(answers / "round_to_nearest__exercise.cpp")}}) {
+  const fs::path answers = fs::path(SHADOWLAB_SOURCE_DIR) / "tests/answers";
+  struct Case {
+    std::string host, source, present;  // `present`: a function the program holds (what it calls, or its own)
+  };
+  const Case cases[] = {
+      {"02_ortho_fit", right_answer(), "shadowlab::orthonormal_basis"},
+      {"12_cascaded_shadow_maps", read_text(answers / "12_cascaded_shadow_maps/right/round_to_nearest__exercise.cpp"),
+       "shadowlab::orthonormal_basis"},
+      {"15_two_lights", read_text(answers / "15_two_lights/right/lookat_safe_up__exercise.cpp"),
+       "shadowlab::flashlight_view_exercise("}};
+  for (const auto& [host, source, present] : cases) {
     CppExercise program(spec(source, true, host));
     const fs::path symbols = root_ / "symbols.txt";
     ASSERT_EQ(platform::run_child({"nm", "-C", program.program().string()}, {30.0, 0, 0.0, 0}, symbols).exit_code, 0);
     const std::string listed = read_text(symbols);
-    EXPECT_NE(listed.find("shadowlab::orthonormal_basis"), std::string::npos) << host;  // what it calls is there
-    for (const char* solution : {"fit_light_ortho", "practical_splits", "fit_cascade_sphere"})
+    EXPECT_NE(listed.find(present), std::string::npos) << host << ": " << present << " is not listed";
+    for (const char* solution :
+         {"fit_light_ortho", "practical_splits", "fit_cascade_sphere", "flashlight_view(", "flashlight_spec"})
       EXPECT_EQ(listed.find(solution), std::string::npos) << host << ": " << solution << " was linked in";
   }
 }
