@@ -42,22 +42,8 @@ void replace_all(std::string& text, const std::string& from, const std::string& 
     text.replace(at, from.size(), to);
 }
 
-// The compiler's and linker's words with our paths replaced by the names the student knows; at most
-// `max_lines` lines.
 std::string student_view(std::string log, const CppExerciseSpec& spec, const fs::path& work, std::size_t max_lines = 30) {
-  std::error_code ec;
-  const fs::path canonical = fs::weakly_canonical(spec.source, ec);
-  replace_all(log, canonical.string(), spec.display_name);
-  replace_all(log, spec.source.string(), spec.display_name);
-  replace_all(log, (work / "").string(), "");
-  replace_all(log, (data_dir() / "").string(), "");
-  replace_all(log, std::string(kSourceDir) + "/", "");
-  auto lines = lines_of(log);
-  std::string out;
-  for (std::size_t i = 0; i < lines.size() && i < max_lines; ++i) out += lines[i] + "\n";
-  if (lines.size() > max_lines) out += "... (" + std::to_string(lines.size() - max_lines) + " more lines)\n";
-  while (!out.empty() && out.back() == '\n') out.pop_back();
-  return out;
+  return compiler_words(std::move(log), spec.source, spec.display_name, work, max_lines);
 }
 
 // Includes, inline assembly: refused before the compiler reads anything the lab does not offer.
@@ -265,6 +251,23 @@ void refuse_definitions(const std::string& defined, const std::string& host_defi
 }
 
 }  // namespace
+
+std::string compiler_words(std::string log, const fs::path& source, const std::string& display_name, const fs::path& work,
+                           std::size_t max_lines) {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(source, ec);
+  replace_all(log, canonical.string(), display_name);
+  replace_all(log, source.string(), display_name);
+  replace_all(log, (work / "").string(), "");
+  replace_all(log, (data_dir() / "").string(), "");
+  replace_all(log, std::string(kSourceDir) + "/", "");
+  auto lines = lines_of(log);
+  std::string out;
+  for (std::size_t i = 0; i < lines.size() && i < max_lines; ++i) out += lines[i] + "\n";
+  if (lines.size() > max_lines) out += "... (" + std::to_string(lines.size() - max_lines) + " more lines)\n";
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
 
 std::vector<std::string> exercise_compiler_command() {
   std::vector<std::string> argv = {SHADOWLAB_CXX};

@@ -77,6 +77,11 @@ std::string cpp_exercise_unavailable(const std::string& host);
 
 // The compiler every exercise is built with (the system's, CMake's) and the flags, as an argv start.
 std::vector<std::string> exercise_compiler_command();
+// The compiler's and linker's words as the student can read them: `source` (as given and canonical) named
+// `display_name`, the work folder, the data folder and the source tree taken out of every path; at most
+// `max_lines` lines (then how many more there were).
+std::string compiler_words(std::string log, const std::filesystem::path& source, const std::string& display_name,
+                           const std::filesystem::path& work, std::size_t max_lines = 30);
 
 class CppExercise {
  public:

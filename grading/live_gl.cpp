@@ -85,17 +85,6 @@ void write_file(const fs::path& file, const std::string& text) {
   if (!out) throw std::runtime_error(file.string() + ": cannot be written");
 }
 
-std::string read_log(const fs::path& log, const fs::path& dir) {
-  std::ifstream in(log, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  std::string text = s.str();
-  // The copy's folder out of every path: the compiler's words name the file as the student knows it.
-  const std::string prefix = (dir / "").string();
-  for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
-  return printable(text, 4000);
-}
-
 }  // namespace
 
 bool live_gl_exercise_supported(const std::string& file) { return live_file(file) != nullptr; }
@@ -120,7 +109,11 @@ GlHostCode build_live_gl_exercise(const fs::path& dir, const std::string& file, 
   const fs::path log = dir / "build.log";
   const platform::ChildOutcome built = platform::run_child(argv, limits, log);
   if (built.kind != platform::ChildOutcome::Kind::Exited || built.exit_code != 0) {
-    const std::string words = read_log(log, dir);
+    // The compiler's words naming the file as the student knows it (our folders out of every path).
+    std::ifstream in(log, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string words = printable(compiler_words(text.str(), dir / file, file, dir), 4000);
     throw std::runtime_error(file + " does not build:\n" +
                              (words.empty() ? built.error + built.signal_name : words));
   }
