@@ -258,7 +258,7 @@ void LitPass::draw(PassContext& ctx, LitVariant variant) {
   end();
 }
 
-void LitPass::set_material(const std::map<std::string, Features::MaterialTexture>& textures,
+void LitPass::set_material(const std::map<std::string, MaterialTexture>& textures,
                            const std::map<std::string, std::string>& params) {
   material_textures_.clear();
   for (const auto& [name, t] : textures) {

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "oracle/oracle.h"
-#include "renderer/renderer.h"
 #include "renderer/shadow_pass.h"
 
 namespace shadowlab {
@@ -46,7 +45,7 @@ class LitPass {
   void ensure_targets(int width, int height, bool gbuffer, bool stencil, bool to_window = false, GLuint window = 0);
   // The material's textures and parameter uniforms (Features::material_textures, material_params),
   // bound by every draw.
-  void set_material(const std::map<std::string, Features::MaterialTexture>& textures,
+  void set_material(const std::map<std::string, MaterialTexture>& textures,
                     const std::map<std::string, std::string>& params);
   // The constants the next draws compile in (empty, or with specialise off: the generic programs).
   void use_constants(const LitConstants& constants) { constants_ = constants; }

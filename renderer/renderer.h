@@ -83,10 +83,7 @@ struct Features {
   // the vertex colour) may read textures and parameters. Each texture is bound for the lit pass under
   // its sampler uniform's name (RGBA8 texels, row 0 at v = 0, repeat-wrapped, nearest filtering); each
   // float uniform is set from a parameter every frame; u_floor_height is the scene's lowest y.
-  struct MaterialTexture {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;  // width x height x 4
-  };
+  using MaterialTexture = shadowlab::MaterialTexture;  // renderer/shadow_pass.h
   std::map<std::string, MaterialTexture> material_textures;  // sampler uniform -> texels
   std::map<std::string, std::string> material_params;        // float uniform -> parameter key
   // Billboards (renderer/billboards.h): trees standing at these points of the scene's frame, expanded by a
@@ -123,8 +120,6 @@ struct Features {
   GlHostCode gl_host;
 };
 
-// The define Features::own_shadow_coords compiles the lit pass's and the probes' programs with.
-inline constexpr const char* kOwnShadowCoordsDefine = "OWN_SHADOW_COORDS";
 
 struct FrameRequest {
   OrbitCamera camera;

@@ -81,6 +81,17 @@ struct LitInputs {
   int matched_radius = -1;           // ShadowTestFrame::matched_radius
 };
 
+// The define Features::own_shadow_coords (renderer/renderer.h) compiles the lit pass's and the probes'
+// programs with: the lab's shadow test maps world space into the shadow map itself.
+inline constexpr const char* kOwnShadowCoordsDefine = "OWN_SHADOW_COORDS";
+
+// A texture a lab's material reads in the lit pass (Features::material_textures): RGBA8 texels, row 0 at
+// v = 0.
+struct MaterialTexture {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;  // width x height x 4
+};
+
 // The lit pass's program variants (the same scene, shader and uniforms; defines differ).
 enum class LitVariant {
   Lit,             // ambient + Lambert scaled by the shadow test's visibility
