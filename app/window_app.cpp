@@ -29,7 +29,7 @@ void WindowApp::open_lab(const Lab& next, bool wait) {
 // Preset i of the lab (its key, its button, a step of the story), and its caption.
 void WindowApp::choose_preset(std::size_t i) {
   const Preset& preset = lab->presets.at(i);
-  apply_preset(params, preset);
+  show_preset(params, *lab, preset);  // the picture render --preset draws, whatever was shown before
   show_preset_view(preset);
   preset_values.clear();
   for (const auto& entry : preset.values) preset_values.emplace_back(entry.first, params.get(entry.first));

@@ -59,6 +59,14 @@ void apply_preset(ParamSet& params, const Preset& preset) {
   for (const auto& [key, value] : preset.values) params.set_from_string(key, value);
 }
 
+void show_preset(ParamSet& params, const Lab& lab, const Preset& preset) {
+  const ParamSet start = lab_params(lab);
+  for (const Preset& other : lab.presets)
+    for (const auto& entry : other.values)
+      if (params.find(entry.first) && start.find(entry.first)) params.set(entry.first, start.get(entry.first));
+  apply_preset(params, preset);
+}
+
 SlotFiles Lab::files(Impl impl) const {
   const auto& names = impl == Impl::Exercise ? exercise_files : solution_files;
   return SlotFiles(names.begin(), names.end());

@@ -134,6 +134,10 @@ std::vector<std::size_t> story_order(const Lab& lab);
 bool needs_working_exercise(const Lab& lab, const Preset& preset);
 // Sets the preset's values in `params`, over what they hold (as its button in the panel does).
 void apply_preset(ParamSet& params, const Preset& preset);
+// A preset as the window shows it, so that its picture is the one `render --preset` draws whichever preset
+// was shown before: every key some preset of the lab sets goes back to the lab's own value (lab_params),
+// then the preset's values are set; the keys no preset sets keep what the student chose.
+void show_preset(ParamSet& params, const Lab& lab, const Preset& preset);
 
 // Hooks of a lab whose one slot is the visibility function ("lab/visibility.glsl"), for one light type
 // (unset: the light.type parameter decides).
