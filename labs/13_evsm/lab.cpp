@@ -270,13 +270,13 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (auto& spec : lab.params)
     if (spec.key == "vsm.warp") spec.default_value = 1.0;  // exponential
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
-  // In the window a preset sets only its own keys over the current values (apply_preset): "small c" and
-  // "half floats" set the warp, the format and the exponents they show, whatever was pressed before.
+  // In the window a preset sets only its own keys over the current values (apply_preset): "VSM", "small c"
+  // and "half floats" set the warp, the format and the exponents they show, whatever was pressed before.
   lab.presets = {
       // The bleeding presets: on the stacked occluders the check grades, the moments blurred (radius 8,
       // sigma 4) so that the light bleeding under the low occluder's shadow edge is wide enough to see.
       {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, blurred wide, on the stacked occluders.",
-       {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}, {"vsm.format", "RG32F"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
        {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
       {"EVSM", "w+ = exp(42 z), w- = -exp(-42 z) in RGBA32F.",
