@@ -394,15 +394,18 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.params.push_back(wire);
   lab.params.push_back(quad);
   lab.params.push_back(param::view_flat_normals.spec());  // the facets the volumes are extruded from
+  // In the window a preset sets only its own keys over the current values (apply_preset), and Page Down
+  // steps through these in order: "z-pass" sets the directional light its camera was placed for (the big
+  // box's volume), and each debug view turns the other off.
   lab.presets = {
       {"point light", "A point light among the objects.", {{"light.type", "point"}}},
       {"z-pass", "Count the faces in front, the camera standing in the big box's shadow: every count is off by one, "
-       "so shadow and light swap.", {{"volume.method", "z-pass"}},
+       "so shadow and light swap.", {{"volume.method", "z-pass"}, {"light.type", "directional"}},
        {.provokes = "z-pass failure", .fixed_by = "z-fail"}, {.camera = "eye=-4.2,0.5,0 target=0.5,0.3,-0.5 fov=60"}},
       {"z-fail", "Count the faces behind (the default): right wherever the camera stands.", {{"volume.method", "z-fail"}}},
-      {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}}},
+      {"wireframe", "The extruded volumes as lines (geometry shader).", {{"view.volumes", "true"}, {"view.flat_normals", "false"}}},
       {"flat normals", "Each triangle in the colour of its face normal, computed by a geometry shader; the vertex "
-       "normals as lines over it.", {{"view.flat_normals", "true"}, {"view.normals", "true"}}},
+       "normals as lines over it.", {{"view.flat_normals", "true"}, {"view.normals", "true"}, {"view.volumes", "false"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;

@@ -453,13 +453,16 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"noise.turbulence", "Turbulence", ParamKind::Float, kDefaultTurbulence, 0.0, 6.0,
        "How far the octave sum pushes the rings, in rings.", {}},
   };
+  // In the window a preset sets only its own keys over the current values (apply_preset): "acne on wood"
+  // sets the turbulence and the slope bias back, after "plain rings" and after "slope bias on wood".
   lab.presets = {
       {"wood", "The wood floor with its shadows.", {{"noise.view", "wood"}}},
       {"noise", "One octave of gradient noise on the floor.", {{"noise.view", "noise"}}},
       {"octaves", "The octave sum; then the octaves apart in red, green, blue.", {{"noise.view", "octave sum"}}},
       {"plain rings", "No turbulence: the rings alone.", {{"noise.view", "wood"}, {"noise.turbulence", "0"}}},
       {"acne on wood", "Lab 1's acne under a grazing light, on the busy floor.",
-       {{"noise.view", "wood"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"}},
+       {{"noise.view", "wood"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"}, {"shadow.slope_bias", "0"},
+        {"noise.turbulence", "0.8"}},
        {.provokes = "acne", .fixed_by = "slope bias on wood"}},
       {"slope bias on wood", "The same grazing light with lab 1's slope-scaled bias: the stripes go, the rings stay.",
        {{"noise.view", "wood"}, {"shadow.slope_bias", "2"}}},

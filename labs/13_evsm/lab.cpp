@@ -270,11 +270,13 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (auto& spec : lab.params)
     if (spec.key == "vsm.warp") spec.default_value = 1.0;  // exponential
   for (const auto& spec : vsm_lab_bias_params()) lab.params.push_back(spec);
+  // In the window a preset sets only its own keys over the current values (apply_preset): "VSM", "small c"
+  // and "half floats" set the warp, the format and the exponents they show, whatever was pressed before.
   lab.presets = {
       // The bleeding presets: on the stacked occluders the check grades, the moments blurred (radius 8,
       // sigma 4) so that the light bleeding under the low occluder's shadow edge is wide enough to see.
       {"VSM", "vsm.warp = none: lab 4's VSM with the delta fix, blurred wide, on the stacked occluders.",
-       {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {{"vsm.warp", "none"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}, {"vsm.format", "RG32F"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
        {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
       {"EVSM", "w+ = exp(42 z), w- = -exp(-42 z) in RGBA32F.",
@@ -282,11 +284,13 @@ Lab SHADOWLAB_LAB_MAKER() {
       // At c = 5 (the 16-bit limit) the two warps together hide most of the bleeding: 1.31 % of a 1280x720
       // frame differs from EVSM's, 3.03 % at 2 (cli.preset_contrast asks for 2 %).
       {"small c", "c+ = c- = 2, blurred wide, on the stacked occluders: less sharpening, more bleeding.",
-       {{"vsm.evsm_exponent", "2"}, {"vsm.evsm_negative_exponent", "2"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {{"vsm.evsm_exponent", "2"}, {"vsm.evsm_negative_exponent", "2"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"},
+        {"vsm.warp", "exponential"}, {"vsm.format", "RG32F"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
        {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
       {"half floats", "RGBA16F (both exponents clamped to 5), blurred wide, on the stacked occluders.",
-       {{"vsm.format", "RG16F"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}},
+       {{"vsm.format", "RG16F"}, {"vsm.blur_radius", "8"}, {"vsm.blur_sigma", "4"}, {"vsm.warp", "exponential"},
+        {"vsm.evsm_exponent", "42"}, {"vsm.evsm_negative_exponent", "42"}},
        {.provokes = "light bleeding", .fixed_by = "EVSM"},
        {.scene = kStackedOccludersScene, .camera = kStackedBleedingCamera}},
   };

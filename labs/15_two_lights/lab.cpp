@@ -446,15 +446,19 @@ Lab SHADOWLAB_LAB_MAKER() {
   lab.exercise_files = {kExercise};
   lab.solution_files = {kSolution};
   lab.params = flashlight_param_specs();
+  // In the window a preset sets only its own keys over the current values (apply_preset), and Page Down
+  // steps through these in order: each sets what its picture needs, the other light's intensity included.
   lab.presets = {
       {"moving node", "The node circles the scene: only the flashlight's map is drawn again (the panel's counters).",
-       {{"flashlight.animate", "true"}, {"flashlight.mount", "node"}}},
+       {{"flashlight.animate", "true"}, {"flashlight.mount", "node"}, {"flashlight.radius", "0.9"}, {"flashlight.height", "0.5"}}},
       {"flashlight on the camera", "The flashlight shines from the eye: orbit and watch its map follow.",
        {{"flashlight.mount", "camera"}, {"flashlight.animate", "false"}}},
       {"straight down", "The node right above the scene's centre, the flashlight pointing straight down.",
        {{"flashlight.mount", "node"}, {"flashlight.animate", "false"}, {"flashlight.radius", "0"}, {"flashlight.height", "1"}}},
-      {"flashlight alone", "The sun off: only the flashlight's light and shadows.", {{"sun.intensity", "0"}}},
-      {"sun alone", "The flashlight off: the one-light picture of the earlier labs.", {{"flashlight.intensity", "0"}}},
+      {"flashlight alone", "The sun off: only the flashlight's light and shadows.",
+       {{"sun.intensity", "0"}, {"flashlight.intensity", "0.8"}}},
+      {"sun alone", "The flashlight off: the one-light picture of the earlier labs.",
+       {{"flashlight.intensity", "0"}, {"sun.intensity", "1"}}},
   };
   lab.make_hooks = [](const SlotFiles& files) {
     Features hooks;

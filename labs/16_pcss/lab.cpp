@@ -179,13 +179,15 @@ Lab SHADOWLAB_LAB_MAKER() {
   slope.default_value = 2.0;
   lab.params = {size, bias, slope};
   for (const auto& spec : find_shadow_test("pcss").params) lab.params.push_back(spec);
+  // In the window a preset sets only its own keys over the current values (apply_preset): "see the blockers"
+  // sets the lab's sun (kSunDegrees), which the view's picture in README.md shows, also after "point light".
   lab.presets = {
       {"sun", "The sun's own size, about half a degree: a narrow penumbra.", {{"light.size", "0.5"}}},
       {"wide penumbra", "A 10-degree sun: wide penumbrae, widest where the blocker is far above the ground.",
        {{"light.size", "10"}}},
       {"point light", "Size 0: PCSS is the hard shadow of lab 0.", {{"light.size", "0"}}},
       {"see the blockers", "The debug view of the blocker search: each shadowed point coloured by the blockers' "
-       "mean distance above it (dark blue near, yellow at the PCSS view range).", {{"pcss.view", "blocker distance"}}},
+       "mean distance above it (dark blue near, yellow at the PCSS view range).", {{"pcss.view", "blocker distance"}, {"light.size", "4"}}},
       {"see the kernel", "The debug view of your estimate: the filter's width in map texels, wider as the blocker "
        "rises; red where it would pass the 128-texel cap.", {{"pcss.view", "kernel width"}, {"light.size", "10"}}},
   };

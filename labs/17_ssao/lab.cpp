@@ -334,18 +334,26 @@ Lab SHADOWLAB_LAB_MAKER() {
   for (ParamSpec& spec : ao_method_param_specs()) lab.params.push_back(spec);
   for (ParamSpec& spec : lab.params)
     if (spec.key == param::ssao_radius.key()) spec.default_value = kRadius;
+  // In the window a preset sets only its own keys over the current values (apply_preset), and Page Down
+  // steps through these in order: each SSAO preset sets every ssao.* key the lab's text describes, "tuned"'s
+  // values but those that provoke its artefact, so that it shows that artefact alone whatever came before.
   lab.presets = {
       {"halos", "A large radius without the range check: the boxes and the sphere darken the floor far behind them.",
-       {{"ssao.radius", "2"}, {"ssao.range_check", "0"}},
+       {{"ssao.radius", "2"}, {"ssao.range_check", "0"}, {"ssao.method", "ssao"}, {"ssao.samples", "32"},
+        {"ssao.bias", "0.025"}, {"ssao.blur", "1"}, {"ssao.noise", "1"}},
        {.provokes = "halos", .fixed_by = "tuned"}},
       {"self-occlusion", "Bias 0 and no blur: samples lying almost in the surface's own plane are compared with the surface's own "
        "depths, and some count as hidden: a faint speckle on flat surfaces (faint here: the positions are stored as floats).",
-       {{"ssao.bias", "0"}, {"ssao.blur", "0"}},
+       {{"ssao.bias", "0"}, {"ssao.blur", "0"}, {"ssao.method", "ssao"}, {"ssao.radius", "0.5"}, {"ssao.samples", "32"},
+        {"ssao.range_check", "1"}, {"ssao.noise", "1"}},
        {.provokes = "self-occlusion", .fixed_by = "tuned"}, {.camera = kCloseOverTheBoxCamera}},
       {"banding", "No noise, no blur, 8 samples: every pixel uses the same few sample directions, and bands show.",
-       {{"ssao.noise", "0"}, {"ssao.blur", "0"}, {"ssao.samples", "8"}},
+       {{"ssao.noise", "0"}, {"ssao.blur", "0"}, {"ssao.samples", "8"}, {"ssao.method", "ssao"}, {"ssao.radius", "0.5"},
+        {"ssao.bias", "0.025"}, {"ssao.range_check", "1"}},
        {.provokes = "banding", .fixed_by = "tuned"}, {.camera = kShadowEdgeCamera}},
-      {"noise without blur", "The noise's rotations without the blur: the 4 x 4 pattern shows.", {{"ssao.blur", "0"}}},
+      {"noise without blur", "The noise's rotations without the blur: the 4 x 4 pattern shows.",
+       {{"ssao.blur", "0"}, {"ssao.method", "ssao"}, {"ssao.radius", "0.5"}, {"ssao.samples", "32"}, {"ssao.bias", "0.025"},
+        {"ssao.range_check", "1"}, {"ssao.noise", "1"}}},
       {"tuned", "The lab's defaults: radius 0.5, 32 samples, bias 0.025, range check, noise and blur on.",
        {{"ssao.method", "ssao"}, {"ssao.radius", "0.5"}, {"ssao.samples", "32"}, {"ssao.bias", "0.025"},
         {"ssao.range_check", "1"}, {"ssao.blur", "1"}, {"ssao.noise", "1"}}},
