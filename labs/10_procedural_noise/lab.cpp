@@ -453,8 +453,9 @@ Lab SHADOWLAB_LAB_MAKER() {
       {"noise.turbulence", "Turbulence", ParamKind::Float, kDefaultTurbulence, 0.0, 6.0,
        "How far the octave sum pushes the rings, in rings.", {}},
   };
-  // In the window a preset sets only its own keys over the current values (apply_preset): "acne on wood"
-  // sets the turbulence and the slope bias back, after "plain rings" and after "slope bias on wood".
+  // In the window a preset first puts every key some preset sets back to the lab's value (show_preset):
+  // "slope bias on wood" sets acne on wood's grazing light and small bias itself, so that it is the same
+  // picture with the slope bias alone added, as README.md says.
   lab.presets = {
       {"wood", "The wood floor with its shadows.", {{"noise.view", "wood"}}},
       {"noise", "One octave of gradient noise on the floor.", {{"noise.view", "noise"}}},
@@ -465,7 +466,8 @@ Lab SHADOWLAB_LAB_MAKER() {
         {"noise.turbulence", "0.8"}},
        {.provokes = "acne", .fixed_by = "slope bias on wood"}},
       {"slope bias on wood", "The same grazing light with lab 1's slope-scaled bias: the stripes go, the rings stay.",
-       {{"noise.view", "wood"}, {"shadow.slope_bias", "2"}}},
+       {{"noise.view", "wood"}, {"shadow.slope_bias", "2"}, {"light.elevation", "8"}, {"shadow.bias", "0.0005"},
+        {"noise.turbulence", "0.8"}}},
   };
   lab.offered_includes = {};
   lab.make_hooks = [](const SlotFiles& files) {
