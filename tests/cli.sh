@@ -639,9 +639,10 @@ PY
     ;;
   preset_contrast)  # issue 35: each artifact's preset against its fix changes at least 2 % of a 1280x720 frame
     # Every preset that provokes an artifact names its fix (so that it can be shown against it), and the
-    # fix is rendered as the window shows it after the artifact's button then the fix's: the fix's values
-    # over the artifact preset's, in the artifact preset's scene and camera, so only what the fix sets
-    # differs. One `render` per picture (about 1 s each at 1280x720 on llvmpipe; 2 per pair).
+    # fix is rendered as the window shows it after the artifact's button then the fix's (show_preset,
+    # grading/lab.h): every key some preset of the lab sets back at the lab's own value, then the fix's
+    # values, in the artifact preset's scene and camera. One `render` per picture (about 1 s each at
+    # 1280x720 on llvmpipe; 2 per pair), and one small one per lab for the lab's own values.
     "$bin" labs --presets --json >"$tmp/presets.json" || fail "labs --presets --json: exit $?"
     png_python - "$bin" "$tmp" "$tmp/presets.json" <<'PY' || fail "an artifact's preset barely differs from its fix (figures above)"
 import json, subprocess, sys
@@ -657,9 +658,17 @@ def render(lab, preset, sets, out):
            "--height", str(H), "--out", out] + [a for kv in sets for a in ("--set", kv)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     return load(out + "/final.png")[2]
+def lab_values(lab):  # the lab's own values (render.json's parameters, no preset), as --set takes them
+    out = "%s/own%d" % (tmp, lab)
+    subprocess.run([bin_, "render", "--lab", str(lab), "--impl", "solution", "--width", "64", "--height", "36",
+                    "--out", out], check=True, stdout=subprocess.DEVNULL)
+    text = lambda v: ("true" if v else "false") if isinstance(v, bool) else str(v)
+    return {k: text(v) for k, v in json.load(open(out + "/render.json"))["parameters"].items()}
 bad, n = [], 0
 for lab in json.load(open(listing))["labs"]:
     presets = {p["name"]: p for p in lab["presets"]}
+    own = lab_values(lab["number"]) if any(p["provokes"] for p in lab["presets"]) else {}
+    preset_keys = {k for p in lab["presets"] for k in p["values"]}
     for p in lab["presets"]:
         if not p["provokes"]:
             continue
@@ -669,7 +678,9 @@ for lab in json.load(open(listing))["labs"]:
             continue
         fix = presets[p["fixed_by"]]
         a = render(lab["number"], p["name"], [], "%s/a%d" % (tmp, n))
-        b = render(lab["number"], p["name"], ["%s=%s" % kv for kv in fix["values"].items()], "%s/b%d" % (tmp, n))
+        shown = {k: own[k] for k in preset_keys if k in own}
+        shown.update(fix["values"])
+        b = render(lab["number"], p["name"], ["%s=%s" % kv for kv in sorted(shown.items())], "%s/b%d" % (tmp, n))
         n += 1
         share = differing(a, b, 0, 0, W, H)
         print("%-55s against '%s': %6.2f %% of the pixels differ" % (where, fix["name"], 100 * share))
