@@ -353,6 +353,8 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   const LitInputs& inputs = *ctx.lit_inputs;
   const FrameLight& light = ctx.light;
   const ParamSet& params = ctx.params;
+  const std::vector<ShadowedLight>& lights = *ctx.lights;
+  const int map_size = lights.front().pass().size();  // the frame light's map: a texel's depth and angle
   u.view_proj.set(ctx.camera_view_proj());
   u.light_tex_matrix.set(clip_to_texture() * light.view.view_projection());
   u.light_view_proj.set(light.view.view_projection());
@@ -362,7 +364,7 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   // One shadow-map texel's world size, in the depth units the comparison uses ([0, 1] over the ortho
   // box's depth): a slope-scaled bias in texels multiplies this by tan(angle of incidence).
   const float depth_range = 2.0f / std::abs(light.view.projection[2][2]);
-  u.texel_depth.set(light.view.world_size.x / static_cast<float>(inputs.map_size) / depth_range);
+  u.texel_depth.set(light.view.world_size.x / static_cast<float>(map_size) / depth_range);
   u.ambient.set(params.get(param::view_ambient));
   // Positional lights: where the light stands, the spot's cone, its projection's planes, a texel's angle.
   u.light_position.set(light.position);
@@ -371,8 +373,7 @@ void LitPass::set_uniforms(const PassContext& ctx, const Program& p) const {
   const glm::mat4& proj = light.view.projection;  // near and far back from a perspective matrix
   u.light_near.set(proj[3][2] / (proj[2][2] - 1.0f));
   u.light_far.set(proj[3][2] / (proj[2][2] + 1.0f));
-  u.texel_angle.set(light.texel_angle(std::max(inputs.map_size, 1)));
-  const std::vector<ShadowedLight>& lights = *ctx.lights;
+  u.texel_angle.set(light.texel_angle(std::max(map_size, 1)));
   if (lights.size() > 1) {  // each uniform set when present: an answer may leave some unused
     u.lights.sun_intensity.set(static_cast<float>(params.get(param::sun_intensity)));
     for (std::size_t i = 1; i < lights.size(); ++i)

@@ -285,8 +285,8 @@ const FrameStats& Renderer::render(const ParamSet& params, const FrameRequest& r
     billboards_->set_points(features_.billboards, placement_);
     ctx.billboards = billboards_.get();
   }
-  // What the lit pass reads besides the lights: the frame light's map size and the selected shadow test.
-  const LitInputs lit_inputs{shadow.size(), shadow_test_, matched_radius};
+  // What the lit pass reads besides the lights: the selected shadow test.
+  const LitInputs lit_inputs{shadow_test_, matched_radius};
   ctx.lit_inputs = &lit_inputs;
   // The lit program compiled for what these parameters use (the technique's and the shadow test's few
   // settings as constants).

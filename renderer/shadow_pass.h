@@ -76,7 +76,6 @@ using LitBind = std::function<void(const ParamSet&)>;
 // the selected test's (ShadowTest::constants), which the renderer collects each frame before the lit
 // pass draws.
 struct LitInputs {
-  int map_size = 0;  // texels per side of the frame light's map (a texel's depth and angle)
   const ShadowTest* test = nullptr;  // the shadow test whose own uniforms are set (null: none)
   int matched_radius = -1;           // ShadowTestFrame::matched_radius
 };
